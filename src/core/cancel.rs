@@ -1,0 +1,50 @@
+//! Cooperative cancellation for long computations.
+//!
+//! Hot loops call [`Cancel::check`] every few thousand iterations; when the token has been
+//! cancelled (a newer request superseded the job, or the user pressed Esc) they return
+//! `Err(Cancelled)` promptly instead of finishing stale work.
+
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::Arc;
+
+/// The error a cancelled computation returns.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, thiserror::Error)]
+#[error("cancelled")]
+pub struct Cancelled;
+
+/// A shareable cancellation flag. Cloning shares the flag.
+#[derive(Debug, Clone, Default)]
+pub struct Cancel(Arc<AtomicBool>);
+
+impl Cancel {
+    /// A fresh, not-cancelled token.
+    pub fn new() -> Self {
+        Self::default()
+    }
+
+    /// A token that is never cancelled (for CLI use and tests).
+    pub fn never() -> Self {
+        Self::default()
+    }
+
+    /// Requests cancellation; every holder sees it at its next check.
+    pub fn cancel(&self) {
+        self.0.store(true, Ordering::Relaxed);
+    }
+
+    /// Whether cancellation was requested.
+    #[inline]
+    pub fn is_cancelled(&self) -> bool {
+        self.0.load(Ordering::Relaxed)
+    }
+
+    /// `Err(Cancelled)` once cancellation was requested.
+    #[inline]
+    pub fn check(&self) -> Result<(), Cancelled> {
+        if self.is_cancelled() {
+            Err(Cancelled)
+        } else {
+            Ok(())
+        }
+    }
+}

@@ -1,0 +1,10 @@
+//! Pure computation: never imports egui, eframe or wgpu.
+
+pub mod cancel;
+pub mod filter;
+pub mod metrics;
+pub mod pattern;
+pub mod recon;
+pub mod rng;
+pub mod signal;
+pub mod spectrum;

@@ -1,0 +1,449 @@
+//! Sample patterns in the unit square: every 2D pattern the lecture teaches.
+//!
+//! A pattern is a small `Copy` parameter struct; [`Pattern`] is the enum that dispatches over
+//! them, and [`Pattern::generate`] is the one entry point: `n` points in [0,1)², as `f64`
+//! ([`glam::DVec2`]), a pure function of `(parameters, n, seed)`.
+//!
+//! | family | module | patterns |
+//! |---|---|---|
+//! | stratified | [`stratified`] | grid, random, jitter, nrooks, lhs, multijitter, cmj |
+//! | lattice | [`hex`] | hex |
+//! | blue noise | [`poisson`], [`best_candidate`] | poisson-dart, poisson-bridson, best-candidate |
+//! | low discrepancy | [`lowdisc`], [`radical_inverse`] | van-der-corput, halton, hammersley, halton-zaremba, hammersley-zaremba, sobol |
+//!
+//! [`sphere`] maps any 2D pattern onto the unit sphere.
+//!
+//! Every coordinate is clamped to at most `1 − 2⁻⁵³` ([`ONE_MINUS_EPSILON`]) so no value can
+//! round to 1.0. Sequences are indexed from i = 0.
+
+pub mod best_candidate;
+pub mod hex;
+pub mod lowdisc;
+pub mod params;
+pub mod poisson;
+pub mod radical_inverse;
+pub mod sphere;
+pub mod stratified;
+
+use glam::DVec2;
+use params::{pattern_params, ChoiceParam, ParamSpec, ParamValue};
+use serde::{Deserialize, Serialize};
+
+pub use crate::core::cancel::{Cancel, Cancelled};
+
+/// The largest f64 below 1: `1 − 2⁻⁵³`.
+pub const ONE_MINUS_EPSILON: f64 = 1.0 - f64::EPSILON / 2.0;
+
+/// The largest number of points any pattern generates (2²⁴ ≈ 16.8 M points, 268 MB as f64 pairs).
+pub const MAX_N: usize = 1 << 24;
+
+/// Why a pattern could not be generated. Every variant names the offending field and what is allowed.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum PatternError {
+    /// `n` is zero or larger than [`MAX_N`] (or the pattern's own limit).
+    #[error("n = {n}: must be an integer in 1..={max}{why}")]
+    InvalidN {
+        n: usize,
+        max: usize,
+        /// Extra explanation, starting with "; " (may be empty).
+        why: String,
+    },
+    /// The pattern name is not known.
+    #[error("unknown pattern '{name}': allowed patterns are {allowed}")]
+    UnknownPattern { name: String, allowed: String },
+    /// The parameter key is not known for this pattern.
+    #[error("{pattern}: unknown parameter '{key}': allowed parameters are [{allowed}]")]
+    UnknownParam {
+        pattern: &'static str,
+        key: String,
+        allowed: String,
+    },
+    /// A parameter value is out of range or malformed.
+    #[error("{pattern}.{field} = {value}: must be {allowed}")]
+    InvalidParam {
+        pattern: &'static str,
+        field: &'static str,
+        value: String,
+        allowed: String,
+    },
+    /// A Poisson-disk radius too large for `n` points on the unit torus.
+    #[error("{pattern}.radius = {radius}: {n} points need radius ≤ {max} (hexagonal packing bound √(2/(√3·n)))")]
+    RadiusTooLarge {
+        pattern: &'static str,
+        radius: f64,
+        n: usize,
+        max: f64,
+    },
+    /// The computation was cancelled.
+    #[error("cancelled")]
+    Cancelled,
+}
+
+impl From<Cancelled> for PatternError {
+    fn from(_: Cancelled) -> Self {
+        PatternError::Cancelled
+    }
+}
+
+/// Checks `1 ≤ n ≤ max`.
+pub fn check_n(n: usize, max: usize) -> Result<(), PatternError> {
+    if n == 0 || n > max {
+        return Err(PatternError::InvalidN {
+            n,
+            max,
+            why: String::new(),
+        });
+    }
+    Ok(())
+}
+
+/// The result of a generation: the points, and a note when fewer than requested were placed.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Generated {
+    /// The points, in generation order (progressive patterns: every prefix is usable).
+    pub points: Vec<DVec2>,
+    /// How many points were asked for.
+    pub requested: usize,
+    /// Why fewer points than requested were placed (e.g. dart throwing gave up after its miss bound).
+    pub note: Option<String>,
+}
+
+impl Generated {
+    /// All requested points, no note.
+    pub fn complete(points: Vec<DVec2>) -> Self {
+        let requested = points.len();
+        Generated {
+            points,
+            requested,
+            note: None,
+        }
+    }
+}
+
+/// Scrambling of the Sobol' (0,2)-sequence.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Scramble {
+    /// The plain sequence.
+    #[default]
+    None,
+    /// Random digit scrambling: XOR of every coordinate with one random 32-bit word per dimension.
+    RandomDigit,
+    /// Nested uniform (Owen) scrambling, hash-based (Laine–Karras 2011, Burley 2020).
+    Owen,
+}
+
+impl ChoiceParam for Scramble {
+    const OPTIONS: &'static [&'static str] = &["none", "random-digit", "owen"];
+    fn index(self) -> usize {
+        self as usize
+    }
+    fn from_index(index: usize) -> Self {
+        [Scramble::None, Scramble::RandomDigit, Scramble::Owen][index]
+    }
+}
+
+pattern_params! {
+    /// Cell centres of a `cols × (n / cols)` grid.
+    Grid = "grid", "regular grid, cell centres ((i+½)/cols, (j+½)/rows)" {
+        cols: int(0, 0, MAX_N, "columns; 0 = auto (the divisor of n nearest √n); must divide n"),
+    }
+}
+pattern_params! {
+    /// White noise: n independent uniform points.
+    Random = "random", "white noise: independent uniform points" {}
+}
+pattern_params! {
+    /// Jittered (stratified) sampling on a `cols × rows` grid of strata.
+    Jitter = "jitter", "one point per cell of a cols × rows grid, offset from the centre by amount·(u−½) cell widths" {
+        cols: int(0, 0, MAX_N, "strata columns; 0 = auto (the divisor of n nearest √n); must divide n"),
+        amount: float(1.0, 0.0, 1.0, "jitter amount: 0 = cell centres, 0.5 = ±¼ cell, 1 = anywhere in the cell"),
+    }
+}
+pattern_params! {
+    /// N-rooks (2D Latin hypercube).
+    NRooks = "nrooks", "N-rooks: jittered diagonal, columns shuffled per dimension (one point per row and column)" {
+        amount: float(1.0, 0.0, 1.0, "jitter amount within the cell: 0 = centres, 1 = anywhere"),
+    }
+}
+pattern_params! {
+    /// Latin hypercube sampling in `dims` dimensions, projected to two of them.
+    Lhs = "lhs", "Latin hypercube in k dims: one random permutation per dimension; shows the projection (x_dim, y_dim)" {
+        dims: int(3, 1, 64, "number of dimensions k"),
+        x_dim: int(0, 0, 63, "dimension shown on x (0-based, < dims)"),
+        y_dim: int(1, 0, 63, "dimension shown on y (0-based, < dims)"),
+        amount: float(1.0, 0.0, 1.0, "jitter amount within the cell: 0 = centres, 1 = anywhere"),
+    }
+}
+pattern_params! {
+    /// Multi-jittered sampling (Chiu, Shirley, Wang 1994).
+    MultiJitter = "multijitter", "multi-jitter (Chiu–Shirley–Wang 1994): jittered and N-rooks at once, shuffled canonical arrangement" {
+        cols: int(0, 0, MAX_N, "columns; 0 = auto (the divisor of n nearest √n); must divide n"),
+    }
+}
+pattern_params! {
+    /// Correlated multi-jittered sampling (Kensler 2013).
+    CorrelatedMultiJitter = "cmj", "correlated multi-jitter (Kensler 2013): one shuffle per row/column of the canonical arrangement" {
+        cols: int(0, 0, MAX_N, "columns; 0 = auto (the divisor of n nearest √n); must divide n"),
+    }
+}
+pattern_params! {
+    /// Hexagonal lattice fitted to the unit torus.
+    Hex = "hex", "hexagonal lattice (rows offset by half a spacing) fitted to the torus, optional jitter" {
+        rows: int(0, 0, MAX_N, "rows; 0 = auto (the even divisor of n closest to the equilateral aspect); must divide n"),
+        amount: float(0.0, 0.0, 1.0, "jitter amount: 0 = exact lattice, 1 = anywhere in the point's cell"),
+    }
+}
+pattern_params! {
+    /// Dart throwing as in the lecture's pseudo-code, on the torus.
+    PoissonDart = "poisson-dart", "dart throwing (lecture pseudo-code): reject darts closer than radius to any accepted point (toroidal)" {
+        radius: float(0.0, 0.0, 1.0, "minimum toroidal distance between points; 0 = auto (0.65 × the hexagonal packing distance for n)"),
+        max_misses: int(100_000, 1, 100_000_000, "give up after this many consecutive rejected darts"),
+    }
+}
+pattern_params! {
+    /// Bridson's fast Poisson-disk sampling on the torus.
+    PoissonBridson = "poisson-bridson", "Bridson 2007 Poisson disk on the torus: k annulus candidates per active point, randomly thinned to n" {
+        radius: float(0.0, 0.0, 1.0, "minimum toroidal distance between points; 0 = auto (0.65 × the hexagonal packing distance for n)"),
+        k: int(30, 1, 1000, "candidates tried around each active point"),
+    }
+}
+pattern_params! {
+    /// Mitchell's best-candidate sampling on the torus.
+    BestCandidate = "best-candidate", "Mitchell 1991 best candidate on the torus: point i keeps the farthest of m·i candidates; progressive" {
+        m: int(1, 1, 1000, "candidate multiplier: point i draws m·i candidates (at least 1)"),
+    }
+}
+pattern_params! {
+    /// The van der Corput sequence Φ_b(i), drawn on the line y = ½.
+    VanDerCorput = "van-der-corput", "1D van der Corput sequence x_i = Φ_b(i), drawn at y = ½" {
+        base: int(2, 2, 7919, "base b (a prime ≤ 7919, the 1000th prime)"),
+    }
+}
+pattern_params! {
+    /// The Halton sequence (Φ_{b1}(i), Φ_{b2}(i)).
+    Halton = "halton", "Halton sequence x_i = (Φ_bx(i), Φ_by(i)), i = skip, skip+1, …" {
+        base_x: int(2, 2, 7919, "base of x (a prime ≤ 7919)"),
+        base_y: int(3, 2, 7919, "base of y (a prime ≤ 7919)"),
+        skip: int(0, 0, u32::MAX, "index of the first point"),
+    }
+}
+pattern_params! {
+    /// The Hammersley point set (i/N, Φ_{p1}(i)).
+    Hammersley = "hammersley", "Hammersley set x_i = (i/N, Φ_p1(i))" {
+        p1: int(2, 2, 7919, "base p1 of y (a prime ≤ 7919; the lecture shows 2, 3, 5, 7, 11)"),
+    }
+}
+pattern_params! {
+    /// Halton with the folded radical inverse.
+    HaltonZaremba = "halton-zaremba", "Halton–Zaremba: Halton with the folded radical inverse Σ((a_k+k−1) mod b) b^(−k)" {
+        base_x: int(2, 2, 7919, "base of x (a prime ≤ 7919)"),
+        base_y: int(3, 2, 7919, "base of y (a prime ≤ 7919)"),
+        skip: int(0, 0, u32::MAX, "index of the first point"),
+    }
+}
+pattern_params! {
+    /// Hammersley with the folded radical inverse.
+    HammersleyZaremba = "hammersley-zaremba", "Hammersley–Zaremba: (i/N, folded Φ_p1(i))" {
+        p1: int(2, 2, 7919, "base p1 of y (a prime ≤ 7919)"),
+    }
+}
+pattern_params! {
+    /// The (0,2)-sequence of the first two Sobol' dimensions.
+    Sobol = "sobol", "Sobol' (0,2)-sequence (first two dimensions), optionally scrambled" {
+        scramble: choice(Scramble, "none | random-digit (XOR) | owen (nested uniform, hash-based)"),
+        skip: int(0, 0, u32::MAX, "index of the first point (a multiple of 2^m keeps the (0,m,2)-net property)"),
+    }
+}
+
+macro_rules! patterns {
+    ($( $variant:ident ),* $(,)?) => {
+        /// Every sample pattern, as a small parameter struct per variant.
+        #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+        #[serde(tag = "kind", rename_all = "kebab-case")]
+        pub enum Pattern {
+            $( $variant($variant), )*
+        }
+
+        impl Pattern {
+            /// Every pattern with its default parameters, in documentation order.
+            pub fn all() -> Vec<Pattern> {
+                vec![ $( Pattern::$variant($variant::default()), )* ]
+            }
+
+            /// Name used on the command line and in scene files.
+            pub fn name(&self) -> &'static str {
+                match self { $( Pattern::$variant(_) => $variant::NAME, )* }
+            }
+
+            /// One-line description.
+            pub fn summary(&self) -> &'static str {
+                match self { $( Pattern::$variant(_) => $variant::SUMMARY, )* }
+            }
+
+            /// Descriptors of every parameter.
+            pub fn specs(&self) -> Vec<ParamSpec> {
+                match self { $( Pattern::$variant(_) => $variant::specs(), )* }
+            }
+
+            /// Current value of parameter `key`.
+            pub fn get(&self, key: &str) -> Option<ParamValue> {
+                match self { $( Pattern::$variant(p) => p.get(key), )* }
+            }
+
+            /// Sets parameter `key` from text, checking it against its range.
+            pub fn set(&mut self, key: &str, text: &str) -> Result<(), PatternError> {
+                match self { $( Pattern::$variant(p) => p.set(key, text), )* }
+            }
+        }
+    };
+}
+
+patterns!(
+    Grid,
+    Random,
+    Jitter,
+    NRooks,
+    Lhs,
+    MultiJitter,
+    CorrelatedMultiJitter,
+    Hex,
+    PoissonDart,
+    PoissonBridson,
+    BestCandidate,
+    VanDerCorput,
+    Halton,
+    Hammersley,
+    HaltonZaremba,
+    HammersleyZaremba,
+    Sobol,
+);
+
+impl Default for Pattern {
+    fn default() -> Self {
+        Pattern::Jitter(Jitter::default())
+    }
+}
+
+impl Pattern {
+    /// The pattern named `name` with default parameters.
+    pub fn from_name(name: &str) -> Result<Pattern, PatternError> {
+        Pattern::all()
+            .into_iter()
+            .find(|p| p.name().eq_ignore_ascii_case(name.trim()))
+            .ok_or_else(|| PatternError::UnknownPattern {
+                name: name.to_string(),
+                allowed: Pattern::all()
+                    .iter()
+                    .map(|p| p.name())
+                    .collect::<Vec<_>>()
+                    .join(", "),
+            })
+    }
+
+    /// Whether the pattern uses its seed (deterministic ones ignore it).
+    pub fn is_random(&self) -> bool {
+        !matches!(
+            self,
+            Pattern::Grid(_)
+                | Pattern::VanDerCorput(_)
+                | Pattern::Halton(_)
+                | Pattern::Hammersley(_)
+                | Pattern::HaltonZaremba(_)
+                | Pattern::HammersleyZaremba(_)
+        ) && !matches!(self, Pattern::Sobol(s) if s.scramble == Scramble::None)
+            && !matches!(self, Pattern::Jitter(j) if j.amount == 0.0)
+            && !matches!(self, Pattern::Hex(h) if h.amount == 0.0)
+    }
+
+    /// Whether every prefix of the output is itself a good pattern (sequences, best candidate).
+    pub fn is_progressive(&self) -> bool {
+        matches!(
+            self,
+            Pattern::Random(_)
+                | Pattern::BestCandidate(_)
+                | Pattern::VanDerCorput(_)
+                | Pattern::Halton(_)
+                | Pattern::HaltonZaremba(_)
+                | Pattern::Sobol(_)
+        )
+    }
+
+    /// `n` points in [0,1)²; a pure function of `(self, n, seed)`.
+    ///
+    /// Patterns that may place fewer points than asked (dart throwing that gives up) return
+    /// those points; use [`Pattern::generate_with`] to read why.
+    pub fn generate(&self, n: usize, seed: u64) -> Result<Vec<DVec2>, PatternError> {
+        Ok(self.generate_with(n, seed, &Cancel::never())?.points)
+    }
+
+    /// As [`Pattern::generate`], cancellable, and reporting how many points were placed.
+    pub fn generate_with(
+        &self,
+        n: usize,
+        seed: u64,
+        cancel: &Cancel,
+    ) -> Result<Generated, PatternError> {
+        check_n(n, MAX_N)?;
+        let points = match self {
+            Pattern::Grid(p) => stratified::grid(p, n)?,
+            Pattern::Random(_) => stratified::random(n, seed),
+            Pattern::Jitter(p) => stratified::jitter(p, n, seed)?,
+            Pattern::NRooks(p) => stratified::nrooks(p, n, seed),
+            Pattern::Lhs(p) => stratified::lhs(p, n, seed)?,
+            Pattern::MultiJitter(p) => stratified::multijitter(p, n, seed)?,
+            Pattern::CorrelatedMultiJitter(p) => stratified::correlated_multijitter(p, n, seed)?,
+            Pattern::Hex(p) => hex::hex(p, n, seed)?,
+            Pattern::PoissonDart(p) => return poisson::dart(p, n, seed, cancel),
+            Pattern::PoissonBridson(p) => return poisson::bridson(p, n, seed, cancel),
+            Pattern::BestCandidate(p) => best_candidate::best_candidate(p, n, seed, cancel)?,
+            Pattern::VanDerCorput(p) => lowdisc::van_der_corput(p, n)?,
+            Pattern::Halton(p) => lowdisc::halton(p, n)?,
+            Pattern::Hammersley(p) => lowdisc::hammersley(p, n)?,
+            Pattern::HaltonZaremba(p) => lowdisc::halton_zaremba(p, n)?,
+            Pattern::HammersleyZaremba(p) => lowdisc::hammersley_zaremba(p, n)?,
+            Pattern::Sobol(p) => lowdisc::sobol(p, n, seed)?,
+        };
+        debug_assert!(points
+            .iter()
+            .all(|p| (0.0..1.0).contains(&p.x) && (0.0..1.0).contains(&p.y)));
+        Ok(Generated::complete(points))
+    }
+}
+
+/// Clamps a coordinate into [0, 1 − 2⁻⁵³].
+#[inline]
+pub fn clamp_unit(x: f64) -> f64 {
+    x.clamp(0.0, ONE_MINUS_EPSILON)
+}
+
+/// The divisor of `n` nearest to √n, not above it (so `cols ≤ rows`). 1 for primes.
+pub fn divisor_near_sqrt(n: usize) -> usize {
+    let mut d = (n as f64).sqrt() as usize;
+    while d > 1 && n % d != 0 {
+        d -= 1;
+    }
+    d.max(1)
+}
+
+/// Resolves a `cols` parameter (0 = auto) into `(cols, rows)` with `cols·rows = n`.
+pub fn resolve_cols(
+    pattern: &'static str,
+    cols: u32,
+    n: usize,
+) -> Result<(usize, usize), PatternError> {
+    let c = if cols == 0 {
+        divisor_near_sqrt(n)
+    } else {
+        cols as usize
+    };
+    if c == 0 || n % c != 0 {
+        return Err(PatternError::InvalidParam {
+            pattern,
+            field: "cols",
+            value: cols.to_string(),
+            allowed: format!("0 (auto) or a divisor of n = {n}"),
+        });
+    }
+    Ok((c, n / c))
+}

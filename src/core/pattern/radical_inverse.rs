@@ -1,0 +1,1 @@
+//! Radical inverse and folded radical inverse.

@@ -1,0 +1,1 @@
+//! recon (see crate docs).

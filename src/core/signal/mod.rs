@@ -1,0 +1,1 @@
+//! signal (see crate docs).

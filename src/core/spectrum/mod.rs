@@ -1,0 +1,1 @@
+//! spectrum (see crate docs).

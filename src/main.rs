@@ -1,0 +1,44 @@
+//! The `samplescope` command line.
+
+mod cli;
+
+use clap::{Parser, Subcommand};
+use std::process::ExitCode;
+
+/// samplescope: an explorer of signals and sampling for image synthesis.
+#[derive(Parser, Debug)]
+#[command(name = "samplescope", version, about, long_about = None)]
+struct Cli {
+    #[command(subcommand)]
+    command: Option<Command>,
+}
+
+#[derive(Subcommand, Debug)]
+enum Command {
+    /// Generate a sample pattern and write it as CSV (`x,y`).
+    Points(cli::points::PointsArgs),
+}
+
+fn main() -> ExitCode {
+    let cli = match Cli::try_parse() {
+        Ok(c) => c,
+        Err(e) => {
+            let code = if e.use_stderr() { 2 } else { 0 };
+            let _ = e.print();
+            return ExitCode::from(code);
+        }
+    };
+    let result = match cli.command {
+        Some(Command::Points(args)) => cli::points::run(&args),
+        None => Err(cli::CliError::Usage(
+            "the GUI is not built yet; use a subcommand (see --help)".into(),
+        )),
+    };
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("error: {e}");
+            ExitCode::from(e.exit_code())
+        }
+    }
+}
