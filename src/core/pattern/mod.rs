@@ -389,7 +389,7 @@ impl Pattern {
             Pattern::Grid(p) => stratified::grid(p, n)?,
             Pattern::Random(_) => stratified::random(n, seed),
             Pattern::Jitter(p) => stratified::jitter(p, n, seed)?,
-            Pattern::NRooks(p) => stratified::nrooks(p, n, seed),
+            Pattern::NRooks(p) => stratified::try_nrooks(p, n, seed)?,
             Pattern::Lhs(p) => stratified::lhs(p, n, seed)?,
             Pattern::MultiJitter(p) => stratified::multijitter(p, n, seed)?,
             Pattern::CorrelatedMultiJitter(p) => stratified::correlated_multijitter(p, n, seed)?,
