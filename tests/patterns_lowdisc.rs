@@ -274,6 +274,25 @@ fn halton_2_3_first_points_are_hand_computed() {
 }
 
 #[test]
+fn halton_and_hammersley_equal_radical_inverse_bit_for_bit() {
+    let h = Halton {
+        base_x: 7907,
+        base_y: 3,
+        skip: 4_000_000_000,
+    };
+    let pts = lowdisc::halton(&h, 5000).unwrap();
+    for (j, p) in pts.iter().enumerate() {
+        let i = u64::from(h.skip) + j as u64;
+        assert_eq!(p.x.to_bits(), radical_inverse(i, 7907).to_bits());
+        assert_eq!(p.y.to_bits(), radical_inverse(i, 3).to_bits());
+    }
+    let pts = lowdisc::hammersley(&Hammersley { p1: 5 }, 5000).unwrap();
+    for (i, p) in pts.iter().enumerate() {
+        assert_eq!(p.y.to_bits(), radical_inverse(i as u64, 5).to_bits());
+    }
+}
+
+#[test]
 fn hammersley_8_points_p1_3_are_hand_computed() {
     // x = i/8; y = Φ₃(i): 0, 1/3, 2/3, 1/9, 4/9, 7/9, 2/9 (6 = 20₃), 5/9 (7 = 21₃).
     let y = [

@@ -8,7 +8,7 @@
 //! - Bases are primes in 2..=7919 (the first 1000 primes, [`PRIMES`](super::radical_inverse::PRIMES)).
 //!   A non-prime base is an error: the Halton construction needs pairwise coprime bases, and the
 //!   parameter is documented as "a prime"; the GUI offers only primes.
-//! - Every coordinate lies in [0, 1 − 2⁻⁵³] (see [`radical_inverse`]).
+//! - Every coordinate lies in [0, 1 − 2⁻⁵³] (see [`radical_inverse`](super::radical_inverse::radical_inverse)).
 //! - Sobol' points are 32-bit: a coordinate is an integer v ∈ [0, 2³²) read as v · 2⁻³², which is
 //!   exact in f64 and < 1 by construction.
 //!
@@ -17,7 +17,9 @@
 //! T. Kollig & A. Keller 2002 (folded radical inverse, random digit scrambling); S. Laine &
 //! T. Karras 2011, "Stratified sampling for stochastic transparency" (hash-based nested
 //! scrambling); B. Burley 2020, "Practical hash-based Owen scrambling" (JCGT 9(4)).
-use super::radical_inverse::{folded_radical_inverse, is_prime, radical_inverse, MAX_PRIME_BASE};
+use super::radical_inverse::{
+    is_prime, FoldedRadicalInverseIter, RadicalInverseIter, MAX_PRIME_BASE,
+};
 use super::*;
 use crate::core::rng::{derive_seed, Rng};
 
@@ -65,15 +67,17 @@ fn check_halton_bases(
 
 /// The van der Corput sequence drawn as 2D points: x_i = Φ_b(i), y_i = ½, i = 0..n.
 ///
-/// Φ_b is the radical inverse ([`radical_inverse`]); base 2 gives 0, ½, ¼, ¾, ⅛, ⅝, ⅜, … (the
+/// Φ_b is the radical inverse ([`radical_inverse`](super::radical_inverse::radical_inverse), evaluated
+/// incrementally by [`RadicalInverseIter`]); base 2 gives 0, ½, ¼, ¾, ⅛, ⅝, ⅜, … (the
 /// lecture's table). Star discrepancy O(log N / N).
 ///
 /// Errors: `n` outside 1..=[`MAX_N`]; `base` not a prime ≤ 7919.
 pub fn van_der_corput(p: &VanDerCorput, n: usize) -> Result<Vec<DVec2>, PatternError> {
     check_n(n, MAX_N)?;
     let b = check_prime_base(VanDerCorput::NAME, "base", p.base)?;
-    Ok((0..n as u64)
-        .map(|i| DVec2::new(radical_inverse(i, b), 0.5))
+    Ok(RadicalInverseIter::new(0, b)
+        .take(n)
+        .map(|x| DVec2::new(x, 0.5))
         .collect())
 }
 
@@ -87,8 +91,10 @@ pub fn halton(p: &Halton, n: usize) -> Result<Vec<DVec2>, PatternError> {
     check_n(n, MAX_N)?;
     let (bx, by) = check_halton_bases(Halton::NAME, p.base_x, p.base_y)?;
     let skip = u64::from(p.skip);
-    Ok((skip..skip + n as u64)
-        .map(|i| DVec2::new(radical_inverse(i, bx), radical_inverse(i, by)))
+    Ok(RadicalInverseIter::new(skip, bx)
+        .zip(RadicalInverseIter::new(skip, by))
+        .take(n)
+        .map(|(x, y)| DVec2::new(x, y))
         .collect())
 }
 
@@ -102,13 +108,16 @@ pub fn hammersley(p: &Hammersley, n: usize) -> Result<Vec<DVec2>, PatternError> 
     check_n(n, MAX_N)?;
     let b = check_prime_base(Hammersley::NAME, "p1", p.p1)?;
     let nf = n as f64;
-    Ok((0..n as u64)
-        .map(|i| DVec2::new(clamp_unit(i as f64 / nf), radical_inverse(i, b)))
+    Ok(RadicalInverseIter::new(0, b)
+        .take(n)
+        .enumerate()
+        .map(|(i, y)| DVec2::new(clamp_unit(i as f64 / nf), y))
         .collect())
 }
 
 /// Halton–Zaremba: x_j = (Φ⁺_{bx}(i), Φ⁺_{by}(i)), i = skip + j, with the folded radical inverse
-/// Φ⁺_b(n) = Σ_{k≥1} ((a_k + k − 1) mod b) b^{−k} ([`folded_radical_inverse`]; Kollig & Keller 2002).
+/// Φ⁺_b(n) = Σ_{k≥1} ((a_k + k − 1) mod b) b^{−k} ([`folded_radical_inverse`](super::radical_inverse::folded_radical_inverse); Kollig & Keller 2002,
+/// evaluated incrementally by [`FoldedRadicalInverseIter`]).
 ///
 /// Note that Φ⁺ sums the offset digits beyond the length of i too, so the first point is not
 /// the origin: Φ⁺₂(0) = 1/3, Φ⁺₃(0) = 5/26.
@@ -118,21 +127,25 @@ pub fn halton_zaremba(p: &HaltonZaremba, n: usize) -> Result<Vec<DVec2>, Pattern
     check_n(n, MAX_N)?;
     let (bx, by) = check_halton_bases(HaltonZaremba::NAME, p.base_x, p.base_y)?;
     let skip = u64::from(p.skip);
-    Ok((skip..skip + n as u64)
-        .map(|i| DVec2::new(folded_radical_inverse(i, bx), folded_radical_inverse(i, by)))
+    Ok(FoldedRadicalInverseIter::new(skip, bx)
+        .zip(FoldedRadicalInverseIter::new(skip, by))
+        .take(n)
+        .map(|(x, y)| DVec2::new(x, y))
         .collect())
 }
 
 /// Hammersley–Zaremba: x_i = (i/N, Φ⁺_{p1}(i)), i = 0..N, with the folded radical inverse
-/// ([`folded_radical_inverse`]).
+/// ([`FoldedRadicalInverseIter`]).
 ///
 /// Errors: as [`hammersley`].
 pub fn hammersley_zaremba(p: &HammersleyZaremba, n: usize) -> Result<Vec<DVec2>, PatternError> {
     check_n(n, MAX_N)?;
     let b = check_prime_base(HammersleyZaremba::NAME, "p1", p.p1)?;
     let nf = n as f64;
-    Ok((0..n as u64)
-        .map(|i| DVec2::new(clamp_unit(i as f64 / nf), folded_radical_inverse(i, b)))
+    Ok(FoldedRadicalInverseIter::new(0, b)
+        .take(n)
+        .enumerate()
+        .map(|(i, y)| DVec2::new(clamp_unit(i as f64 / nf), y))
         .collect())
 }
 

@@ -149,6 +149,9 @@ const TWO_POW_M64: f64 = 1.0 / 18_446_744_073_709_551_616.0;
 /// is what is left of `n` (at most about b, so one or two digits for the bases ≤ 7919 used here,
 /// summed in f64) and b^k is kept exactly as a `u128` (b^k ≤ b·n < 2⁹⁶).
 ///
+/// Indices below 2³² (all that the sequences use) take a 32-bit path: the same digits, with
+/// 32-bit divisions and b^k ≤ b·n < 2⁶⁴ held in a `u64`.
+///
 /// Accuracy: when `r < 2⁵³` and `b^k ≤ 2⁵³` (e.g. every n < 3³³ in base 3) the result is the
 /// correctly rounded value of the exact rational r / b^k (one rounding, in the division). In
 /// general it is within 2 ulp. Base 2 takes the bit-reversal fast path
@@ -163,6 +166,19 @@ pub fn radical_inverse(n: u64, base: u32) -> f64 {
         return radical_inverse_base2(n);
     }
     let b = u64::from(base.max(2));
+    if let Ok(small) = u32::try_from(n) {
+        // n < 2³²: 32-bit divisions, and b^k ≤ b·n < 2⁶⁴ fits a u64 (so does r < b^k).
+        let mut rest = small;
+        let mut reversed: u64 = 0;
+        let mut denom: u64 = 1;
+        while rest > 0 {
+            let next = rest / base;
+            reversed = reversed * b + u64::from(rest - next * base);
+            denom *= b;
+            rest = next;
+        }
+        return (reversed as f64 / denom as f64).min(ONE_MINUS_EPSILON);
+    }
     let limit = u64::MAX / b - b;
     let mut rest = n;
     let mut reversed: u64 = 0;
@@ -202,6 +218,99 @@ pub fn try_radical_inverse(n: u64, base: u32) -> Result<f64, PatternError> {
     Ok(radical_inverse(n, base))
 }
 
+/// The run Φ_b(start), Φ_b(start + 1), … of radical inverses, computed incrementally and
+/// bit-identical to [`radical_inverse`] (the sequences' fast path).
+///
+/// With K = ⌊53 / log₂ b⌋ digits, so that b^K ≤ 2⁵³, every i < b^K has Φ_b(i) = R(i) / b^K with
+/// the integer R(i) = Σ_{j=1}^{K} a_j b^{K−j} < 2⁵³. Adding 1 to i adds b^{K−1} to R and, for each
+/// carry out of digit j, subtracts b·b^{K−j} and adds b^{K−j−1}: amortised 1 + 1/(b − 1) integer
+/// steps per index, no division. R and b^K are exact in f64, so the quotient R / b^K is the
+/// correctly rounded value — the same bits as [`radical_inverse`], whose numerator and
+/// denominator are then also exact. Past b^K (never reached by the sequences' 33-bit indices) the
+/// iterator calls [`radical_inverse`] for each index.
+#[derive(Debug, Clone)]
+pub struct RadicalInverseIter {
+    base: u32,
+    /// The next index to yield.
+    next: u64,
+    /// Digits a_1 … a_K of `next`, least significant first.
+    digits: [u32; 64],
+    /// weights[j] = b^{K−1−j}: the weight of digit a_{j+1} in R.
+    weights: [u64; 64],
+    /// K, the number of digits tracked.
+    k: usize,
+    /// R(next).
+    r: u64,
+    /// b^K as f64 (exact).
+    denom: f64,
+    /// `next` ≥ b^K: fall back to [`radical_inverse`].
+    overflow: bool,
+}
+
+impl RadicalInverseIter {
+    /// The run starting at Φ_b(start). `base` must be ≥ 2 (`debug_assert!`; callers validate).
+    pub fn new(start: u64, base: u32) -> Self {
+        debug_assert!(base >= 2, "RadicalInverseIter: base {base} < 2");
+        let b = u64::from(base.max(2));
+        let (k, pow) = digits_within_2_pow_53(b);
+        let mut weights = [0u64; 64];
+        let mut w = 1u64;
+        for j in (0..k).rev() {
+            weights[j] = w;
+            w *= b;
+        }
+        let mut it = RadicalInverseIter {
+            base,
+            next: start,
+            digits: [0; 64],
+            weights,
+            k,
+            r: 0,
+            denom: pow as f64,
+            overflow: start >= pow,
+        };
+        let mut rest = start;
+        for j in 0..k {
+            let d = rest % b;
+            it.digits[j] = d as u32;
+            it.r += d * weights[j];
+            rest /= b;
+        }
+        it
+    }
+}
+
+impl Iterator for RadicalInverseIter {
+    type Item = f64;
+
+    #[inline]
+    fn next(&mut self) -> Option<f64> {
+        let i = self.next;
+        self.next = i.wrapping_add(1);
+        if self.overflow {
+            return Some(radical_inverse(i, self.base));
+        }
+        let value = (self.r as f64 / self.denom).min(ONE_MINUS_EPSILON);
+        // Increment the digits of i (and R) to those of i + 1.
+        let mut j = 0;
+        loop {
+            self.digits[j] += 1;
+            self.r += self.weights[j];
+            if self.digits[j] < self.base {
+                break;
+            }
+            self.digits[j] = 0;
+            self.r -= u64::from(self.base) * self.weights[j];
+            j += 1;
+            if j == self.k {
+                self.overflow = true;
+                break;
+            }
+        }
+        Some(value)
+    }
+}
+
 /// `base ≥ 2`, else an error naming the field.
 fn check_base(base: u32) -> Result<(), PatternError> {
     if base < 2 {
@@ -220,17 +329,20 @@ fn check_base(base: u32) -> Result<(), PatternError> {
 /// a_i of n beyond its length are 0, so the series goes on with the digits (i − 1) mod b: e.g.
 /// Φ⁺₂(0) = 0.010101…₂ = 1/3 and Φ⁺₃(0) = 0.012012…₃ = 5/26.
 ///
-/// **Stopping rule.** Let z be the position of the first non-zero folded digit (z ≤ len(n) + 2,
-/// because beyond n only every b-th digit is 0), so Φ⁺ ≥ b^{−z}. Digits are summed up to
-/// position K, the first position with b^{K−z} ≥ 2⁶⁰. The omitted tail is < b^{−K} ≤ 2⁻⁶⁰·Φ⁺,
-/// less than 1/128 of an ulp: no further digit can change the f64 (up to the rounding of the
-/// digits summed). For base 2 this is 60 digits past z; for base 7919, 6 digits.
+/// **Stopping rule** (of the series summation [`folded_series`]): let z be the position of the
+/// first non-zero folded digit (z ≤ len(n) + 2, because beyond n only every b-th digit is 0), so
+/// Φ⁺ ≥ b^{−z}. Digits are summed up to position L, the first with b^{L−z} ≥ 2⁶⁰. The omitted
+/// tail is < b^{−L} ≤ 2⁻⁶⁰·Φ⁺, under 1/128 of an ulp: no further digit can change the f64 (up to
+/// the rounding of the digits summed). For base 2 that is 60 digits past z; for base 7919, 6.
 ///
-/// Method: the folded digits z..=K are accumulated exactly as an integer F (Horner, u128:
-/// F < b^{K−z+1} < 2⁶⁰·b²), so Φ⁺ = F / b^{K−z+1} / b^{z−1} with both powers exact in u128;
-/// the result is within 3 ulp of the exact series. Base 2 has a bit-level fast path: the first
-/// 64 folded digits are the bits of n ⊕ 0xAAAA…AA (bit i−1 is flipped when i − 1 is odd), and the
-/// digits beyond are 0101…, worth 2⁻⁶⁴/3, so Φ⁺₂(n) = (reverse_bits(n ⊕ 0xAA…A) + 1/3)·2⁻⁶⁴.
+/// **Method.** With K = ⌊53 / log₂ b⌋ (so b^K ≤ 2⁵³), an index n < b^K has no digits beyond K, so
+/// Φ⁺_b(n) = (F(n) + C) / b^K, where F(n) = Σ_{i=1}^{K} ((a_i + i − 1) mod b) b^{K−i} is an exact
+/// integer < 2⁵³ and C = Σ_{m≥1} ((K + m − 1) mod b) b^{−m} is the index-independent tail, summed
+/// by [`folded_series`]. Larger n are summed by [`folded_series`] directly. Either way the result
+/// is within 3 ulp of the exact series ([`FoldedRadicalInverseIter`] gives the same bits,
+/// incrementally). Base 2 has a bit-level fast path: the first 64 folded digits are the bits of
+/// n ⊕ 0xAAAA…AA (bit i−1 flipped when i − 1 is odd), the digits beyond are 0101…, worth 2⁻⁶⁴/3,
+/// so Φ⁺₂(n) = (reverse_bits(n ⊕ 0xAA…A) + 1/3)·2⁻⁶⁴.
 ///
 /// `base` must be ≥ 2 (`debug_assert!`; see [`try_folded_radical_inverse`]).
 pub fn folded_radical_inverse(n: u64, base: u32) -> f64 {
@@ -239,16 +351,59 @@ pub fn folded_radical_inverse(n: u64, base: u32) -> f64 {
         let bits = (n ^ 0xAAAA_AAAA_AAAA_AAAA).reverse_bits();
         return ((bits as f64 + 1.0 / 3.0) * TWO_POW_M64).min(ONE_MINUS_EPSILON);
     }
-    folded_general(n, u64::from(base.max(2)))
+    let b = u64::from(base.max(2));
+    let (k, pow) = digits_within_2_pow_53(b);
+    if n >= pow {
+        return folded_series(n, b, 0);
+    }
+    let mut rest = n;
+    let mut folded: u64 = 0;
+    let mut offset: u64 = 0;
+    for _ in 0..k {
+        let next = rest / b;
+        let mut d = rest - next * b + offset;
+        if d >= b {
+            d -= b;
+        }
+        folded = folded * b + d;
+        rest = next;
+        offset += 1;
+        if offset == b {
+            offset = 0;
+        }
+    }
+    folded_from_parts(folded, folded_series(0, b, k as u64 % b), pow)
 }
 
-/// The general path of [`folded_radical_inverse`], valid for every base b ≥ 2.
-fn folded_general(n: u64, b: u64) -> f64 {
+/// (F + C) / b^K, clamped below 1: the common last step of [`folded_radical_inverse`] and
+/// [`FoldedRadicalInverseIter`] (same expression, same bits).
+#[inline]
+fn folded_from_parts(folded: u64, tail: f64, pow: u64) -> f64 {
+    ((folded as f64 + tail) / pow as f64).min(ONE_MINUS_EPSILON)
+}
+
+/// K = the largest k with b^k ≤ 2⁵³, and b^K (b ≥ 2; K ≥ 1 for b ≤ 2³²).
+fn digits_within_2_pow_53(b: u64) -> (usize, u64) {
+    let mut k = 0;
+    let mut pow: u64 = 1;
+    while pow <= (1u64 << 53) / b {
+        pow *= b;
+        k += 1;
+    }
+    (k, pow)
+}
+
+/// The series Σ_{i≥1} ((a_i + r + i − 1) mod b) b^{−i} (digits a_i of n, then 0), with the
+/// stopping rule of [`folded_radical_inverse`]: r = 0 gives Φ⁺_b(n); n = 0 gives the tail C_b(r).
+/// The folded digits from the first non-zero one (position z) to position L are accumulated
+/// exactly as an integer F (Horner, u128: F < b^{L−z+1} < 2⁶⁰·b²), so the sum is
+/// F / b^{L−z+1} / b^{z−1} with both powers exact in u128 (b^{z−1} ≤ b^{len(n)+1} < 2⁹⁰).
+fn folded_series(n: u64, b: u64, r: u64) -> f64 {
     let b128 = u128::from(b);
-    // The significant part must reach b^(K−z) ≥ 2^60, i.e. b^(K−z+1) ≥ 2^60 · b.
+    // The significant part must reach b^(L−z) ≥ 2^60, i.e. b^(L−z+1) ≥ 2^60 · b.
     let enough: u128 = (1u128 << 60) * b128;
     let mut rest = n;
-    let mut offset: u64 = 0; // (i − 1) mod b for the current position i
+    let mut offset: u64 = r % b; // (r + i − 1) mod b for the current position i
     let mut lead: u128 = 1; // b^(z−1): one factor per leading zero digit
     let mut folded: u128 = 0; // F
     let mut scale: u128 = 1; // b^(number of digits in F)
@@ -272,6 +427,112 @@ fn folded_general(n: u64, b: u64) -> f64 {
         }
     }
     ((folded as f64 / scale as f64) / lead as f64).min(ONE_MINUS_EPSILON)
+}
+
+/// The run Φ⁺_b(start), Φ⁺_b(start + 1), … of folded radical inverses, computed incrementally
+/// and bit-identical to [`folded_radical_inverse`].
+///
+/// Keeps the K digits a_i of the index and the integer F = Σ_{i=1}^{K} ((a_i + i − 1) mod b)
+/// b^{K−i} (see [`folded_radical_inverse`]). Adding 1 to the index increments every digit of the
+/// carry chain by 1 mod b, and so each of their folded digits: F changes by +b^{K−i}, or by
+/// −(b − 1)·b^{K−i} where the folded digit wraps from b − 1 to 0. The tail C is computed once.
+/// Base 2, and indices ≥ b^K, use [`folded_radical_inverse`] per index.
+#[derive(Debug, Clone)]
+pub struct FoldedRadicalInverseIter {
+    base: u32,
+    next: u64,
+    /// Digits a_1 … a_K of `next`, least significant first.
+    digits: [u32; 64],
+    /// Folded digits (a_i + i − 1) mod b.
+    folded_digits: [u32; 64],
+    /// weights[j] = b^{K−1−j}.
+    weights: [u64; 64],
+    k: usize,
+    /// F(next).
+    folded: u64,
+    /// The tail C.
+    tail: f64,
+    /// b^K.
+    pow: u64,
+    /// Per-index fallback (base 2, or `next` ≥ b^K).
+    per_index: bool,
+}
+
+impl FoldedRadicalInverseIter {
+    /// The run starting at Φ⁺_b(start). `base` must be ≥ 2 (`debug_assert!`; callers validate).
+    pub fn new(start: u64, base: u32) -> Self {
+        debug_assert!(base >= 2, "FoldedRadicalInverseIter: base {base} < 2");
+        let b = u64::from(base.max(2));
+        let (k, pow) = digits_within_2_pow_53(b);
+        let mut it = FoldedRadicalInverseIter {
+            base,
+            next: start,
+            digits: [0; 64],
+            folded_digits: [0; 64],
+            weights: [0; 64],
+            k,
+            folded: 0,
+            tail: 0.0,
+            pow,
+            per_index: base == 2 || start >= pow,
+        };
+        if it.per_index {
+            return it;
+        }
+        it.tail = folded_series(0, b, k as u64 % b);
+        let mut w = 1u64;
+        for j in (0..k).rev() {
+            it.weights[j] = w;
+            w *= b;
+        }
+        let mut rest = start;
+        for j in 0..k {
+            let a = rest % b;
+            rest /= b;
+            let f = (a + j as u64 % b) % b;
+            it.digits[j] = a as u32;
+            it.folded_digits[j] = f as u32;
+            it.folded += f * it.weights[j];
+        }
+        it
+    }
+}
+
+impl Iterator for FoldedRadicalInverseIter {
+    type Item = f64;
+
+    #[inline]
+    fn next(&mut self) -> Option<f64> {
+        let i = self.next;
+        self.next = i.wrapping_add(1);
+        if self.per_index {
+            return Some(folded_radical_inverse(i, self.base));
+        }
+        let value = folded_from_parts(self.folded, self.tail, self.pow);
+        let b = self.base;
+        let mut j = 0;
+        loop {
+            let w = self.weights[j];
+            if self.folded_digits[j] == b - 1 {
+                self.folded_digits[j] = 0;
+                self.folded -= u64::from(b - 1) * w;
+            } else {
+                self.folded_digits[j] += 1;
+                self.folded += w;
+            }
+            self.digits[j] += 1;
+            if self.digits[j] < b {
+                break;
+            }
+            self.digits[j] = 0;
+            j += 1;
+            if j == self.k {
+                self.per_index = true;
+                break;
+            }
+        }
+        Some(value)
+    }
 }
 
 /// [`folded_radical_inverse`] with the base checked (`base < 2` is an error naming the field).
@@ -468,7 +729,7 @@ mod tests {
         let fixed = [0u64, 1, 2, 5, 1000, u64::MAX, 0xAAAA_AAAA_AAAA_AAAA];
         let random: Vec<u64> = (0..200).map(|_| rng.next_u64() >> rng.below(64)).collect();
         for &n in fixed.iter().chain(&random) {
-            let general = folded_general(n, 2);
+            let general = folded_series(n, 2, 0);
             let fast = folded_radical_inverse(n, 2);
             assert!((general - fast).abs() <= 4.0 * f64::EPSILON * fast, "n={n}");
             let mut sum = 0.0f64;
@@ -480,6 +741,87 @@ mod tests {
             }
             let got = folded_radical_inverse(n, 2);
             assert!((got - sum).abs() <= 4.0 * f64::EPSILON * sum, "n={n}");
+        }
+    }
+
+    #[test]
+    fn iterator_is_bit_identical_to_radical_inverse_across_digit_overflow_edge() {
+        // Starts near 0, near a carry into a new digit, and just below b^K where the iterator
+        // switches to the per-index fallback (K = 53, 33, 4 for b = 2, 3, 7919).
+        let cases: [(u32, u64); 8] = [
+            (2, 0),
+            (2, (1 << 53) - 100),
+            (3, 0),
+            (3, 3u64.pow(33) - 100),
+            (5, 5u64.pow(7) - 3),
+            (7919, 0),
+            (7919, 7919u64.pow(4) - 100),
+            (7907, u64::from(u32::MAX) - 50),
+        ];
+        for (b, start) in cases {
+            for (j, x) in RadicalInverseIter::new(start, b).take(300).enumerate() {
+                let i = start + j as u64;
+                assert_eq!(x.to_bits(), radical_inverse(i, b).to_bits(), "b={b} i={i}");
+            }
+        }
+        let mut rng = crate::core::rng::Rng::new(8);
+        for _ in 0..200 {
+            let b = PRIMES[rng.below(PRIME_COUNT as u64) as usize];
+            let start = rng.next_u64() >> rng.below(64);
+            for (j, x) in RadicalInverseIter::new(start, b).take(20).enumerate() {
+                let i = start.wrapping_add(j as u64);
+                assert_eq!(x.to_bits(), radical_inverse(i, b).to_bits(), "b={b} i={i}");
+            }
+        }
+    }
+
+    #[test]
+    fn folded_iterator_is_bit_identical_across_digit_overflow_edge() {
+        // K = 33, 15, 4 for b = 3, 11, 7919: starts just below b^K cross into the fallback.
+        let cases: [(u32, u64); 8] = [
+            (2, 0),
+            (3, 0),
+            (3, 3u64.pow(33) - 100),
+            (5, 5u64.pow(7) - 3),
+            (11, 11u64.pow(15) - 100),
+            (7919, 0),
+            (7919, 7919u64.pow(4) - 100),
+            (7907, u64::from(u32::MAX) - 50),
+        ];
+        for (b, start) in cases {
+            for (j, x) in FoldedRadicalInverseIter::new(start, b)
+                .take(300)
+                .enumerate()
+            {
+                let i = start + j as u64;
+                let want = folded_radical_inverse(i, b);
+                assert_eq!(x.to_bits(), want.to_bits(), "b={b} i={i}");
+            }
+        }
+        let mut rng = crate::core::rng::Rng::new(9);
+        for _ in 0..200 {
+            let b = PRIMES[rng.below(PRIME_COUNT as u64) as usize];
+            let start = rng.next_u64() >> rng.below(64);
+            for (j, x) in FoldedRadicalInverseIter::new(start, b).take(20).enumerate() {
+                let i = start.wrapping_add(j as u64);
+                let want = folded_radical_inverse(i, b);
+                assert_eq!(x.to_bits(), want.to_bits(), "b={b} i={i}");
+            }
+        }
+    }
+
+    #[test]
+    fn folded_split_form_agrees_with_direct_series() {
+        // (F + C)/b^K against the series summed directly, for indices below b^K: within 3 ulp.
+        let mut rng = crate::core::rng::Rng::new(10);
+        for _ in 0..2000 {
+            let b = PRIMES[1 + rng.below(PRIME_COUNT as u64 - 1) as usize];
+            let (_, pow) = digits_within_2_pow_53(u64::from(b));
+            let n = rng.below(pow) >> rng.below(50);
+            let split = folded_radical_inverse(n, b);
+            let direct = folded_series(n, u64::from(b), 0);
+            let ulps = (split.to_bits() as i64 - direct.to_bits() as i64).unsigned_abs();
+            assert!(ulps <= 3, "b={b} n={n}: {split} vs {direct}");
         }
     }
 
