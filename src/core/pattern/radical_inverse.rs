@@ -270,10 +270,10 @@ impl RadicalInverseIter {
             overflow: start >= pow,
         };
         let mut rest = start;
-        for j in 0..k {
+        for (digit, &w) in it.digits.iter_mut().zip(&weights).take(k) {
             let d = rest % b;
-            it.digits[j] = d as u32;
-            it.r += d * weights[j];
+            *digit = d as u32;
+            it.r += d * w;
             rest /= b;
         }
         it
