@@ -5,13 +5,14 @@
 //! - `sobol owen`  vs the definition-level Owen scramble (one hashed coin per tree node, 32 per
 //!   coordinate) applied to matrix-product Sobol' points;
 //! - `sobol none`  vs the matrix-vector product per point ([`sobol_point_u32`]);
-//! - `halton 2,3`  vs digit-by-digit f64 summation of Φ_b.
+//! - `halton 2,3`  vs digit-by-digit f64 summation of Φ_b;
+//! - `halton-zaremba 2,3` vs digit-by-digit f64 summation of the folded series (64 digits).
 //!
 //! Run: `cargo bench --bench lowdisc -- --warm-up-time 1 --measurement-time 3`.
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
 use glam::DVec2;
 use samplescope::core::pattern::lowdisc::{self, owen_scramble_reference, sobol_point_u32};
-use samplescope::core::pattern::{Halton, Scramble, Sobol};
+use samplescope::core::pattern::{Halton, HaltonZaremba, Scramble, Sobol};
 use samplescope::core::rng::derive_seed;
 use std::time::Instant;
 
@@ -56,6 +57,27 @@ fn halton_reference() -> Vec<DVec2> {
         .collect()
 }
 
+fn zaremba_fast() -> Vec<DVec2> {
+    lowdisc::halton_zaremba(&HaltonZaremba::default(), black_box(N)).expect("valid parameters")
+}
+
+/// Φ⁺_b(i) by summing ((a_k + k − 1) mod b) b^{−k} in f64 over 64 digits (past double precision
+/// for b ≥ 2: the omitted tail is < 2⁻⁶⁴).
+fn zaremba_reference() -> Vec<DVec2> {
+    let phi = |mut i: u64, b: u64| {
+        let (mut sum, mut w) = (0.0, 1.0 / b as f64);
+        for k in 0..64 {
+            sum += ((i % b + k) % b) as f64 * w;
+            w /= b as f64;
+            i /= b;
+        }
+        sum
+    };
+    (0..N as u64)
+        .map(|i| DVec2::new(phi(black_box(i), 2), phi(i, 3)))
+        .collect()
+}
+
 /// Median wall time of `reps` runs, in milliseconds.
 fn median_ms(reps: usize, f: impl Fn() -> Vec<DVec2>) -> f64 {
     let mut t: Vec<f64> = (0..reps)
@@ -80,6 +102,10 @@ fn bench(c: &mut Criterion) {
     g.bench_function("fast", |b| b.iter(halton_fast));
     g.bench_function("reference", |b| b.iter(halton_reference));
     g.finish();
+    let mut g = c.benchmark_group("halton_zaremba_65536");
+    g.bench_function("fast", |b| b.iter(zaremba_fast));
+    g.bench_function("reference", |b| b.iter(zaremba_reference));
+    g.finish();
 
     // The ratio table (same process, same machine state).
     let rows = [
@@ -97,6 +123,11 @@ fn bench(c: &mut Criterion) {
             "halton 2,3",
             median_ms(21, halton_fast),
             median_ms(21, halton_reference),
+        ),
+        (
+            "halton-zaremba 2,3",
+            median_ms(21, zaremba_fast),
+            median_ms(5, zaremba_reference),
         ),
     ];
     println!(

@@ -2,7 +2,7 @@
 //! references, the (0,m,2)-net property of the Sobol' sequence, validation and determinism.
 
 use glam::DVec2;
-use samplescope::core::pattern::lowdisc::{self, sobol_point_u32};
+use samplescope::core::pattern::lowdisc::{self, owen_scramble, sobol_point_u32};
 use samplescope::core::pattern::radical_inverse::{
     folded_radical_inverse, radical_inverse, radical_inverse_table, try_radical_inverse, PRIMES,
 };
@@ -11,7 +11,7 @@ use samplescope::core::pattern::{
     Halton, HaltonZaremba, Hammersley, HammersleyZaremba, Pattern, PatternError, Scramble, Sobol,
     VanDerCorput, MAX_N, ONE_MINUS_EPSILON,
 };
-use samplescope::core::rng::Rng;
+use samplescope::core::rng::{derive_seed, Rng};
 
 // ---------------------------------------------------------------------------------------------
 // Independent references
@@ -467,6 +467,26 @@ fn sobol_scramblings_differ_and_depend_on_the_seed() {
     for (p, q) in plain.iter().zip(&rd) {
         assert_eq!(((p.x * scale) as u32) ^ wx, (q.x * scale) as u32);
         assert_eq!(((p.y * scale) as u32) ^ wy, (q.y * scale) as u32);
+    }
+}
+
+#[test]
+fn sobol_owen_is_owen_scramble_of_each_coordinate_with_derived_seeds() {
+    let scale = 4_294_967_296.0;
+    for (skip, seed) in [(0u32, 1u64), (12_345, 99), (u32::MAX - 499, 7)] {
+        let plain = sobol_pts(Scramble::None, skip, 500, seed);
+        let owen = sobol_pts(Scramble::Owen, skip, 500, seed);
+        let (sx, sy) = (derive_seed(seed, 0), derive_seed(seed, 1));
+        for (p, q) in plain.iter().zip(&owen) {
+            assert_eq!(
+                owen_scramble((p.x * scale) as u32, sx),
+                (q.x * scale) as u32
+            );
+            assert_eq!(
+                owen_scramble((p.y * scale) as u32, sy),
+                (q.y * scale) as u32
+            );
+        }
     }
 }
 

@@ -243,24 +243,51 @@ pub fn owen_scramble_reference(v: u32, seed: u64) -> u32 {
 /// 2⁻³², exactly.
 const TWO_POW_M32: f64 = 1.0 / 4_294_967_296.0;
 
-/// Fills `out` with the Sobol' points of indices `start ..= start + count − 1` in Gray-code
-/// order, each passed through `scramble` (branch-free inner loop: one `trailing_zeros` and two
-/// XORs per point).
+/// [`SOBOL_DIR_0`] and [`SOBOL_DIR_1`] with their bits reversed: the direction numbers of the
+/// bit-reversed coordinates, in which Owen scrambling works.
+const SOBOL_DIR_REV: [[u32; 32]; 2] = reverse_directions();
+
+const fn reverse_directions() -> [[u32; 32]; 2] {
+    let mut r = [[0u32; 32]; 2];
+    let mut k = 0;
+    while k < 32 {
+        r[0][k] = SOBOL_DIR_0[k].reverse_bits();
+        r[1][k] = SOBOL_DIR_1[k].reverse_bits();
+        k += 1;
+    }
+    r
+}
+
+/// The Sobol' points of indices `start ..= start + count − 1` in Gray-code order, each passed
+/// through `finish`, which receives the two 32-bit coordinates — bit-reversed if `reversed` —
+/// and returns them as plain (unreversed) integers. The inner loop is branch-free: one
+/// `trailing_zeros` and two XORs per point, then `finish`. One allocation.
 #[inline]
-fn sobol_fill(start: u32, count: usize, scramble: impl Fn(u32, u32) -> (u32, u32)) -> Vec<DVec2> {
+fn sobol_fill(
+    start: u32,
+    count: usize,
+    reversed: bool,
+    finish: impl Fn(u32, u32) -> (u32, u32),
+) -> Vec<DVec2> {
     let mut out = Vec::with_capacity(count);
     let [mut x, mut y] = sobol_point_u32(start ^ (start >> 1));
+    let (dir_x, dir_y) = if reversed {
+        (x, y) = (x.reverse_bits(), y.reverse_bits());
+        (&SOBOL_DIR_REV[0], &SOBOL_DIR_REV[1])
+    } else {
+        (&SOBOL_DIR_0, &SOBOL_DIR_1)
+    };
     let to_point = |x: u32, y: u32| {
-        let (sx, sy) = scramble(x, y);
-        DVec2::new(sx as f64 * TWO_POW_M32, sy as f64 * TWO_POW_M32)
+        let (fx, fy) = finish(x, y);
+        DVec2::new(fx as f64 * TWO_POW_M32, fy as f64 * TWO_POW_M32)
     };
     out.push(to_point(x, y));
     // start + count − 1 ≤ u32::MAX was checked by the caller; i ≥ 1 so trailing_zeros < 32.
     let end = u64::from(start) + count as u64;
     for i in u64::from(start) + 1..end {
         let c = (i as u32).trailing_zeros() as usize & 31;
-        x ^= SOBOL_DIR_0[c];
-        y ^= SOBOL_DIR_1[c];
+        x ^= dir_x[c];
+        y ^= dir_y[c];
         out.push(to_point(x, y));
     }
     out
@@ -302,18 +329,23 @@ pub fn sobol(p: &Sobol, n: usize, seed: u64) -> Result<Vec<DVec2>, PatternError>
     }
     let start = p.skip;
     Ok(match p.scramble {
-        Scramble::None => sobol_fill(start, n, |x, y| (x, y)),
+        Scramble::None => sobol_fill(start, n, false, |x, y| (x, y)),
         Scramble::RandomDigit => {
             let mut rng = Rng::new(seed);
             let wx = rng.next_u32();
             let wy = rng.next_u32();
-            sobol_fill(start, n, |x, y| (x ^ wx, y ^ wy))
+            sobol_fill(start, n, false, |x, y| (x ^ wx, y ^ wy))
         }
         Scramble::Owen => {
+            // owen_scramble(v) = reverse(nested(reverse(v))): the sequence is stepped in the
+            // reversed domain, so only the final reversal remains per coordinate.
             let sx = derive_seed(seed, 0);
             let sy = derive_seed(seed, 1);
-            sobol_fill(start, n, |x, y| {
-                (owen_scramble(x, sx), owen_scramble(y, sy))
+            sobol_fill(start, n, true, |xr, yr| {
+                (
+                    nested_scramble_reversed(xr, sx).reverse_bits(),
+                    nested_scramble_reversed(yr, sy).reverse_bits(),
+                )
             })
         }
     })
