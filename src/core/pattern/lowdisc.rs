@@ -7,7 +7,7 @@
 //!   at index `skip`; point j of the output has index i = skip + j.
 //! - Bases are primes in 2..=7919 (the first 1000 primes, [`PRIMES`](super::radical_inverse::PRIMES)).
 //!   A non-prime base is an error: the Halton construction needs pairwise coprime bases, and the
-//!   parameter is documented as "a prime"; the GUI offers only primes.
+//!   parameter is documented as "a prime".
 //! - Every coordinate lies in [0, 1 − 2⁻⁵³] (see [`radical_inverse`](super::radical_inverse::radical_inverse)).
 //! - Sobol' points are 32-bit: a coordinate is an integer v ∈ [0, 2³²) read as v · 2⁻³², which is
 //!   exact in f64 and < 1 by construction.
@@ -216,7 +216,7 @@ fn nested_scramble_reversed(mut x: u32, seed: u64) -> u32 {
 }
 
 /// Hash-based Owen (nested uniform) scrambling of a 32-bit binary fraction v·2⁻³², fast form:
-/// reverse the bits, apply the nested permutation [`nested_scramble_reversed`], reverse back
+/// reverse the bits, apply the nested permutation `nested_scramble_reversed`, reverse back
 /// (Burley 2020, "Practical hash-based Owen scrambling"). Digit k of the result is digit k of
 /// `v` XOR a pseudo-random bit that depends only on `seed` and the digits above k, so the map is
 /// a bijection that preserves every (0,m,2)-net.

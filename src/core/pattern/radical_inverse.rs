@@ -32,7 +32,7 @@ const SIEVE_LIMIT: usize = 8000;
 
 /// The first [`PRIME_COUNT`] primes, ascending: `PRIMES[0] = 2`, …, `PRIMES[999] = 7919`.
 ///
-/// Computed at compile time by a sieve of Eratosthenes ([`first_primes`]), not typed in.
+/// Computed at compile time by a sieve of Eratosthenes (`first_primes`), not typed in.
 pub const PRIMES: [u32; PRIME_COUNT] = first_primes();
 
 /// The largest base the sequences accept: the 1000th prime, 7919.
@@ -329,7 +329,7 @@ fn check_base(base: u32) -> Result<(), PatternError> {
 /// a_i of n beyond its length are 0, so the series goes on with the digits (i − 1) mod b: e.g.
 /// Φ⁺₂(0) = 0.010101…₂ = 1/3 and Φ⁺₃(0) = 0.012012…₃ = 5/26.
 ///
-/// **Stopping rule** (of the series summation [`folded_series`]): let z be the position of the
+/// **Stopping rule** (of the series summation `folded_series`): let z be the position of the
 /// first non-zero folded digit (z ≤ len(n) + 2, because beyond n only every b-th digit is 0), so
 /// Φ⁺ ≥ b^{−z}. Digits are summed up to position L, the first with b^{L−z} ≥ 2⁶⁰. The omitted
 /// tail is < b^{−L} ≤ 2⁻⁶⁰·Φ⁺, under 1/128 of an ulp: no further digit can change the f64 (up to
@@ -338,7 +338,7 @@ fn check_base(base: u32) -> Result<(), PatternError> {
 /// **Method.** With K = ⌊53 / log₂ b⌋ (so b^K ≤ 2⁵³), an index n < b^K has no digits beyond K, so
 /// Φ⁺_b(n) = (F(n) + C) / b^K, where F(n) = Σ_{i=1}^{K} ((a_i + i − 1) mod b) b^{K−i} is an exact
 /// integer < 2⁵³ and C = Σ_{m≥1} ((K + m − 1) mod b) b^{−m} is the index-independent tail, summed
-/// by [`folded_series`]. Larger n are summed by [`folded_series`] directly. Either way the result
+/// by `folded_series`. Larger n are summed by `folded_series` directly. Either way the result
 /// is within 3 ulp of the exact series ([`FoldedRadicalInverseIter`] gives the same bits,
 /// incrementally). Base 2 has a bit-level fast path: the first 64 folded digits are the bits of
 /// n ⊕ 0xAAAA…AA (bit i−1 flipped when i − 1 is odd), the digits beyond are 0101…, worth 2⁻⁶⁴/3,
