@@ -63,6 +63,7 @@ fn torus_d2(a: DVec2, b: DVec2) -> f64 {
 
 /// The lecture's dart-throwing pseudo-code, literally (with toroidal d and r = 2 r_p):
 /// x_i ← unit(); y_i ← unit(); reject if d < (2 r_p)² for some k < i; plus the miss bound.
+#[allow(clippy::needless_range_loop)] // kept as the slide writes it: `for k ← 0 to i − 1`
 fn lecture_dart(n: usize, r: f64, max_misses: u32, seed: u64) -> Vec<DVec2> {
     let mut rng = Rng::new(seed);
     let mut pts: Vec<DVec2> = Vec::new();
@@ -311,9 +312,10 @@ fn bridson_maximal_set_leaves_little_room_for_another_disk() {
         note.starts_with(&format!("placed {m} of {n} points")),
         "{note}"
     );
-    // The achieved relative radius r/d_max(M) of Bridson's maximal sets is about 0.65–0.8.
+    // The achieved relative radius r/d_max(M) of Bridson's maximal sets (k = 30) is ≈ 0.73
+    // (measured over n = 10 … 65 536); random sequential adsorption saturates near 0.75.
     let rho = r / max_radius(m);
-    assert!((0.6..0.85).contains(&rho), "relative radius {rho}");
+    assert!((0.68..0.78).contains(&rho), "relative radius {rho}");
     let mut rng = Rng::new(99);
     let darts = 20_000;
     let fits = (0..darts)

@@ -15,7 +15,7 @@
 //!   ([`max_radius`]). A larger radius is rejected with [`PatternError::RadiusTooLarge`] before any
 //!   work is done. The *relative radius* ρ = r / d_max(N) (Lagae & Dutré 2008) is reported in
 //!   notes. Dart throwing saturates around ρ ≈ 0.75 (with the default miss bound); Bridson's
-//!   maximal sets reach ρ ≈ 0.82 (measured: r = 0.65 d_max(n) gives M ≈ 1.6 n points).
+//!   maximal sets (k = 30) reach ρ ≈ 0.73 (measured: r = 0.65 d_max(n) gives M ≈ 1.26 n points).
 //! - **Default radius.** `radius = 0` means [`default_radius`]`(n)` =
 //!   [`DEFAULT_RADIUS_FRACTION`] · d_max(n) = 0.65 · d_max(n): close enough to saturation to look
 //!   like a Poisson-disk pattern, loose enough that dart throwing places all n points and Bridson's
@@ -56,23 +56,30 @@ pub fn default_radius(n: usize) -> f64 {
 /// Squared toroidal distance on the unit torus:
 /// Δx² + Δy² with Δ = min(|a − b| mod 1, 1 − |a − b| mod 1) per coordinate.
 ///
-/// For points in [0,1)² the reduction modulo 1 never triggers. Every Poisson-disk and
-/// best-candidate routine (fast path and naive reference alike) uses exactly this function, so
-/// their accept/reject decisions agree bit for bit.
-#[inline(always)]
+/// For points in [0,1)² the reduction modulo 1 never triggers and the result is bitwise the
+/// crate-internal unit-domain form that every Poisson-disk and best-candidate routine uses (fast
+/// paths and naive references alike, so their accept/reject decisions agree bit for bit).
 pub fn toroidal_distance_squared(a: DVec2, b: DVec2) -> f64 {
-    let dx = wrap_delta(a.x - b.x);
-    let dy = wrap_delta(a.y - b.y);
+    let wrap = |d: f64| {
+        let d = d.abs() % 1.0;
+        d.min(1.0 - d)
+    };
+    let dx = wrap(a.x - b.x);
+    let dy = wrap(a.y - b.y);
     dx * dx + dy * dy
 }
 
+/// Squared toroidal distance of two points of [0,1)² (so |a − b| < 1 per coordinate):
+/// Δx² + Δy² with Δ = min(|a − b|, 1 − |a − b|). Branch-free; the hot path of every search here.
 #[inline(always)]
-fn wrap_delta(d: f64) -> f64 {
-    let mut d = d.abs();
-    if d >= 1.0 {
-        d %= 1.0;
-    }
-    d.min(1.0 - d)
+pub(crate) fn torus_d2(a: DVec2, b: DVec2) -> f64 {
+    let dx = (a.x - b.x).abs();
+    let dy = (a.y - b.y).abs();
+    // `if d < 1 − d` rather than f64::min: the same value for every non-NaN d, one instruction.
+    let (ex, ey) = (1.0 - dx, 1.0 - dy);
+    let dx = if dx < ex { dx } else { ex };
+    let dy = if dy < ey { dy } else { ey };
+    dx * dx + dy * dy
 }
 
 /// Toroidal (periodic) distance on the unit torus, in units of the square's side:
@@ -182,7 +189,7 @@ impl TorusGrid {
         let scan = |x: usize, y: usize| {
             let mut i = self.first(x, y);
             while i != NONE {
-                if toroidal_distance_squared(q, points[i as usize]) < r2 {
+                if torus_d2(q, points[i as usize]) < r2 {
                     return true;
                 }
                 i = self.after(i);
@@ -199,15 +206,14 @@ impl TorusGrid {
             }
             return false;
         }
-        // Row offsets 0, −1, +1, −2, +2, …: the nearest rows first, for an early exit.
+        // Rows cy − k … cy + k, columns cx − k … cx + k, wrapped (2k + 1 < g: one wrap each).
+        let x0 = if cx >= k { cx - k } else { cx + g - k };
+        let y0 = if cy >= k { cy - k } else { cy + g - k };
         for dy in 0..=2 * k {
-            let oy = if dy % 2 == 0 {
-                dy / 2
-            } else {
-                g - dy.div_ceil(2)
-            };
-            let y = (cy + oy) % g;
-            let x0 = (cx + g - k) % g;
+            let mut y = y0 + dy;
+            if y >= g {
+                y -= g;
+            }
             for dx in 0..=2 * k {
                 let mut x = x0 + dx;
                 if x >= g {
@@ -219,6 +225,89 @@ impl TorusGrid {
             }
         }
         false
+    }
+}
+
+/// Bridson's background grid: g × g cells of side ≤ r/√2 (so at most one point per cell), padded
+/// with `k` ghost cells on every side that mirror the cells across the torus seam. A cell holds
+/// the index of its point in `points`, where index 0 is a sentinel point with NaN coordinates
+/// (any comparison with it is false), so the (2k+1)² neighbourhood is read without wrapping
+/// and without testing for empty cells.
+#[derive(Debug, Clone)]
+struct PaddedGrid {
+    g: usize,
+    gf: f64,
+    k: usize,
+    /// Padded row length g + 2k.
+    w: usize,
+    cells: Vec<u32>,
+    /// Offsets of the (2k+1)² neighbourhood from its top-left padded cell, nearest cells first.
+    offsets: Vec<usize>,
+}
+
+/// The sentinel point of [`PaddedGrid`]: every distance to it is NaN.
+const NAN_POINT: DVec2 = DVec2::new(f64::NAN, f64::NAN);
+
+impl PaddedGrid {
+    fn new(g: usize, k: usize) -> Self {
+        let g = g.max(1);
+        let w = g + 2 * k;
+        let side = 2 * k + 1;
+        let mut rel: Vec<(usize, usize, usize)> = (0..side * side)
+            .map(|i| {
+                let (dx, dy) = (i % side, i / side);
+                let dist = dx.abs_diff(k).pow(2) + dy.abs_diff(k).pow(2);
+                (dist, i, dy * w + dx)
+            })
+            .collect();
+        rel.sort_unstable();
+        PaddedGrid {
+            g,
+            gf: g as f64,
+            k,
+            w,
+            cells: vec![0; w * w],
+            offsets: rel.into_iter().map(|(_, _, o)| o).collect(),
+        }
+    }
+
+    #[inline(always)]
+    fn cell(&self, p: DVec2) -> (usize, usize) {
+        let cx = ((p.x * self.gf) as usize).min(self.g - 1);
+        let cy = ((p.y * self.gf) as usize).min(self.g - 1);
+        (cx, cy)
+    }
+
+    /// Stores point `index` (≥ 1) at p in its cell and in every ghost copy of that cell.
+    fn insert(&mut self, index: u32, p: DVec2) {
+        let (cx, cy) = self.cell(p);
+        debug_assert_eq!(self.cells[(cy + self.k) * self.w + cx + self.k], 0);
+        let mut py = (cy + self.k) % self.g;
+        while py < self.w {
+            let mut px = (cx + self.k) % self.g;
+            while px < self.w {
+                self.cells[py * self.w + px] = index;
+                px += self.g;
+            }
+            py += self.g;
+        }
+    }
+
+    /// Whether a point lies at squared toroidal distance < r2 from q (exact when
+    /// k ≥ ⌈r(1 + margin) g⌉), nearest cells first with an early exit.
+    #[inline(always)]
+    fn any_within(&self, points: &[DVec2], q: DVec2, r2: f64) -> bool {
+        let (cx, cy) = self.cell(q);
+        // Padded (cx + k − k, cy + k − k): the top-left cell of q's neighbourhood.
+        let corner = &self.cells[cy * self.w + cx..];
+        // The 3 × 3 block without branches (most conflicts are there), then the rest.
+        let (near, far) = self.offsets.split_at(self.offsets.len().min(9));
+        let hit = near.iter().fold(false, |acc, &o| {
+            acc | (torus_d2(q, points[corner[o] as usize]) < r2)
+        });
+        hit || far
+            .iter()
+            .any(|&o| torus_d2(q, points[corner[o] as usize]) < r2)
     }
 }
 
@@ -320,7 +409,7 @@ fn dart_impl(
         let c = DVec2::new(x, y);
         let reject = match &grid {
             Some(g) => g.any_within(&points, c, r2, k),
-            None => points.iter().any(|&q| toroidal_distance_squared(c, q) < r2),
+            None => points.iter().any(|&q| torus_d2(c, q) < r2),
         };
         if reject {
             misses += 1;
@@ -357,7 +446,8 @@ pub fn bridson_min_radius() -> f64 {
 /// r² ≤ |c − p|² ≤ 4r²), each wrapped onto the torus. The first candidate whose squared toroidal
 /// distance to every point is ≥ r² becomes a point and joins the active list; when all k fail, p
 /// leaves the list. Conflicts are found in a background grid of cells of side ≤ r/√2 (at most one
-/// point per cell), searching the 5 × 5 cells around the candidate.
+/// point per cell, padded with ghost cells across the seam), searching the 5 × 5 cells around the
+/// candidate, nearest first.
 ///
 /// The result is a *maximal* set (no more disk fits near any point) of M points with toroidal
 /// minimum distance ≥ r. To return exactly n points:
@@ -367,7 +457,7 @@ pub fn bridson_min_radius() -> f64 {
 /// - if M < n, the M points are returned with a note, as for dart throwing.
 ///
 /// `radius` = 0 uses [`default_radius`]`(n)` (0.65 d_max(n); Bridson's maximal sets reach about
-/// r ≈ 0.82 d_max(M), so M ≈ 1.6 n at the default); radii above [`max_radius`]`(n)` are [`PatternError::RadiusTooLarge`],
+/// r ≈ 0.73 d_max(M) at k = 30, so M ≈ 1.26 n at the default); radii above [`max_radius`]`(n)` are [`PatternError::RadiusTooLarge`],
 /// radii below [`bridson_min_radius`] (sets of more than [`MAX_N`] points) are
 /// [`PatternError::InvalidParam`]; both are checked before any work. The cancel token is checked
 /// every 4096 candidates.
@@ -404,21 +494,23 @@ pub fn bridson(
     cancel.check()?;
     let r2 = r * r;
     let four_r2 = 4.0 * r2;
+    let two_r = 2.0 * r;
     let g = (std::f64::consts::SQRT_2 * (1.0 + GRID_MARGIN) / r)
         .ceil()
         .max(1.0) as usize;
-    let reach = reach(r, g);
     // Packing bound on M, capped: the vectors grow if needed.
-    let expected = ((2.0 / (3f64.sqrt() * r2)) as usize).clamp(1, 2 * n + 64);
-    let mut grid = TorusGrid::new(g, expected);
+    let expected = ((2.0 / (3f64.sqrt() * r2)) as usize).clamp(1, 2 * n + 64) + 1;
+    let mut grid = PaddedGrid::new(g, reach(r, g));
+    // points[0] is the grid's NaN sentinel; the pattern is points[1..].
     let mut points: Vec<DVec2> = Vec::with_capacity(expected);
+    points.push(NAN_POINT);
     let mut active: Vec<u32> = Vec::with_capacity(expected);
     let mut rng = Rng::new(seed);
 
     let first = DVec2::new(rng.next_f64(), rng.next_f64());
-    grid.insert(0, first);
+    grid.insert(1, first);
     points.push(first);
-    active.push(0);
+    active.push(1);
     let mut tries: u64 = 0;
     while !active.is_empty() {
         let a = rng.below(active.len() as u64) as usize;
@@ -430,11 +522,13 @@ pub fn bridson(
                 cancel.check()?;
             }
             // Uniform in the annulus r ≤ |d| ≤ 2r by rejection from the square [−2r, 2r]²
-            // (acceptance 3π/16 ≈ 0.59).
+            // (acceptance 3π/16 ≈ 0.59); one 64-bit draw per try gives both coordinates
+            // (32 bits each: a resolution of 4r·2⁻³², far below any distance that matters).
             let d = loop {
+                let u = rng.next_u64();
                 let d = DVec2::new(
-                    (2.0 * rng.next_f64() - 1.0) * 2.0 * r,
-                    (2.0 * rng.next_f64() - 1.0) * 2.0 * r,
+                    ((u >> 32) as f64 * U32_SCALE - 1.0) * two_r,
+                    ((u & 0xFFFF_FFFF) as f64 * U32_SCALE - 1.0) * two_r,
                 );
                 let l2 = d.length_squared();
                 if (r2..=four_r2).contains(&l2) {
@@ -442,11 +536,11 @@ pub fn bridson(
                 }
             };
             let c = DVec2::new(wrap_unit(centre.x + d.x), wrap_unit(centre.y + d.y));
-            if !grid.any_within(&points, c, r2, reach) {
-                let index = points.len();
+            if !grid.any_within(&points, c, r2) {
+                let index = points.len() as u32;
                 grid.insert(index, c);
                 points.push(c);
-                active.push(index as u32);
+                active.push(index);
                 found = true;
                 break;
             }
@@ -455,6 +549,8 @@ pub fn bridson(
             active.swap_remove(a);
         }
     }
+    drop(grid);
+    points.remove(0);
     cancel.check()?;
     let m = points.len();
     if m >= n {
@@ -477,6 +573,9 @@ pub fn bridson(
         })
     }
 }
+
+/// 2 / 2³²: maps a 32-bit integer onto [0, 2).
+const U32_SCALE: f64 = 2.0 / 4_294_967_296.0;
 
 /// Wraps x (within a few units of [0,1)) onto [0, 1 − 2⁻⁵³].
 #[inline(always)]
@@ -522,6 +621,47 @@ mod tests {
     }
 
     #[test]
+    fn unit_domain_distance_is_bitwise_the_public_one() {
+        let mut rng = Rng::new(2);
+        for _ in 0..100_000 {
+            let a = DVec2::new(rng.next_f64(), rng.next_f64());
+            let b = DVec2::new(rng.next_f64(), rng.next_f64());
+            assert_eq!(
+                torus_d2(a, b).to_bits(),
+                toroidal_distance_squared(a, b).to_bits()
+            );
+        }
+        let edge = DVec2::new(ONE_MINUS_EPSILON, 0.5);
+        assert_eq!(
+            torus_d2(edge, DVec2::ZERO).to_bits(),
+            toroidal_distance_squared(edge, DVec2::ZERO).to_bits()
+        );
+    }
+
+    #[test]
+    fn padded_grid_any_within_equals_scan_of_every_point() {
+        let mut rng = Rng::new(8);
+        for &r in &[0.011, 0.05, 0.3, 0.6, 1.0] {
+            let g = (std::f64::consts::SQRT_2 * (1.0 + GRID_MARGIN) / r).ceil() as usize;
+            let mut grid = PaddedGrid::new(g, reach(r, g));
+            // A Poisson-disk set built by naive dart throwing (one point per cell holds).
+            let mut pts = vec![NAN_POINT];
+            for _ in 0..3000 {
+                let q = DVec2::new(rng.next_f64(), rng.next_f64());
+                if pts[1..].iter().all(|&p| torus_d2(q, p) >= r * r) {
+                    grid.insert(pts.len() as u32, q);
+                    pts.push(q);
+                }
+            }
+            for _ in 0..3000 {
+                let q = DVec2::new(rng.next_f64(), rng.next_f64());
+                let scan = pts[1..].iter().any(|&p| torus_d2(q, p) < r * r);
+                assert_eq!(grid.any_within(&pts, q, r * r), scan, "r = {r}, q = {q}");
+            }
+        }
+    }
+
+    #[test]
     fn grid_any_within_equals_scan_of_every_point() {
         let mut rng = Rng::new(5);
         let pts: Vec<DVec2> = (0..500)
@@ -535,7 +675,7 @@ mod tests {
             let k = reach(r, grid.g);
             for _ in 0..2000 {
                 let q = DVec2::new(rng.next_f64(), rng.next_f64());
-                let scan = pts.iter().any(|&p| toroidal_distance_squared(q, p) < r * r);
+                let scan = pts.iter().any(|&p| torus_d2(q, p) < r * r);
                 assert_eq!(grid.any_within(&pts, q, r * r, k), scan, "r = {r}, q = {q}");
             }
         }
