@@ -526,6 +526,19 @@ fn cancel_from_another_thread_stops_a_long_best_candidate() {
     assert_eq!(handle.join().unwrap(), Err(PatternError::Cancelled));
 }
 
+#[test]
+fn cancel_from_another_thread_stops_long_dart_and_bridson_runs() {
+    // Millions of points take seconds; a cancel after 20 ms must end both with Cancelled.
+    let c = Cancel::new();
+    let (c1, c2) = (c.clone(), c.clone());
+    let d = std::thread::spawn(move || dart(&PoissonDart::default(), 4_000_000, 1, &c1));
+    let b = std::thread::spawn(move || bridson(&PoissonBridson::default(), 4_000_000, 1, &c2));
+    std::thread::sleep(Duration::from_millis(20));
+    c.cancel();
+    assert_eq!(d.join().unwrap(), Err(PatternError::Cancelled));
+    assert_eq!(b.join().unwrap(), Err(PatternError::Cancelled));
+}
+
 // ---------------------------------------------------------------- best candidate
 
 #[test]
