@@ -24,21 +24,37 @@ const SEED: u64 = 0x5EED_2024;
 
 fn random_points(n: usize) -> Vec<DVec2> {
     let mut r = Rng::new(SEED);
-    (0..n).map(|_| DVec2::new(r.next_f64(), r.next_f64())).collect()
+    (0..n)
+        .map(|_| DVec2::new(r.next_f64(), r.next_f64()))
+        .collect()
 }
 
-/// Median wall time of `reps` runs (after one warm-up run).
-fn median<T>(reps: usize, mut f: impl FnMut() -> T) -> Duration {
+/// CPU time of the calling thread, in ns, from Linux's `/proc/thread-self/schedstat` (first
+/// field: time spent on a CPU). `None` elsewhere.
+fn thread_cpu_ns() -> Option<u64> {
+    let s = std::fs::read_to_string("/proc/thread-self/schedstat").ok()?;
+    s.split_whitespace().next()?.parse().ok()
+}
+
+/// Median of `reps` runs (after one warm-up run): wall time and, on Linux, thread CPU time.
+/// The CPU time is what to compare on a shared, loaded machine, where the wall time also
+/// counts the time the thread waited for a core.
+fn median<T>(reps: usize, mut f: impl FnMut() -> T) -> (Duration, Option<Duration>) {
     black_box(f());
-    let mut v: Vec<Duration> = (0..reps)
-        .map(|_| {
-            let t = Instant::now();
-            black_box(f());
-            t.elapsed()
-        })
-        .collect();
-    v.sort();
-    v[reps / 2]
+    let mut wall = Vec::with_capacity(reps);
+    let mut cpu = Vec::with_capacity(reps);
+    for _ in 0..reps {
+        let c0 = thread_cpu_ns();
+        let t = Instant::now();
+        black_box(f());
+        wall.push(t.elapsed());
+        if let (Some(c0), Some(c1)) = (c0, thread_cpu_ns()) {
+            cpu.push(Duration::from_nanos(c1 - c0));
+        }
+    }
+    wall.sort();
+    cpu.sort();
+    (wall[reps / 2], cpu.get(reps / 2).copied())
 }
 
 fn criterion_benches(c: &mut Criterion) {
@@ -79,64 +95,103 @@ fn criterion_benches(c: &mut Criterion) {
     g.finish();
 }
 
+/// One row of the table: times in ms (CPU time where available, else wall time).
+struct Row {
+    what: &'static str,
+    n: usize,
+    fast: (Duration, Option<Duration>),
+    target: &'static str,
+    reference: String,
+    /// Reference time, already extrapolated to `n` where it was timed at a smaller N.
+    reference_ms: (f64, Option<f64>),
+}
+
 fn ratio_table() {
     let never = Cancel::never();
     let ms = |d: Duration| d.as_secs_f64() * 1e3;
-    println!();
-    println!("metrics: fast vs reference (median wall time, random points, seed {SEED:#x})");
-    println!(
-        "{:<28} {:>7} {:>12} {:>10} {:<40} {:>12} {:>10}",
-        "computation", "N", "fast [ms]", "target", "reference", "ref [ms]", "ratio"
-    );
+    let mut rows = Vec::new();
 
     let brute_n = 256usize;
     let brute_pts = random_points(brute_n);
-    let brute = median(3, || star_discrepancy_brute_force(&brute_pts, &never).unwrap());
+    let brute = median(3, || {
+        star_discrepancy_brute_force(&brute_pts, &never).unwrap()
+    });
     for (n, target) in [(4096usize, "≤ 50 ms"), (16_384, "≤ 1000 ms")] {
         let pts = random_points(n);
-        let fast = median(if n > 5000 { 3 } else { 7 }, || {
+        let fast = median(if n > 5000 { 3 } else { 9 }, || {
             star_discrepancy(&pts, &never).unwrap()
         });
         let scale = (n as f64 / brute_n as f64).powi(3);
-        let extrapolated = brute.as_secs_f64() * 1e3 * scale;
-        println!(
-            "{:<28} {:>7} {:>12.3} {:>10} {:<40} {:>12.1} {:>10.0}",
-            "star discrepancy (exact)",
+        rows.push(Row {
+            what: "star discrepancy, exact",
             n,
-            ms(fast),
+            fast,
             target,
-            format!("brute force O(N³): {:.2} ms at N={brute_n} ×{scale:.0}", ms(brute)),
-            extrapolated,
-            extrapolated / ms(fast)
-        );
+            reference: format!("O(N³) brute force at N={brute_n}, ×(N/{brute_n})³"),
+            reference_ms: (ms(brute.0) * scale, brute.1.map(|d| ms(d) * scale)),
+        });
     }
 
     let pts = random_points(4096);
     let fast = median(21, || l2_star_discrepancy(&pts, &never).unwrap());
     let naive = median(5, || l2_star_discrepancy_naive(&pts, &never).unwrap());
-    println!(
-        "{:<28} {:>7} {:>12.3} {:>10} {:<40} {:>12.1} {:>10.0}",
-        "L2-star (Warnock, Fenwick)",
-        4096,
-        ms(fast),
-        "≤ 10 ms",
-        "literal O(N²) double sum, same N",
-        ms(naive),
-        ms(naive) / ms(fast)
-    );
+    rows.push(Row {
+        what: "L2-star, Warnock+Fenwick",
+        n: 4096,
+        fast,
+        target: "≤ 10 ms",
+        reference: "literal O(N²) Warnock double sum, same N".into(),
+        reference_ms: (ms(naive.0), naive.1.map(ms)),
+    });
 
     let fast = median(21, || min_distance(&pts, &never).unwrap());
     let naive = median(5, || min_distance_naive(&pts, &never).unwrap());
+    rows.push(Row {
+        what: "min distance, grid",
+        n: 4096,
+        fast,
+        target: "-",
+        reference: "all pairs O(N²), same N".into(),
+        reference_ms: (ms(naive.0), naive.1.map(ms)),
+    });
+
+    println!();
     println!(
-        "{:<28} {:>7} {:>12.3} {:>10} {:<40} {:>12.1} {:>10.0}",
-        "min distance (grid)",
-        4096,
-        ms(fast),
-        "-",
-        "all pairs O(N²), same N",
-        ms(naive),
-        ms(naive) / ms(fast)
+        "metrics: fast vs reference (median; random points, Rng seed {SEED:#x}; \
+         cpu = thread CPU time, wall = wall clock)"
     );
+    println!(
+        "{:<26} {:>6} {:>10} {:>10} {:>10} {:<44} {:>12} {:>12} {:>8}",
+        "computation",
+        "N",
+        "cpu [ms]",
+        "wall [ms]",
+        "target",
+        "reference",
+        "ref cpu",
+        "ref wall",
+        "ratio"
+    );
+    for r in rows {
+        let fast_cpu = r.fast.1.map(ms);
+        let ratio = match (fast_cpu, r.reference_ms.1) {
+            (Some(f), Some(g)) => g / f,
+            _ => r.reference_ms.0 / ms(r.fast.0),
+        };
+        let opt = |v: Option<f64>| v.map_or("n/a".to_string(), |v| format!("{v:.3}"));
+        println!(
+            "{:<26} {:>6} {:>10} {:>10.3} {:>10} {:<44} {:>12} {:>12.1} {:>8.0}",
+            r.what,
+            r.n,
+            opt(fast_cpu),
+            ms(r.fast.0),
+            r.target,
+            r.reference,
+            opt(r.reference_ms.1),
+            r.reference_ms.0,
+            ratio
+        );
+    }
 }
 
 fn main() {

@@ -53,7 +53,7 @@ fn fast_matches_naive_with_ties_and_duplicates() {
             .collect();
         compare(&pts);
     }
-    compare(&vec![DVec2::new(0.25, 0.75); 20]);
+    compare(&[DVec2::new(0.25, 0.75); 20]);
 }
 
 #[test]
@@ -83,7 +83,11 @@ fn integrate_gauss(points: &[DVec2]) -> f64 {
             let (ha, hb) = (wx[1] - wx[0], wy[1] - wy[0]);
             let (ma, mb) = ((wx[0] + wx[1]) / 2.0, (wy[0] + wy[1]) / 2.0);
             // A on the open cell: points with x ≤ left edge and y ≤ bottom edge.
-            let c = points.iter().filter(|p| p.x <= wx[0] && p.y <= wy[0]).count() as f64 / n;
+            let c = points
+                .iter()
+                .filter(|p| p.x <= wx[0] && p.y <= wy[0])
+                .count() as f64
+                / n;
             let mut cell = 0.0;
             for sa in [-g, g] {
                 for sb in [-g, g] {
@@ -143,14 +147,20 @@ fn warnock_matches_midpoint_integration_of_tiny_sets() {
     let tol = 1.0 / (6.0 * (m * m) as f64);
     let t2 = l2_star_discrepancy(&pts, &c).unwrap().powi(2);
     let mid = integrate_midpoint(&pts, m);
-    assert!((t2 - mid).abs() <= tol, "lattice: {t2} vs {mid} (tol {tol:e})");
+    assert!(
+        (t2 - mid).abs() <= tol,
+        "lattice: {t2} vs {mid} (tol {tol:e})"
+    );
     // (2) Random coordinates, M = 1024: tolerance 2N/M + h²/6 ≈ 7.8e-3 for N = 4.
     let pts = random(4, 12);
     let m = 1024;
     let tol = 2.0 * 4.0 / m as f64 + 1.0 / (6.0 * (m * m) as f64);
     let t2 = l2_star_discrepancy(&pts, &c).unwrap().powi(2);
     let mid = integrate_midpoint(&pts, m);
-    assert!((t2 - mid).abs() <= tol, "random: {t2} vs {mid} (tol {tol:e})");
+    assert!(
+        (t2 - mid).abs() <= tol,
+        "random: {t2} vs {mid} (tol {tol:e})"
+    );
 }
 
 #[test]
@@ -177,7 +187,10 @@ fn cancelled_and_bad_input() {
     c.cancel();
     let pts = random(10, 1);
     assert_eq!(l2_star_discrepancy(&pts, &c), Err(MetricsError::Cancelled));
-    assert_eq!(l2_star_discrepancy_naive(&pts, &c), Err(MetricsError::Cancelled));
+    assert_eq!(
+        l2_star_discrepancy_naive(&pts, &c),
+        Err(MetricsError::Cancelled)
+    );
     let never = Cancel::never();
     assert_eq!(l2_star_discrepancy(&[], &never), Err(MetricsError::Empty));
     assert!(matches!(

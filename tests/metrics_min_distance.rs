@@ -39,7 +39,11 @@ fn grid_matches_naive_on_jittered_and_clustered_sets() {
     let mut pts: Vec<DVec2> = (0..500)
         .map(|_| DVec2::new(0.3 + 0.01 * r.next_f64(), 0.6 + 0.01 * r.next_f64()))
         .collect();
-    pts.extend([DVec2::new(0.9, 0.1), DVec2::new(0.95, 0.05), DVec2::new(0.0, 0.0)]);
+    pts.extend([
+        DVec2::new(0.9, 0.1),
+        DVec2::new(0.95, 0.05),
+        DVec2::new(0.0, 0.0),
+    ]);
     compare(&pts);
 }
 
@@ -93,7 +97,10 @@ fn duplicate_points_give_zero() {
     let same = vec![DVec2::new(0.5, 0.5); 100];
     compare(&same);
     let md = min_distance(&same, &Cancel::never()).unwrap();
-    assert_eq!((md.min_distance, md.mean_nn_distance, md.pair), (0.0, 0.0, (0, 1)));
+    assert_eq!(
+        (md.min_distance, md.mean_nn_distance, md.pair),
+        (0.0, 0.0, (0, 1))
+    );
 }
 
 #[test]
@@ -136,7 +143,10 @@ fn too_few_points_bad_input_and_cancel() {
     ));
     let cancelled = Cancel::new();
     cancelled.cancel();
-    assert_eq!(min_distance(&random(100, 1), &cancelled), Err(MetricsError::Cancelled));
+    assert_eq!(
+        min_distance(&random(100, 1), &cancelled),
+        Err(MetricsError::Cancelled)
+    );
     assert_eq!(
         min_distance_naive(&random(100, 1), &cancelled),
         Err(MetricsError::Cancelled)

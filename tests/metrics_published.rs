@@ -40,14 +40,34 @@ fn check(name: &str, got: f64, published: f64, half_ulp: f64) {
 fn sobol_1024_matches_utk() {
     let pts = sobol(1024);
     let c = Cancel::never();
-    check("star 1024", star_discrepancy(&pts, &c).unwrap().value, 0.004_299_16, 5e-9);
-    check("L2 1024", l2_star_discrepancy(&pts, &c).unwrap(), 0.000_867_928, 5e-10);
+    check(
+        "star 1024",
+        star_discrepancy(&pts, &c).unwrap().value,
+        0.004_299_16,
+        5e-9,
+    );
+    check(
+        "L2 1024",
+        l2_star_discrepancy(&pts, &c).unwrap(),
+        0.000_867_928,
+        5e-10,
+    );
 }
 
 #[test]
 fn sobol_4096_matches_utk() {
     let pts = sobol(4096);
     let c = Cancel::never();
-    check("star 4096", star_discrepancy(&pts, &c).unwrap().value, 0.001_329_18, 5e-9);
-    check("L2 4096", l2_star_discrepancy(&pts, &c).unwrap(), 0.000_234_269, 5e-10);
+    check(
+        "star 4096",
+        star_discrepancy(&pts, &c).unwrap().value,
+        0.001_329_18,
+        5e-9,
+    );
+    check(
+        "L2 4096",
+        l2_star_discrepancy(&pts, &c).unwrap(),
+        0.000_234_269,
+        5e-10,
+    );
 }

@@ -85,7 +85,7 @@ fn sweep_matches_brute_force_with_ties_and_duplicates() {
         }
     }
     // All points identical.
-    compare(&vec![DVec2::new(0.3, 0.6); 10]);
+    compare(&[DVec2::new(0.3, 0.6); 10]);
 }
 
 #[test]
@@ -132,7 +132,11 @@ fn value_bounds_every_random_box_and_is_approached() {
     // a ↓ x, b ↓ y for a closed one (the volume error is ε(a + b + ε)).
     let (a, b) = s.worst_box;
     let eps = 1e-12;
-    let approx = if s.closed { local(a + eps, b + eps) } else { local(a, b) };
+    let approx = if s.closed {
+        local(a + eps, b + eps)
+    } else {
+        local(a, b)
+    };
     assert!(approx >= s.value - 3e-12, "{approx} vs {s:?}");
 }
 
@@ -207,7 +211,9 @@ fn row_set_with_bunched_x_equals_lecture_1d_formula() {
 
 #[test]
 fn all_y_zero_gives_one_not_the_1d_value() {
-    let pts: Vec<DVec2> = (0..8).map(|i| DVec2::new((i as f64 + 0.5) / 8.0, 0.0)).collect();
+    let pts: Vec<DVec2> = (0..8)
+        .map(|i| DVec2::new((i as f64 + 0.5) / 8.0, 0.0))
+        .collect();
     let s = star_discrepancy(&pts, &Cancel::never()).unwrap();
     assert_eq!(s.value, 1.0);
     assert!(s.closed);

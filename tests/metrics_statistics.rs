@@ -25,7 +25,12 @@ fn bundle_agrees_with_each_function() {
         let names: Vec<&str> = s.timings.iter().map(|t| t.0).collect();
         assert_eq!(
             names,
-            ["min distance", "star discrepancy", "L2-star discrepancy", "t-value"]
+            [
+                "min distance",
+                "star discrepancy",
+                "L2-star discrepancy",
+                "t-value"
+            ]
         );
         let json = serde_json::to_string(&s).unwrap();
         assert!(json.contains("\"timings\""));
@@ -37,7 +42,10 @@ fn bundle_agrees_with_each_function() {
 fn single_point_skips_min_distance() {
     let s = statistics(&[DVec2::new(0.5, 0.5)], &Cancel::never()).unwrap();
     assert!(s.min_distance.is_none());
-    assert!(s.min_distance_skipped.unwrap().contains("at least 2 points"));
+    assert!(s
+        .min_distance_skipped
+        .unwrap()
+        .contains("at least 2 points"));
     assert_eq!(s.star.unwrap().value, 0.75);
     assert_eq!(s.t_value.unwrap().t, 0); // 1 = 2⁰
 }
@@ -72,5 +80,8 @@ fn errors_propagate() {
     ));
     let cancelled = Cancel::new();
     cancelled.cancel();
-    assert_eq!(statistics(&random(10, 3), &cancelled), Err(MetricsError::Cancelled));
+    assert_eq!(
+        statistics(&random(10, 3), &cancelled),
+        Err(MetricsError::Cancelled)
+    );
 }

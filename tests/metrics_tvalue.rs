@@ -121,7 +121,10 @@ fn grid_2x2_at_cell_centres_has_t_1() {
     let t = t_value(&pts, 2, &Cancel::never()).unwrap();
     assert_eq!((t.m, t.t), (2, 1));
     let v = t.violation.expect("t > 0 has a witness");
-    assert_eq!((v.t, v.kx, v.ky, v.cell, v.count, v.expected), (0, 0, 2, (0, 0), 0, 1));
+    assert_eq!(
+        (v.t, v.kx, v.ky, v.cell, v.count, v.expected),
+        (0, 0, 2, (0, 0), 0, 1)
+    );
     assert_eq!(t_value_reference(&pts, 2), 1);
 }
 
@@ -205,11 +208,20 @@ fn n_not_power_of_base_and_bad_base_are_errors() {
         t_value(&random(8, 1), 3, &c),
         Err(MetricsError::NotPowerOfBase { n: 8, base: 3 })
     );
-    assert_eq!(t_value(&random(8, 1), 1, &c), Err(MetricsError::InvalidBase { base: 1 }));
-    assert_eq!(t_value(&random(8, 1), 0, &c), Err(MetricsError::InvalidBase { base: 0 }));
+    assert_eq!(
+        t_value(&random(8, 1), 1, &c),
+        Err(MetricsError::InvalidBase { base: 1 })
+    );
+    assert_eq!(
+        t_value(&random(8, 1), 0, &c),
+        Err(MetricsError::InvalidBase { base: 0 })
+    );
     assert_eq!(
         t_value(&random(4, 1), u32::MAX, &c),
-        Err(MetricsError::NotPowerOfBase { n: 4, base: u32::MAX })
+        Err(MetricsError::NotPowerOfBase {
+            n: 4,
+            base: u32::MAX
+        })
     );
     assert_eq!(t_value(&[], 2, &c), Err(MetricsError::Empty));
     let mut pts = random(4, 1);
@@ -220,5 +232,8 @@ fn n_not_power_of_base_and_bad_base_are_errors() {
     ));
     let cancelled = Cancel::new();
     cancelled.cancel();
-    assert_eq!(t_value(&random(64, 1), 2, &cancelled), Err(MetricsError::Cancelled));
+    assert_eq!(
+        t_value(&random(64, 1), 2, &cancelled),
+        Err(MetricsError::Cancelled)
+    );
 }

@@ -8,7 +8,9 @@ use samplescope::core::rng::Rng;
 /// `n` uniform random points (fixed seed).
 pub fn random(n: usize, seed: u64) -> Vec<DVec2> {
     let mut r = Rng::new(seed);
-    (0..n).map(|_| DVec2::new(r.next_f64(), r.next_f64())).collect()
+    (0..n)
+        .map(|_| DVec2::new(r.next_f64(), r.next_f64()))
+        .collect()
 }
 
 /// Van der Corput Φ₂(i) on 32 bits: bit reversal of i, divided by 2³².

@@ -64,7 +64,9 @@ use serde::Serialize;
 
 pub use crate::core::cancel::{Cancel, Cancelled};
 pub use l2::{l2_star_discrepancy, l2_star_discrepancy_naive, L2_NAIVE_MAX_N};
-pub use mindist::{hex_distance, min_distance, min_distance_naive, MinDistance, MIN_DISTANCE_NAIVE_MAX_N};
+pub use mindist::{
+    hex_distance, min_distance, min_distance_naive, MinDistance, MIN_DISTANCE_NAIVE_MAX_N,
+};
 pub use star::{
     star_discrepancy, star_discrepancy_1d, star_discrepancy_1d_brute_force,
     star_discrepancy_brute_force, StarDiscrepancy, STAR_BRUTE_FORCE_MAX_N, STAR_EXACT_MAX_N,
@@ -93,10 +95,14 @@ pub enum MetricsError {
         cost: &'static str,
     },
     /// A coordinate is NaN or infinite.
-    #[error("point {index} = ({x}, {y}) is not finite: coordinates must be finite numbers in [0, 1)")]
+    #[error(
+        "point {index} = ({x}, {y}) is not finite: coordinates must be finite numbers in [0, 1)"
+    )]
     NonFinite { index: usize, x: f64, y: f64 },
     /// A coordinate lies outside [0, 1).
-    #[error("point {index} = ({x}, {y}) lies outside the unit square: coordinates must be in [0, 1)")]
+    #[error(
+        "point {index} = ({x}, {y}) lies outside the unit square: coordinates must be in [0, 1)"
+    )]
     OutOfRange { index: usize, x: f64, y: f64 },
     /// A 1D value is NaN, infinite or outside [0, 1].
     #[error("value {index} = {value}: 1D values must be finite numbers in [0, 1]")]
@@ -191,7 +197,9 @@ pub fn statistics(points: &[DVec2], cancel: &Cancel) -> Result<Statistics, Metri
     } else {
         (
             None,
-            Some(format!("a minimum distance needs at least 2 points, got n = {n}")),
+            Some(format!(
+                "a minimum distance needs at least 2 points, got n = {n}"
+            )),
         )
     };
 
