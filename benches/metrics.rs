@@ -74,7 +74,7 @@ fn criterion_benches(c: &mut Criterion) {
     g.finish();
 
     let mut g = c.benchmark_group("l2_star_discrepancy");
-    g.sample_size(20);
+    g.sample_size(10);
     let pts = random_points(4096);
     g.bench_function("fenwick/4096", |b| {
         b.iter(|| l2_star_discrepancy(black_box(&pts), &never).unwrap())
@@ -85,7 +85,7 @@ fn criterion_benches(c: &mut Criterion) {
     g.finish();
 
     let mut g = c.benchmark_group("min_distance");
-    g.sample_size(20);
+    g.sample_size(10);
     g.bench_function("grid/4096", |b| {
         b.iter(|| min_distance(black_box(&pts), &never).unwrap())
     });

@@ -73,8 +73,15 @@ pub fn star_discrepancy(
             cost: "O(N²)",
         });
     }
-    let inv_n = 1.0 / n as f64;
+    let (pts, ys, best) = prepare(points);
+    sweep_dispatch(&pts, &ys, 1.0 / n as f64, cancel, best)
+}
 
+/// Sorts the (validated, non-empty) points for the sweep: returns the points as
+/// `(x, rank of y)` sorted by x, the distinct y values followed by 1, and the best open box
+/// at `a = x_min`.
+#[allow(clippy::type_complexity)]
+fn prepare(points: &[DVec2]) -> (Vec<(f64, usize)>, Vec<f64>, StarDiscrepancy) {
     // Distinct y values (+0.0 folds a -0.0 into 0.0), then the sentinel 1.
     let mut ys: Vec<f64> = points.iter().map(|p| p.y + 0.0).collect();
     ys.sort_unstable_by(f64::total_cmp);
@@ -102,8 +109,7 @@ pub fn star_discrepancy(
         closed: false,
         points_inside: 0,
     };
-
-    sweep_dispatch(&pts, &ys, inv_n, cancel, best)
+    (pts, ys, best)
 }
 
 /// Runs [`sweep`] compiled for AVX2 when the CPU has it (4 f64 lanes instead of SSE2's 2).
@@ -354,4 +360,32 @@ pub fn star_discrepancy_1d_brute_force(xs: &[f64]) -> Result<f64, MetricsError> 
         best = best.max(a - open / n).max(closed / n - a);
     }
     Ok(best)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::core::rng::Rng;
+
+    #[test]
+    #[cfg(target_arch = "x86_64")]
+    fn avx2_and_generic_sweeps_give_identical_bits() {
+        if !std::arch::is_x86_feature_detected!("avx2") {
+            return; // nothing to compare on this CPU
+        }
+        let mut r = Rng::new(1);
+        for n in [1usize, 2, 17, 100, 1000] {
+            let pts: Vec<DVec2> = (0..n)
+                .map(|_| DVec2::new(r.next_f64(), r.below(64) as f64 / 64.0))
+                .collect();
+            let (p, ys, best) = prepare(&pts);
+            let c = Cancel::never();
+            let inv_n = 1.0 / n as f64;
+            let generic = sweep(&p, &ys, inv_n, &c, best).unwrap();
+            // SAFETY: AVX2 support was checked above.
+            let avx2 = unsafe { sweep_avx2(&p, &ys, inv_n, &c, best) }.unwrap();
+            assert_eq!(generic.value.to_bits(), avx2.value.to_bits());
+            assert_eq!(generic, avx2);
+        }
+    }
 }
