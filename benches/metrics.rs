@@ -36,20 +36,26 @@ fn thread_cpu_ns() -> Option<u64> {
     s.split_whitespace().next()?.parse().ok()
 }
 
-/// Median of `reps` runs (after one warm-up run): wall time and, on Linux, thread CPU time.
-/// The CPU time is what to compare on a shared, loaded machine, where the wall time also
-/// counts the time the thread waited for a core.
+/// Median over `reps` samples (after one warm-up run) of the time per call: wall time and,
+/// on Linux, thread CPU time. Each sample runs `f` enough times to last ≥ 30 ms, because the
+/// thread CPU clock of this kind of VM advances in scheduler ticks. The CPU time is what to
+/// compare on a shared, loaded machine, where the wall time also counts waiting for a core.
 fn median<T>(reps: usize, mut f: impl FnMut() -> T) -> (Duration, Option<Duration>) {
+    let t = Instant::now();
     black_box(f());
+    let once = t.elapsed().as_secs_f64().max(1e-7);
+    let batch = ((0.03 / once).ceil() as u32).max(1);
     let mut wall = Vec::with_capacity(reps);
     let mut cpu = Vec::with_capacity(reps);
     for _ in 0..reps {
         let c0 = thread_cpu_ns();
         let t = Instant::now();
-        black_box(f());
-        wall.push(t.elapsed());
+        for _ in 0..batch {
+            black_box(f());
+        }
+        wall.push(t.elapsed() / batch);
         if let (Some(c0), Some(c1)) = (c0, thread_cpu_ns()) {
-            cpu.push(Duration::from_nanos(c1 - c0));
+            cpu.push(Duration::from_nanos(c1 - c0) / batch);
         }
     }
     wall.sort();
@@ -133,7 +139,7 @@ fn ratio_table() {
     }
 
     let pts = random_points(4096);
-    let fast = median(21, || l2_star_discrepancy(&pts, &never).unwrap());
+    let fast = median(9, || l2_star_discrepancy(&pts, &never).unwrap());
     let naive = median(5, || l2_star_discrepancy_naive(&pts, &never).unwrap());
     rows.push(Row {
         what: "L2-star, Warnock+Fenwick",
@@ -144,7 +150,7 @@ fn ratio_table() {
         reference_ms: (ms(naive.0), naive.1.map(ms)),
     });
 
-    let fast = median(21, || min_distance(&pts, &never).unwrap());
+    let fast = median(9, || min_distance(&pts, &never).unwrap());
     let naive = median(5, || min_distance_naive(&pts, &never).unwrap());
     rows.push(Row {
         what: "min distance, grid",

@@ -9,15 +9,15 @@
 //! - **Domain.** Points are `f64` pairs ([`DVec2`]) in the unit square **[0,1)²** (crate
 //!   convention). A non-finite coordinate or one outside [0,1) is an error naming the point's
 //!   index ([`MetricsError::NonFinite`], [`MetricsError::OutOfRange`]); nothing is clamped.
-//!   The 1D functions take values in the closed interval [0,1] (the classical setting of the
+//!   The 1D functions take values in the closed interval `[0,1]` (the classical setting of the
 //!   1D formula, where the lecture's example `x_i = i/N` has `x_N = 1`).
 //! - **Distances are toroidal** (periodic): `d(p,q)² = Σ_k min(|p_k−q_k|, 1−|p_k−q_k|)²`.
 //! - **Hexagonal normalisation.** N discs on the unit torus are packed best by the hexagonal
 //!   lattice, whose nearest-neighbour distance is `d_hex(N) = √(2 / (√3·N))`. Normalised
 //!   distances are `d / d_hex(N)`. PSA (Heck, Schlömer, Deussen 2013) reports minimum distances
 //!   multiplied by `√(√3·N / 2)`, which is exactly `1 / d_hex(N)`: our normalised values are
-//!   PSA's. A value of 1 is the best packing; ≈ 0.93 is a square grid; a good Poisson-disk set
-//!   has ≈ 0.75–0.85; white noise tends to 0 as N grows.
+//!   PSA's (and Lagae & Dutré's relative radius ρ). 1 is the hexagonal packing,
+//!   `√(√3/2) ≈ 0.93` a square grid; the minimum distance of white noise tends to 0 as N grows.
 //! - **Star discrepancy** (the lecture's `D*_N`):
 //!   `D*_N(P) = sup_{(a,b) ∈ [0,1]²} | #{x_i ∈ [0,a)×[0,b)} / N − a·b |`.
 //!   The supremum is approached either by an *open* box `[0,a)×[0,b)` holding too few points
@@ -32,10 +32,21 @@
 //!   `b^t` points. Intervals are half-open, so a point on a boundary belongs to the upper cell;
 //!   membership is decided exactly for the `f64` values given (see [`tvalue`]).
 //!
+//! # Functions, references and costs
+//!
+//! | statistic | fast | reference (tests, benches) |
+//! |---|---|---|
+//! | min distance, mean NN | [`min_distance`]: grid, O(N) expected | [`min_distance_naive`]: all pairs, O(N²) |
+//! | star discrepancy, 2D | [`star_discrepancy`]: sweep, O(N²) | [`star_discrepancy_brute_force`]: all critical boxes, O(N³) |
+//! | star discrepancy, 1D | [`star_discrepancy_1d`]: closed form, O(N log N) | [`star_discrepancy_1d_brute_force`]: O(N²) |
+//! | L2-star discrepancy | [`l2_star_discrepancy`]: Fenwick tree, O(N log N) | [`l2_star_discrepancy_naive`]: double sum, O(N²) |
+//! | t-value | [`t_value`]: digit counting, O(N m log m) | (tests: every interval, exact integers) |
+//!
 //! # Accuracy
-//! Discrepancies are accumulated with error-free transformations (double-double sums, see
-//! `dd.rs`), so the fast and the reference algorithms agree to ~1e-13 relative even for
-//! low-discrepancy sets, where Warnock's formula cancels eight digits.
+//! Star discrepancies are exact up to one rounding of `count/N − a·b` (counts are integers).
+//! The L2-star sums are accumulated with error-free transformations (double-double, `dd.rs`),
+//! so the fast and the naive algorithms agree to ~1e-13 relative even for low-discrepancy
+//! sets, where Warnock's three terms (≈ 0.1) cancel to `T² ≈ 10⁻⁸`.
 //!
 //! # References
 //! - H. Niederreiter, *Random Number Generation and Quasi-Monte Carlo Methods*, SIAM 1992
@@ -183,7 +194,8 @@ pub struct Statistics {
 /// [`STATISTICS_STAR_MAX_N`] points, with the reason recorded), L2-star discrepancy, and the
 /// t-value in base 2 when N is a power of 2.
 ///
-/// Errors: invalid points ([`validate`] rules) or cancellation. Skipped stages are not errors.
+/// Errors: an empty set, a non-finite or out-of-range point, cancellation. Skipped stages
+/// are not errors.
 pub fn statistics(points: &[DVec2], cancel: &Cancel) -> Result<Statistics, MetricsError> {
     validate(points)?;
     let n = points.len();

@@ -323,7 +323,7 @@ fn validate_1d(xs: &[f64]) -> Result<(), MetricsError> {
 }
 
 /// 1D star discrepancy by the lecture's closed form (Niederreiter 1992, Thm 2.6): for the
-/// sorted values `x_(1) ≤ … ≤ x_(N)` in [0,1],
+/// sorted values `x_(1) ≤ … ≤ x_(N)` in `[0,1]`,
 ///
 /// `D*_N = 1/(2N) + max_{1≤i≤N} | x_(i) − (2i−1)/(2N) |`,
 ///
