@@ -1,1 +1,2 @@
-//! filter (see crate docs).
+//! Reconstruction filters (placeholder while the module is written).
+pub mod special;
