@@ -307,8 +307,28 @@ impl Kernel for Gaussian {
     fn feature_scale(&self) -> f64 {
         self.sigma.min(self.radius)
     }
+    /// σ√(2π) erf(r/(σ√2)) [− 2r e^{−r²/2σ²} if `subtract_edge`]. When subtracting with
+    /// t = r²/(2σ²) < 1 the two terms nearly cancel, so the difference is summed as the series
+    /// 4r Σ_{n≥1} (−1)^{n+1} tⁿ/((n−1)!(2n+1)) (termwise integration of e^{−x²/2σ²} − e^{−t}),
+    /// whose terms decrease from the first.
     fn integral_closed_form(&self) -> Option<f64> {
         let z = self.radius / (self.sigma * std::f64::consts::SQRT_2);
+        if self.subtract_edge && z * z < 1.0 {
+            let t = z * z;
+            let mut p = t; // tⁿ/(n−1)! for n = 1
+            let mut sum = 0.0;
+            for n in 1..60 {
+                let nf = n as f64;
+                let term = p / (2.0 * nf + 1.0);
+                let next = if n % 2 == 1 { sum + term } else { sum - term };
+                if next == sum {
+                    break;
+                }
+                sum = next;
+                p *= t / nf;
+            }
+            return Some(4.0 * self.radius * sum);
+        }
         let full = self.sigma * (2.0 * PI).sqrt() * erf(z);
         let edge = if self.subtract_edge {
             2.0 * self.radius * (-self.exponent(self.radius)).exp()
@@ -362,6 +382,7 @@ impl Mitchell {
         }
     }
     /// The recommended Mitchell–Netravali filter: B = C = ⅓.
+    #[allow(clippy::self_named_constructors)]
     pub fn mitchell() -> Self {
         Mitchell::default()
     }

@@ -57,7 +57,7 @@
 //!   max S − 1, `undershoot` = −min S, `ringing` = the larger of the two (symmetric kernels have
 //!   both equal). For kernels with zero DC (cosc, band-, high-pass) S is normalised by its
 //!   largest excursion and ringing is the largest excursion of the opposite sign.
-//! - **anisotropy** of the 2D response: max over radii 0 < ρ ≤ 0.5 of
+//! - **anisotropy** of the 2D response: max over radii 0 < ρ < 0.5 of
 //!   (max − min)/mean over angles of |H₂(ρ cos θ, ρ sin θ)|; 0 for radial filters (by symmetry).
 //!
 //! See [`metrics`] for the discretisation and its accuracy.

@@ -5,11 +5,14 @@
 //!   Legendre polynomial P_n (three-term recurrence), to full double precision. It integrates
 //!   polynomials of degree ≤ 2n − 1 exactly.
 //! - [`adaptive`] integrates f over a list of panels (the caller puts every point where f is not
-//!   smooth on a panel boundary). Each panel is compared with the sum over its two halves
-//!   (16-point rule on each); panels whose difference exceeds their share of the tolerance are
-//!   bisected, up to [`MAX_DEPTH`] times. The tolerance is *relative to ∫|f|*, estimated on the
-//!   initial panels, so results are accurate to about `rel_tol·∫|f|` (the reported `error` is the
-//!   sum of the |whole − halves| differences, a conservative estimate for Gauss rules).
+//!   smooth on a panel boundary). Each panel's 16-point value is compared with the sum over its
+//!   two halves; the panel with the largest difference is bisected (globally adaptive, as
+//!   QUADPACK's QAG) until the summed differences are below the tolerance, with at most
+//!   [`MAX_SPLITS`] bisections and [`MAX_DEPTH`] levels, so the cost is bounded even when
+//!   rounding noise exceeds the tolerance. The tolerance is *relative to ∫|f|*, estimated on the
+//!   initial panels (never below the caller's absolute floor), so results are accurate to about
+//!   `rel_tol·∫|f|` (the reported `error` is the sum of |whole − halves|, a conservative
+//!   estimate for Gauss rules: the returned halves are far more accurate).
 //! - [`adaptive_rule`] runs the same refinement on f and returns the accepted panels' nodes and
 //!   weights, so that ∫ f(x) g(x) dx for many smooth g (e.g. e^{−2πiωx} for all ω up to a bound
 //!   that the panel widths resolve) costs one sum each.
@@ -102,18 +105,38 @@ pub struct Integral {
     pub error: f64,
 }
 
-/// Splits each interval `[breaks[i], breaks[i+1]]` into equal panels no wider than `max_width`.
+/// Most initial panels of one integration ([`panels`] widens them beyond this count): bounds
+/// the cost of integrands oscillating faster than the caller can resolve (e.g. H(ω) for
+/// |ω| ≳ [`MAX_PANELS`]/(2·length) cycles per unit), at the price of accuracy there.
+pub const MAX_PANELS: usize = 1 << 16;
+
+/// Splits each interval `[breaks[i], breaks[i+1]]` into equal panels no wider than `max_width`
+/// (widened if needed so that there are at most [`MAX_PANELS`] in all).
 ///
-/// `breaks` must be sorted; empty intervals are skipped. Returns the panel boundaries.
+/// `breaks` must be sorted; empty or non-finite intervals are skipped. Returns the panels.
 pub fn panels(breaks: &[f64], max_width: f64) -> Vec<(f64, f64)> {
+    let total: f64 = breaks
+        .windows(2)
+        .filter(|w| w[1] > w[0] && w[0].is_finite() && w[1].is_finite())
+        .map(|w| w[1] - w[0])
+        .sum();
+    let intervals = breaks.len().saturating_sub(1);
+    let mut width = max_width;
+    if !(width.is_finite() && width > 0.0) {
+        width = f64::INFINITY;
+    }
+    let budget = MAX_PANELS.saturating_sub(intervals).max(1) as f64;
+    if total / width > budget {
+        width = total / budget;
+    }
     let mut out = Vec::new();
     for w in breaks.windows(2) {
         let (a, b) = (w[0], w[1]);
         if b <= a || !a.is_finite() || !b.is_finite() {
             continue;
         }
-        let n = if max_width.is_finite() && max_width > 0.0 {
-            ((b - a) / max_width).ceil().clamp(1.0, 1e6) as usize
+        let n = if width.is_finite() {
+            ((b - a) / width).ceil().max(1.0) as usize
         } else {
             1
         };
@@ -192,8 +215,52 @@ pub fn adaptive_rule<F: FnMut(f64) -> f64>(
     out
 }
 
-/// Runs the refinement and calls `accept(a, b, value, error)` for every accepted panel (the
-/// value is the two-halves estimate).
+/// A panel of the global adaptive scheme: `value` is the sum of the 16-point rule on its two
+/// halves, `error` = |value − 16-point rule on the whole panel|.
+#[derive(Debug, Clone, Copy)]
+struct Panel {
+    a: f64,
+    b: f64,
+    left: f64,
+    right: f64,
+    error: f64,
+    depth: u32,
+}
+
+impl Panel {
+    fn value(&self) -> f64 {
+        self.left + self.right
+    }
+}
+
+/// Orders panels by error for the max-heap.
+struct ByError(Panel);
+
+impl PartialEq for ByError {
+    fn eq(&self, other: &Self) -> bool {
+        self.0.error.total_cmp(&other.0.error).is_eq()
+    }
+}
+impl Eq for ByError {}
+impl PartialOrd for ByError {
+    fn partial_cmp(&self, other: &Self) -> Option<std::cmp::Ordering> {
+        Some(self.cmp(other))
+    }
+}
+impl Ord for ByError {
+    fn cmp(&self, other: &Self) -> std::cmp::Ordering {
+        self.0.error.total_cmp(&other.0.error)
+    }
+}
+
+/// Most bisections of one adaptive integration (each costs 64 evaluations); beyond it the
+/// current estimate is returned with its (larger) error estimate.
+pub const MAX_SPLITS: usize = 2000;
+
+/// Global adaptive refinement (QUADPACK QAG style): the panel with the largest error estimate
+/// is bisected until the total estimate is below the tolerance, the panel is 2⁻⁴⁰ of its initial
+/// width, or [`MAX_SPLITS`] bisections were made. Calls `accept(a, b, value, error)` for every
+/// final panel.
 fn adaptive_visit<F: FnMut(f64) -> f64, A: FnMut(f64, f64, f64, f64)>(
     f: &mut F,
     breaks: &[f64],
@@ -207,41 +274,61 @@ fn adaptive_visit<F: FnMut(f64) -> f64, A: FnMut(f64, f64, f64, f64)>(
     if ps.is_empty() {
         return;
     }
-    let total_width: f64 = ps.iter().map(|(a, b)| b - a).sum();
-    let mut wholes = Vec::with_capacity(ps.len());
+    let make = |f: &mut F, a: f64, b: f64, whole: f64, depth: u32| {
+        let m = 0.5 * (a + b);
+        let left = rule.integrate(f, a, m);
+        let right = rule.integrate(f, m, b);
+        let error = (left + right - whole).abs();
+        Panel {
+            a,
+            b,
+            left,
+            right,
+            error: if error.is_finite() {
+                error
+            } else {
+                f64::INFINITY
+            },
+            depth,
+        }
+    };
+    let mut heap = std::collections::BinaryHeap::with_capacity(ps.len() + 2 * MAX_SPLITS);
     let mut scale = 0.0;
+    let mut total_error = 0.0;
     for &(a, b) in &ps {
-        wholes.push(rule.integrate(f, a, b));
+        let whole = rule.integrate(f, a, b);
         scale += rule.integrate(&mut |x| f(x).abs(), a, b);
+        let p = make(f, a, b, whole, 0);
+        total_error += p.error;
+        heap.push(ByError(p));
     }
-    let tol_total = (rel_tol * scale).max(abs_floor);
-    for (&(a, b), &whole) in ps.iter().zip(&wholes) {
-        let tol = tol_total * (b - a) / total_width;
-        refine(f, rule, a, b, whole, tol, 0, accept);
+    let tol = (rel_tol * scale).max(abs_floor);
+    let mut done = Vec::new();
+    let mut splits = 0;
+    while total_error > tol && splits < MAX_SPLITS {
+        let Some(ByError(p)) = heap.pop() else {
+            break;
+        };
+        let m = 0.5 * (p.a + p.b);
+        if p.depth >= MAX_DEPTH || m <= p.a || m >= p.b || !p.error.is_finite() {
+            done.push(p);
+            if !p.error.is_finite() {
+                break;
+            }
+            continue;
+        }
+        let l = make(f, p.a, m, p.left, p.depth + 1);
+        let r = make(f, m, p.b, p.right, p.depth + 1);
+        total_error += l.error + r.error - p.error;
+        heap.push(ByError(l));
+        heap.push(ByError(r));
+        splits += 1;
     }
-}
-
-#[allow(clippy::too_many_arguments)]
-fn refine<F: FnMut(f64) -> f64, A: FnMut(f64, f64, f64, f64)>(
-    f: &mut F,
-    rule: &GaussLegendre,
-    a: f64,
-    b: f64,
-    whole: f64,
-    tol: f64,
-    depth: u32,
-    accept: &mut A,
-) {
-    let m = 0.5 * (a + b);
-    let left = rule.integrate(f, a, m);
-    let right = rule.integrate(f, m, b);
-    let err = (left + right - whole).abs();
-    if err <= tol || depth >= MAX_DEPTH || m <= a || m >= b || !err.is_finite() {
-        accept(a, b, left + right, err);
-        return;
+    done.extend(heap.into_iter().map(|ByError(p)| p));
+    done.sort_by(|x, y| x.a.total_cmp(&y.a));
+    for p in done {
+        accept(p.a, p.b, p.value(), p.error);
     }
-    refine(f, rule, a, m, left, 0.5 * tol, depth + 1, accept);
-    refine(f, rule, m, b, right, 0.5 * tol, depth + 1, accept);
 }
 
 #[cfg(test)]

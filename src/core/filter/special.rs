@@ -442,6 +442,7 @@ pub fn erfc(x: f64) -> f64 {
 }
 
 #[cfg(test)]
+#[allow(clippy::excessive_precision)] // reference values are quoted to 20 digits (mpmath)
 mod tests {
     use super::*;
 

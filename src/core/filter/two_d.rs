@@ -438,7 +438,18 @@ impl Filter2D {
                 let resp = |w: f64| Complex64::new(rule.eval(w), 0.0);
                 let spectral = metrics::spectral_metrics(&resp, omega_max, &[], Gain::Dc, cancel)?;
                 let breaks = k.breakpoints();
-                let proj = |x: f64| abel_projection(&f, &breaks, x);
+                // Absolute floor of the projections' quadrature: 1e-12 of ∫₀^r |h| (near |x| = r
+                // the projection is tiny and its relative accuracy irrelevant to the extrema).
+                let floor = 1e-12
+                    * quad::adaptive(
+                        &mut |s| k.eval(s).abs(),
+                        &f.quad_breaks(),
+                        0.5 * k.feature_scale(),
+                        1e-8,
+                        1e-300,
+                    )
+                    .value;
+                let proj = |x: f64| abel_projection(&f, &breaks, x, floor);
                 let step = metrics::step_extremes(
                     &proj,
                     r,
@@ -480,8 +491,10 @@ pub fn derivative_gain(f: &Filter) -> f64 {
 }
 
 /// The Abel projection m(x) = ∫ h(√(x² + y²)) dy = 2∫₀^{√(r²−x²)} h(√(x²+y²)) dy of a radial
-/// kernel (the line-spread function across an edge parallel to y).
-pub fn abel_projection(f: &Filter, breaks: &[f64], x: f64) -> f64 {
+/// kernel (the line-spread function across an edge parallel to y), by adaptive quadrature to
+/// relative 10⁻¹⁰ or absolute `abs_floor`, whichever is larger. `breaks` are the kernel's
+/// breakpoints in (0, r).
+pub fn abel_projection(f: &Filter, breaks: &[f64], x: f64, abs_floor: f64) -> f64 {
     let r = f.radius();
     let ax = x.abs();
     if ax >= r {
@@ -503,7 +516,7 @@ pub fn abel_projection(f: &Filter, breaks: &[f64], x: f64) -> f64 {
         &yb,
         width,
         1e-10,
-        1e-300,
+        abs_floor,
     );
     2.0 * v.value
 }
