@@ -40,7 +40,7 @@
 //! [`Filter::response_numeric`] integrates h(x)e^{−2πiωx} over \[−r, r\] with adaptive
 //! Gauss–Legendre quadrature ([`quad`]), using the kernel's symmetry (even: 2∫₀^r h cos,
 //! odd: −2i∫₀^r h sin), panels split at every kink of h, no wider than half its feature scale
-//! and half a period of the exponential, refined until the estimated error is below
+//! and one period of the exponential, refined until the estimated error is below
 //! 10⁻¹³·∫|h|. Tests check it against every closed form to 10⁻⁹ (relative to ∫|h|).
 //!
 //! ## Quality metrics ([`FilterMetrics`], the lecture's "possible errors")
@@ -279,7 +279,7 @@ impl ResponseEval {
 }
 
 /// Gauss–Legendre nodes x_q ∈ \[0, r\] and weights W_q = 2 w_q h(x_q) of a kernel, chosen
-/// adaptively for h with panels no wider than a quarter period at ω_max, so that
+/// adaptively for h with 16-point panels no wider than one period at ω_max, so that
 /// H(ω) = δ + Σ W_q cos(2πωx_q) (even) or −i Σ W_q sin(2πωx_q) (odd) for every |ω| ≤ ω_max at the
 /// accuracy of [`Filter::response_numeric`], at the cost of one sum per ω.
 #[derive(Debug, Clone)]
@@ -493,7 +493,8 @@ impl Filter {
         let k = self.kernel();
         let mut width = self.panel_width();
         if omega != 0.0 {
-            width = width.min(0.5 / omega.abs());
+            // One period of the exponential per panel (see `quad::adaptive_rule` for the error).
+            width = width.min(1.0 / omega.abs());
         }
         let breaks = self.quad_breaks();
         match k.parity() {
@@ -525,8 +526,8 @@ impl Filter {
         let k = self.kernel();
         let mut width = self.panel_width();
         if omega_max.is_finite() && omega_max > 0.0 {
-            // Accepted panels are used as two GL16 halves: ≤ ¼ period per half.
-            width = width.min(0.5 / omega_max);
+            // At most one period of e^{−2πiωx} per 16-point panel for |ω| ≤ ω_max.
+            width = width.min(1.0 / omega_max);
         }
         let rule = quad::adaptive_rule(
             &mut |x| k.eval(x),

@@ -179,9 +179,11 @@ pub fn adaptive<F: FnMut(f64) -> f64>(
     out
 }
 
-/// Nodes and weights of the accepted panels of an adaptive integration of f: the rule
-/// Σ w_q g(x_q) then approximates ∫ g over the same range for any g that is as smooth as f on
-/// the scale of the panels.
+/// Nodes and weights (16-point rule on each accepted panel) of an adaptive integration of f:
+/// the rule Σ w_q g(x_q) then approximates ∫ g over the same range for any g that is as smooth
+/// as f on the scale of the panels. The 16-point rule integrates cos(κx) over a panel holding
+/// one full period with error ≈ 2·10⁻²⁹ relative to the panel width (Gauss error term
+/// 2^{33}(16!)⁴/(33·(32!)³)·(π)^{32}), two periods ≈ 10⁻¹⁹.
 pub fn adaptive_rule<F: FnMut(f64) -> f64>(
     f: &mut F,
     breaks: &[f64],
@@ -201,15 +203,12 @@ pub fn adaptive_rule<F: FnMut(f64) -> f64>(
         },
     );
     let rule = gl16();
-    let mut out = Vec::with_capacity(accepted.len() * 32);
+    let mut out = Vec::with_capacity(accepted.len() * 16);
     for (a, b) in accepted {
-        let m = 0.5 * (a + b);
-        for (lo, hi) in [(a, m), (m, b)] {
-            let c = 0.5 * (lo + hi);
-            let h = 0.5 * (hi - lo);
-            for (x, w) in rule.nodes.iter().zip(&rule.weights) {
-                out.push((c + h * x, w * h));
-            }
+        let c = 0.5 * (a + b);
+        let h = 0.5 * (b - a);
+        for (x, w) in rule.nodes.iter().zip(&rule.weights) {
+            out.push((c + h * x, w * h));
         }
     }
     out

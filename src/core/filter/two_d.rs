@@ -80,7 +80,7 @@ pub struct Filter2D {
 }
 
 /// Gauss–Legendre nodes s_q ∈ \[0, r\] and weights W_q = 2π w_q h(s_q) s_q of a radial kernel,
-/// with panels no wider than a quarter period of J₀(2πρ_max s), so that
+/// with 16-point panels no wider than one period of J₀(2πρ_max s) (≈ 1/ρ_max), so that
 /// H₂(ρ) = Σ W_q J₀(2πρ s_q) for every ρ ≤ ρ_max.
 #[derive(Debug, Clone)]
 pub struct HankelRule {
@@ -200,7 +200,7 @@ impl Filter2D {
                 let f = self.filter;
                 let mut width = 0.5 * f.kernel().feature_scale();
                 if rho != 0.0 {
-                    width = width.min(0.5 / rho.abs());
+                    width = width.min(1.0 / rho.abs());
                 }
                 let k = 2.0 * PI * rho;
                 let v = quad::adaptive(
@@ -228,7 +228,7 @@ impl Filter2D {
         let f = self.filter;
         let mut width = 0.5 * f.kernel().feature_scale();
         if rho_max.is_finite() && rho_max > 0.0 {
-            width = width.min(0.5 / rho_max);
+            width = width.min(1.0 / rho_max);
         }
         let rule = quad::adaptive_rule(
             &mut |s| f.eval(s) * s,
@@ -310,7 +310,8 @@ impl Filter2D {
         }
         let c = (size / 2) as i64;
         let delta = 2.0 * omega_max / size as f64;
-        let norm = self.dc_normaliser().map(f64::abs).unwrap_or(1.0);
+        // Normalise by the DC value of the same evaluator, so that the DC pixel is exactly 1.
+        let normalise = self.dc_normaliser().is_some();
         let mut out = vec![0.0; size * size];
         match self.mode {
             Mode2D::Separable => {
@@ -323,7 +324,7 @@ impl Filter2D {
                     }
                     m.push(eval.eval(k as f64 * delta).norm());
                 }
-                let n1 = norm.sqrt();
+                let n1 = if normalise && m[0] > 0.0 { m[0] } else { 1.0 };
                 for j in 0..size {
                     let mj = m[(j as i64 - c).unsigned_abs() as usize] / n1;
                     for i in 0..size {
@@ -333,6 +334,8 @@ impl Filter2D {
             }
             Mode2D::Radial => {
                 let rule = self.hankel_rule(omega_max * std::f64::consts::SQRT_2);
+                let h0 = rule.eval(0.0).abs();
+                let norm = if normalise && h0 > 0.0 { h0 } else { 1.0 };
                 let mut values: HashMap<u64, f64> = HashMap::new();
                 for j in 0..size {
                     cancel.check()?;
@@ -510,7 +513,9 @@ pub fn abel_projection(f: &Filter, breaks: &[f64], x: f64, abs_floor: f64) -> f6
     yb.push(ymax);
     yb.sort_by(f64::total_cmp);
     yb.dedup();
-    let width = 0.5 * f.kernel().feature_scale();
+    // In y the kernel varies no faster than in s = √(x² + y²) (ds/dy ≤ 1): panels of one
+    // feature scale (≤ half an oscillation) suffice for the 16-point rule.
+    let width = f.kernel().feature_scale();
     let v = quad::adaptive(
         &mut |y| f.eval((ax * ax + y * y).sqrt()),
         &yb,
