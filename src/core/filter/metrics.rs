@@ -151,7 +151,7 @@ pub fn step_extremes(
     // Pieces of a quarter of the feature scale: at most one zero of h per piece for the
     // oscillating kernels (sinc-like half periods are ≥ the feature scale).
     let mut width = 0.25 * feature;
-    if !(width > 0.0) || 2.0 * r / width > MAX_STEP_PIECES as f64 {
+    if width.is_nan() || width <= 0.0 || 2.0 * r / width > MAX_STEP_PIECES as f64 {
         width = 2.0 * r / MAX_STEP_PIECES as f64;
     }
     let mut s = 0.0;
