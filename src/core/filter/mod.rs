@@ -473,6 +473,12 @@ impl Filter {
         }
     }
 
+    /// (|H(ω)|, arg H(ω)) with the phase in radians in (−π, π] (unnormalised).
+    pub fn response_polar(&self, omega: f64) -> (f64, f64) {
+        let s = ResponseSample::new(omega, self.response(omega));
+        (s.magnitude, s.phase)
+    }
+
     /// The closed form of the transform of the spatial kernel as evaluated, with its error bound
     /// (for the ideal filters: the transform of the *truncated* sinc combination).
     pub fn response_closed_form(&self, omega: f64) -> Option<ClosedForm> {
@@ -664,6 +670,20 @@ mod tests {
                 radius: 2.0,
                 window: Window::Kaiser { beta: 6.0 }
             })
+        );
+    }
+
+    #[test]
+    fn response_polar_of_the_tent_is_sinc_squared_with_zero_phase() {
+        let t = Filter::Tent(Tent { radius: 2.0 });
+        let (m, p) = t.response_polar(0.3);
+        let s = special::sinc(0.6);
+        assert!((m - 2.0 * s * s).abs() < 1e-15);
+        assert_eq!(p, 0.0);
+        let (_, p) = Filter::Cosc(Cosc::default()).response_polar(0.2);
+        assert!(
+            (p + std::f64::consts::FRAC_PI_2).abs() < 1e-15
+                || (p - std::f64::consts::FRAC_PI_2).abs() < 1e-15
         );
     }
 
