@@ -419,6 +419,41 @@ fn weights_support_and_2d_integrals() {
 }
 
 #[test]
+fn abel_projection_and_derivative_gain_match_closed_forms() {
+    use samplescope::core::filter::two_d::{abel_projection, derivative_gain};
+    // Disk of radius r: m(x) = 2√(r² − x²).
+    let disk = Filter::Box(BoxFilter { radius: 1.3 });
+    for i in 0..=26 {
+        let x = -1.3 + 0.1 * i as f64;
+        let want = 2.0 * (1.3f64 * 1.3 - x * x).max(0.0).sqrt();
+        assert!(
+            (abel_projection(&disk, &[], x, 0.0) - want).abs() < 1e-9,
+            "x = {x}"
+        );
+    }
+    // Gaussian (negligible truncation): m(x) = σ√(2π) e^{−x²/2σ²}.
+    let g = wide_gaussian();
+    let breaks = g.kernel().breakpoints();
+    for i in 0..=20 {
+        let x = 0.15 * i as f64;
+        let want = 0.5 * (2.0 * PI).sqrt() * (-x * x / 0.5).exp();
+        assert!(
+            (abel_projection(&g, &breaks, x, 0.0) - want).abs() < 1e-10,
+            "x = {x}"
+        );
+    }
+    // Truncated cosc at integer R: ∫x cosc = [x sinc]_{−R}^{R} − ∫sinc = −(2/π) Si(πR).
+    for r in [2.0, 4.0, 9.0] {
+        let f = Filter::Cosc(Cosc {
+            radius: r,
+            window: Window::Rect,
+        });
+        let want = 2.0 / PI * sine_integral(PI * r);
+        assert!((derivative_gain(&f) - want).abs() < 1e-12, "R = {r}");
+    }
+}
+
+#[test]
 fn metrics_of_every_filter_are_finite_and_deterministic() {
     let mut all = Filter::all();
     all.extend(Filter::presets().into_iter().map(|(_, _, f)| f));

@@ -287,7 +287,10 @@ impl Filter2D {
     /// Pixel (i, j) (column i, row j) shows ω = ((i − ⌊size/2⌋)Δ, (j − ⌊size/2⌋)Δ) with
     /// Δ = 2ω_max/size: DC sits at pixel (⌊size/2⌋, ⌊size/2⌋) as in the centred periodogram, and
     /// the image covers \[−ω_max, ω_max) on each axis (row j = 0 is the most negative ω_y).
-    /// Radial filters are evaluated once per distinct |ω|² (no interpolation).
+    /// Radial filters are evaluated once per distinct |ω|² (no interpolation) with a
+    /// [`HankelRule`]: the cost is (number of distinct radii, ≈ size²/10) × (rule nodes, ≈ 16·r·ω_max√2
+    /// for sinc-like kernels) Bessel evaluations; cancel through
+    /// [`Filter2D::response_image_with`] (checked once per row).
     pub fn response_image(&self, size: usize, omega_max: f64) -> Result<Vec<f64>, FilterError> {
         self.response_image_with(size, omega_max, &Cancel::never())
     }
