@@ -17,6 +17,8 @@ struct Cli {
 enum Command {
     /// Generate a sample pattern and write it as CSV (`x,y`).
     Points(cli::points::PointsArgs),
+    /// Quality metrics and frequency response of a reconstruction filter.
+    Filter(cli::filter::FilterArgs),
 }
 
 fn main() -> ExitCode {
@@ -30,6 +32,7 @@ fn main() -> ExitCode {
     };
     let result = match cli.command {
         Some(Command::Points(args)) => cli::points::run(&args),
+        Some(Command::Filter(args)) => cli::filter::run(&args),
         None => Err(cli::CliError::Usage(
             "the GUI is not built yet; use a subcommand (see --help)".into(),
         )),

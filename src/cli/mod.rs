@@ -1,8 +1,10 @@
 //! Subcommands of the `samplescope` binary. Each returns a [`CliError`]: bad input exits with
 //! status 2 and one line naming the field and what is allowed; I/O failures exit with 1.
 
+pub mod filter;
 pub mod points;
 
+use samplescope::core::filter::FilterError;
 use samplescope::core::pattern::{Pattern, PatternError};
 
 /// An error of a subcommand.
@@ -14,6 +16,9 @@ pub enum CliError {
     /// A pattern could not be generated from the given parameters (exit status 2).
     #[error("{0}")]
     Pattern(#[from] PatternError),
+    /// A filter could not be built or evaluated from the given parameters (exit status 2).
+    #[error("{0}")]
+    Filter(#[from] FilterError),
     /// Reading or writing a file failed (exit status 1).
     #[error("{path}: {source}")]
     Io {
