@@ -163,8 +163,13 @@ pub fn periodogram_exact(
         let ky = k0 + iy as i64;
         for (ix, o) in out.iter_mut().enumerate() {
             let kx = k0 + ix as i64;
-            // P(kx, ky) = P(−kx, −ky): use the half plane ky ≤ 0.
-            let (kx, ky) = if ky <= 0 { (kx, ky) } else { (-kx, -ky) };
+            // P(kx, ky) = P(−kx, −ky): read the half plane ky < 0 plus (kx ≤ 0, ky = 0), so
+            // that the symmetry holds bit for bit.
+            let (kx, ky) = if ky < 0 || (ky == 0 && kx <= 0) {
+                (kx, ky)
+            } else {
+                (-kx, -ky)
+            };
             let r = (ky - k0) as usize;
             let c = (kx - k0) as usize;
             let re = field[r * 2 * ncols + c];
