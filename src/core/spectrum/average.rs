@@ -1,0 +1,352 @@
+//! Spectrum requests: one periodogram or the average of K realizations, with a report of
+//! what each stage cost and how accurate the result is.
+
+use super::dft::{exact_field_rows, periodogram_exact};
+use super::nufft::{KernelParams, NufftPlan};
+use super::{
+    check_points, check_size, k_min, ratio_of_norms, relative_l2_error, Spectrum, SpectrumError,
+    MAX_REALIZATIONS,
+};
+use crate::core::cancel::Cancel;
+use crate::core::rng::derive_seed;
+use glam::DVec2;
+use rayon::prelude::*;
+use serde::{Deserialize, Serialize};
+use std::time::{Duration, Instant};
+
+/// Default budget of the error check, in complex multiply-adds of the exact reference
+/// (2²² ≈ 4.2 M: a few milliseconds on one core).
+pub const DEFAULT_ERROR_CHECK_BUDGET: u64 = 1 << 22;
+/// Realizations in flight at once are limited so that their buffers (about 72·M² bytes
+/// each for the NUFFT) stay under this many bytes.
+const IN_FLIGHT_BYTES: usize = 1 << 30;
+
+/// How a periodogram is computed.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub enum Method {
+    /// The exact DFT ([`periodogram_exact`]): N·M²/2 complex multiply-adds.
+    Exact,
+    /// The NUFFT ([`NufftPlan`]) with a relative ℓ2 tolerance on P in [1e-12, 1e-2].
+    Nufft {
+        /// Requested relative ℓ2 error of the periodogram (DC excluded).
+        tolerance: f64,
+    },
+}
+
+/// Whether displays show DC (P(0) = N) or mask it. The data always hold the true value.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+pub enum DcMode {
+    /// Show P(0) as computed.
+    #[default]
+    Show,
+    /// Paint DC over with its neighbours' mean in display images.
+    Mask,
+}
+
+/// What to compute: an M×M periodogram by `method`, averaged over `realizations` point sets.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct SpectrumRequest {
+    /// Grid size M (2..=4096); [`super::psa_default_size`] gives PSA's choice for N points.
+    pub size: usize,
+    /// Exact DFT or NUFFT with a tolerance.
+    pub method: Method,
+    /// Number of realizations K averaged (1..=1024).
+    pub realizations: usize,
+    /// Display treatment of DC.
+    pub dc: DcMode,
+    /// Largest cost of the error check, in complex multiply-adds of the exact reference
+    /// (0 disables it). See [`SpectrumReport::error`].
+    pub error_check_budget: u64,
+}
+
+impl Default for SpectrumRequest {
+    /// 256², NUFFT at 1e-6, one realization, DC shown, default error-check budget.
+    fn default() -> Self {
+        SpectrumRequest {
+            size: 256,
+            method: Method::Nufft { tolerance: 1e-6 },
+            realizations: 1,
+            dc: DcMode::Show,
+            error_check_budget: DEFAULT_ERROR_CHECK_BUDGET,
+        }
+    }
+}
+
+impl SpectrumRequest {
+    /// Checks size, tolerance and realizations.
+    ///
+    /// # Errors
+    /// [`SpectrumError::InvalidSize`], [`SpectrumError::InvalidTolerance`],
+    /// [`SpectrumError::InvalidRealizations`].
+    pub fn validate(&self) -> Result<(), SpectrumError> {
+        check_size(self.size)?;
+        if let Method::Nufft { tolerance } = self.method {
+            super::nufft::kernel_params(tolerance)?;
+        }
+        if !(1..=MAX_REALIZATIONS).contains(&self.realizations) {
+            return Err(SpectrumError::InvalidRealizations {
+                k: self.realizations,
+                max: MAX_REALIZATIONS,
+            });
+        }
+        Ok(())
+    }
+}
+
+/// The measured error of a NUFFT periodogram against the exact one (realization 0).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ErrorCheck {
+    /// ‖P_nufft − P_exact‖₂ / ‖P_exact‖₂ over the checked frequencies, DC excluded.
+    pub relative_l2: f64,
+    /// Frequencies compared (M² when `full`).
+    pub frequencies: usize,
+    /// Whether the whole grid was compared (else a set of evenly spaced rows).
+    pub full: bool,
+}
+
+/// What a spectrum cost and how accurate it is.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SpectrumReport {
+    /// Time per stage, summed over realizations (thread time: realizations run in parallel,
+    /// so the sum may exceed `wall`). Stages: `generate`, then `spread`, `fft`, `deconvolve`
+    /// (NUFFT) or `exact`, then `error-check` (NUFFT with a budget) and `average` (the sum
+    /// and the division, on the calling thread).
+    pub stages: Vec<(&'static str, Duration)>,
+    /// Wall time of the whole request.
+    pub wall: Duration,
+    /// The tolerance asked for (`None` for the exact method).
+    pub tolerance: Option<f64>,
+    /// The NUFFT kernel used and the upsampled grid size.
+    pub kernel: Option<(KernelParams, usize)>,
+    /// The measured error of realization 0 against the exact periodogram, when affordable:
+    /// the whole grid if N·(⌊M/2⌋+1)·(2⌊M/2⌋+1) ≤ budget, else R = ⌊budget/(N·M)⌋ evenly
+    /// spaced rows (R ≥ 1), else `None` (also for the exact method and a budget of 0).
+    pub error: Option<ErrorCheck>,
+    /// Fewest and most points over the realizations.
+    pub n_points_range: (usize, usize),
+    /// Number of realizations averaged.
+    pub realizations: usize,
+}
+
+struct Realization {
+    power: Vec<f64>,
+    n_points: usize,
+    times: [Duration; 5],
+    error: Option<ErrorCheck>,
+}
+
+const STAGE_NAMES: [&str; 5] = ["generate", "spread", "fft", "deconvolve", "error-check"];
+
+/// The mean periodogram of K point sets `generate(derive_seed(seed, r))`, r = 0..K, with the
+/// method of `req`:
+///
+/// P̄(k) = (1/K) Σ_r P_r(k).
+///
+/// Realizations run in parallel (rayon) in groups (at most 16, fewer for large M so that the
+/// buffers in flight stay under 1 GiB); the sum runs in realization order on the calling
+/// thread, so the bits do not depend on the number of threads. A NUFFT request builds its
+/// plan once. For the NUFFT, realization 0 is also compared with the exact periodogram when
+/// the request's error-check budget allows ([`SpectrumReport::error`]).
+///
+/// # Errors
+/// Request errors ([`SpectrumRequest::validate`]); [`SpectrumError::Generator`] when
+/// `generate` fails (the lowest failing realization is reported);
+/// [`SpectrumError::EmptyPointSet`] / [`SpectrumError::InvalidPoint`] for bad points;
+/// [`SpectrumError::Cancelled`].
+pub fn average_periodogram<G, E>(
+    req: &SpectrumRequest,
+    seed: u64,
+    generate: G,
+    cancel: &Cancel,
+) -> Result<(Spectrum, SpectrumReport), SpectrumError>
+where
+    G: Fn(u64) -> Result<Vec<DVec2>, E> + Sync,
+    E: Into<Box<dyn std::error::Error + Send + Sync>>,
+{
+    let start = Instant::now();
+    req.validate()?;
+    let m = req.size;
+    let plan = match req.method {
+        Method::Nufft { tolerance } => Some(NufftPlan::new(m, tolerance)?),
+        Method::Exact => None,
+    };
+    let k = req.realizations;
+    let group = (IN_FLIGHT_BYTES / (72 * m * m)).clamp(1, 16);
+    let one = |r: usize| -> Result<Realization, SpectrumError> {
+        cancel.check()?;
+        let mut times = [Duration::ZERO; 5];
+        let t0 = Instant::now();
+        let points =
+            generate(derive_seed(seed, r as u64)).map_err(|e| SpectrumError::Generator {
+                realization: r,
+                source: e.into(),
+            })?;
+        times[0] = t0.elapsed();
+        check_points(&points)?;
+        let mut error = None;
+        let spectrum = match &plan {
+            Some(plan) => {
+                let (s, t) = plan.periodogram_timed(&points, cancel)?;
+                times[1] = t.spread;
+                times[2] = t.fft;
+                times[3] = t.deconvolve;
+                if r == 0 && req.error_check_budget > 0 {
+                    let t = Instant::now();
+                    error = error_check(&points, &s, req.error_check_budget, cancel)?;
+                    times[4] = t.elapsed();
+                }
+                s
+            }
+            None => {
+                let t = Instant::now();
+                let s = periodogram_exact(&points, m, cancel)?;
+                times[1] = t.elapsed();
+                s
+            }
+        };
+        Ok(Realization {
+            power: spectrum.power,
+            n_points: points.len(),
+            times,
+            error,
+        })
+    };
+
+    let mut acc = vec![0.0; m * m];
+    let mut times = [Duration::ZERO; 5];
+    let mut average_time = Duration::ZERO;
+    let mut error = None;
+    let (mut n_min, mut n_max) = (usize::MAX, 0);
+    for g0 in (0..k).step_by(group) {
+        cancel.check()?;
+        let results: Vec<Result<Realization, SpectrumError>> =
+            (g0..(g0 + group).min(k)).into_par_iter().map(one).collect();
+        for result in results {
+            let real = result?;
+            let t = Instant::now();
+            for (a, p) in acc.iter_mut().zip(&real.power) {
+                *a += p;
+            }
+            average_time += t.elapsed();
+            for (total, t) in times.iter_mut().zip(real.times) {
+                *total += t;
+            }
+            n_min = n_min.min(real.n_points);
+            n_max = n_max.max(real.n_points);
+            if real.error.is_some() {
+                error = real.error;
+            }
+        }
+    }
+    let t = Instant::now();
+    if k > 1 {
+        let inv = 1.0 / k as f64;
+        acc.iter_mut().for_each(|a| *a *= inv);
+    }
+    average_time += t.elapsed();
+
+    let mut stages = vec![(STAGE_NAMES[0], times[0])];
+    match &plan {
+        Some(_) => {
+            stages.extend((1..4).map(|i| (STAGE_NAMES[i], times[i])));
+            if req.error_check_budget > 0 {
+                stages.push((STAGE_NAMES[4], times[4]));
+            }
+        }
+        None => stages.push(("exact", times[1])),
+    }
+    stages.push(("average", average_time));
+    let spectrum = Spectrum {
+        m,
+        power: acc,
+        n_points: n_min,
+        realizations: k,
+        dc: req.dc,
+    };
+    let report = SpectrumReport {
+        stages,
+        wall: start.elapsed(),
+        tolerance: plan.as_ref().and_then(|p| p.tolerance()),
+        kernel: plan.as_ref().map(|p| (p.kernel(), p.upsampled())),
+        error,
+        n_points_range: (n_min, n_max),
+        realizations: k,
+    };
+    Ok((spectrum, report))
+}
+
+/// The spectrum of one given point set (K must be 1): [`average_periodogram`] with a
+/// generator that returns `points`.
+///
+/// # Errors
+/// [`SpectrumError::InvalidRealizations`] (with max 1) when `req.realizations != 1`; otherwise
+/// as [`average_periodogram`].
+pub fn analyze_points(
+    req: &SpectrumRequest,
+    points: &[DVec2],
+    cancel: &Cancel,
+) -> Result<(Spectrum, SpectrumReport), SpectrumError> {
+    if req.realizations != 1 {
+        return Err(SpectrumError::InvalidRealizations {
+            k: req.realizations,
+            max: 1,
+        });
+    }
+    average_periodogram(
+        req,
+        0,
+        |_| Ok::<_, std::convert::Infallible>(points.to_vec()),
+        cancel,
+    )
+}
+
+/// Compares `approx` (the periodogram of `points`) with the exact one within `budget`
+/// complex multiply-adds; see [`SpectrumReport::error`].
+fn error_check(
+    points: &[DVec2],
+    approx: &Spectrum,
+    budget: u64,
+    cancel: &Cancel,
+) -> Result<Option<ErrorCheck>, SpectrumError> {
+    let m = approx.m;
+    let n = points.len() as u64;
+    let k0 = k_min(m);
+    let full_cost = n * (-k0 + 1) as u64 * (-2 * k0 + 1) as u64;
+    if full_cost <= budget {
+        let exact = periodogram_exact(points, m, cancel)?;
+        return Ok(Some(ErrorCheck {
+            relative_l2: relative_l2_error(approx, &exact, true),
+            frequencies: m * m,
+            full: true,
+        }));
+    }
+    let rows = (budget / (n * m as u64)) as usize;
+    if rows == 0 {
+        return Ok(None);
+    }
+    let ky: Vec<i64> = (0..rows)
+        .map(|i| k0 + ((2 * i + 1) * m / (2 * rows)) as i64)
+        .collect();
+    let field = exact_field_rows(points, k0, m, &ky, cancel)?;
+    let inv_n = 1.0 / n as f64;
+    let (mut num, mut den) = (0.0f64, 0.0f64);
+    for (r, &kyr) in ky.iter().enumerate() {
+        for ix in 0..m {
+            let kx = k0 + ix as i64;
+            if kx == 0 && kyr == 0 {
+                continue;
+            }
+            let re = field[r * 2 * m + ix];
+            let im = field[r * 2 * m + m + ix];
+            let exact = (re * re + im * im) * inv_n;
+            let a = approx.power[(kyr - k0) as usize * m + ix];
+            num += (a - exact) * (a - exact);
+            den += exact * exact;
+        }
+    }
+    Ok(Some(ErrorCheck {
+        relative_l2: ratio_of_norms(num, den),
+        frequencies: rows * m,
+        full: false,
+    }))
+}
