@@ -1,1 +1,321 @@
-//! recon (see crate docs).
+//! Sampling a signal and reconstructing it onto a W×W image; reference images and errors.
+//!
+//! ## Conventions
+//! - **Image.** A W×W image stores pixel (i, j) at `pixels[j·W + i]`; it covers
+//!   [i/W, (i+1)/W) × [j/W, (j+1)/W) of the unit square and its centre is ((i+½)/W, (j+½)/W).
+//!   Row 0 is y ∈ [0, 1/W), drawn at the top. W is in 1..=[`MAX_W`].
+//! - **Reconstruction** is the normalised weighted sum
+//!
+//!   ```text
+//!   I(p) = Σⱼ w((p − xⱼ)/h) f(xⱼ) / Σⱼ w((p − xⱼ)/h)
+//!   ```
+//!
+//!   evaluated at every pixel centre p, with a [`ReconKernel`] w given in filter units and a
+//!   scale h: the mean sample spacing h = 1/√N for N scattered samples over the image
+//!   ([`scattered`], and [`grid`] where N = G²), the output pixel h = 1/W for supersampling
+//!   ([`supersample`]). A kernel with support r covers |d| < r sample spacings (or pixels).
+//! - **Borders are open** (not toroidal): the signals are not periodic, so a sample only
+//!   contributes to pixels inside the image, distances are plain Euclidean, and pixels near the
+//!   border are normalised by the smaller weight they receive. This keeps the normalised sum
+//!   exact for constants and unbiased at the border.
+//! - **Zero total weight.** A pixel whose weights sum to exactly 0 (no sample within the
+//!   support, or cancelling negative lobes) is never divided: it is set to
+//!   [`ZERO_WEIGHT_FILL`] (½, mid grey), flagged in [`Reconstruction::mask`] and counted in
+//!   [`Reconstruction::zero_weight`]. No output is ever NaN.
+//! - **Reference images** ([`reference`]) are box-prefiltered: the mean of the signal over each
+//!   pixel square, exact where a closed form exists (area coverage, integrals) and estimated by
+//!   stratified supersampling, with an error estimate, otherwise.
+//! - **Errors** ([`ErrorReport`]) are measured over every pixel (zero-weight pixels count with
+//!   their fill value): RMSE = √(mean (I − R)²) and PSNR = 10 log₁₀(1/MSE) dB (peak 1).
+//! - **Cost and cancellation.** Every routine checks a [`Cancel`] token once per output row (or
+//!   every 4096 samples) and refuses work above [`MAX_WORK`] kernel taps or signal evaluations.
+//!   Results are deterministic: the same inputs and seeds give the same bits, whatever the
+//!   number of threads (parallel loops write disjoint pixels; splatting is serial).
+
+pub mod convergence;
+pub mod coverage;
+pub mod grid;
+pub mod kernels;
+pub mod reference;
+pub mod scattered;
+pub mod supersample;
+
+mod accum;
+
+pub use convergence::{convergence_curve, ConvergenceCurve, ConvergencePoint, DEFAULT_SPP_LIST};
+pub use grid::{resample_grid, sample_grid};
+pub use reference::{
+    reference_image, reference_image_with, reference_supersampled, ReferenceImage,
+    ReferenceMethod, ReferenceOptions,
+};
+pub use scattered::{reconstruct_scattered, reconstruct_scattered_gather, sample_signal};
+pub use supersample::{supersample, Jittered, PatternProvider, SampleProvider, UniformGrid};
+
+use crate::core::cancel::{Cancel, Cancelled};
+use crate::core::pattern::PatternError;
+use crate::core::signal::SignalError;
+use glam::DVec2;
+use std::time::Duration;
+
+/// Largest output size W (the image is W×W).
+pub const MAX_W: usize = 8192;
+/// Largest number of samples per pixel.
+pub const MAX_SPP: usize = 4096;
+/// Largest number of scattered samples N (the pattern limit).
+pub const MAX_SAMPLES: usize = crate::core::pattern::MAX_N;
+/// Largest kernel support, in filter units (sample spacings or pixels).
+pub const MAX_SUPPORT: f64 = 64.0;
+/// Largest amount of work accepted: kernel taps plus signal evaluations (2³⁴ ≈ 1.7·10¹⁰,
+/// about a minute on one core).
+pub const MAX_WORK: u128 = 1 << 34;
+/// The value of a pixel whose total weight is zero: mid grey.
+pub const ZERO_WEIGHT_FILL: f64 = 0.5;
+
+/// A reconstruction kernel w(d), d in units of the filter scale (sample spacing or pixel).
+///
+/// Contract: `weight(d) = 0` whenever |d.x| ≥ `support()` or |d.y| ≥ `support()`; weights are
+/// finite and may be negative (windowed sinc). The reconstruction visits only the taps inside
+/// the support, so a kernel that breaks the contract is silently truncated.
+pub trait ReconKernel: Sync {
+    /// The support radius r (filter units): w vanishes outside the square |dₓ|, |d_y| < r.
+    fn support(&self) -> f64;
+    /// The weight w(d).
+    fn weight(&self, d: DVec2) -> f64;
+    /// For a separable kernel, the 1D factor h with `weight(d) = h(d.x)·h(d.y)`; `None` (the
+    /// default) for other kernels. Splatting uses it to evaluate 2(2r+1) factors per sample
+    /// instead of (2r+1)² weights.
+    fn factor(&self, x: f64) -> Option<f64> {
+        let _ = x;
+        None
+    }
+}
+
+impl<K: ReconKernel + ?Sized> ReconKernel for &K {
+    fn support(&self) -> f64 {
+        (**self).support()
+    }
+    fn weight(&self, d: DVec2) -> f64 {
+        (**self).weight(d)
+    }
+    fn factor(&self, x: f64) -> Option<f64> {
+        (**self).factor(x)
+    }
+}
+
+/// Why a sampling, reconstruction or reference computation was refused or stopped.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum ReconError {
+    /// An integer size (`w`, `n`, `spp`, `g`, `strata`) is outside its range.
+    #[error("{field} = {value}: must be an integer in {min}..={max}")]
+    OutOfRange {
+        field: &'static str,
+        value: usize,
+        min: usize,
+        max: usize,
+    },
+    /// Two inputs that must have the same length do not.
+    #[error("{field} has {got} entries but must have {expected} (one per {per})")]
+    LengthMismatch {
+        field: &'static str,
+        got: usize,
+        expected: usize,
+        per: &'static str,
+    },
+    /// An input value is NaN or infinite.
+    #[error("{field}[{index}] = {value}: must be finite")]
+    NonFinite {
+        field: &'static str,
+        index: usize,
+        value: f64,
+    },
+    /// A sample position lies outside the unit square.
+    #[error("points[{index}] = ({x}, {y}): must lie in [0,1]²")]
+    OutOfDomain { index: usize, x: f64, y: f64 },
+    /// The kernel's support is unusable.
+    #[error("kernel support = {support}: must be a finite number in (0, {max}]")]
+    InvalidSupport { support: f64, max: f64 },
+    /// The kernel produced a non-finite weight (first affected pixel given).
+    #[error("kernel weights at pixel {pixel} are not finite: the kernel must return finite weights")]
+    NonFiniteWeight { pixel: usize },
+    /// The signal's parameters are invalid.
+    #[error(transparent)]
+    Signal(#[from] SignalError),
+    /// A sample provider rejected `spp` (e.g. a grid needs a perfect square).
+    #[error("{provider}: spp = {spp}: must be {allowed}")]
+    ProviderSpp {
+        provider: &'static str,
+        spp: usize,
+        allowed: String,
+    },
+    /// A sample provider returned the wrong number of offsets.
+    #[error("sample provider returned {got} offsets for pixel {pixel}; spp = {spp} expected")]
+    ProviderCount { pixel: u64, got: usize, spp: usize },
+    /// A sample provider returned an offset outside [0,1)².
+    #[error("sample provider offset ({x}, {y}) for pixel {pixel}: must lie in [0,1)²")]
+    ProviderOffset { pixel: u64, x: f64, y: f64 },
+    /// The pattern behind a sample provider failed.
+    #[error("sample pattern: {0}")]
+    Pattern(#[from] PatternError),
+    /// The request would exceed [`MAX_WORK`].
+    #[error("{what} needs about {work} kernel taps and signal evaluations; the limit is {max}: lower w, n, spp or the kernel support")]
+    TooMuchWork {
+        what: &'static str,
+        work: u128,
+        max: u128,
+    },
+    /// The computation was cancelled.
+    #[error("cancelled")]
+    Cancelled,
+}
+
+impl From<Cancelled> for ReconError {
+    fn from(_: Cancelled) -> Self {
+        ReconError::Cancelled
+    }
+}
+
+/// Checks `min ≤ value ≤ max` for an integer size.
+pub(crate) fn check_size(
+    field: &'static str,
+    value: usize,
+    min: usize,
+    max: usize,
+) -> Result<(), ReconError> {
+    if value < min || value > max {
+        return Err(ReconError::OutOfRange {
+            field,
+            value,
+            min,
+            max,
+        });
+    }
+    Ok(())
+}
+
+/// Checks the kernel support and returns it.
+pub(crate) fn check_support<K: ReconKernel + ?Sized>(kernel: &K) -> Result<f64, ReconError> {
+    let r = kernel.support();
+    if !(r.is_finite() && r > 0.0 && r <= MAX_SUPPORT) {
+        return Err(ReconError::InvalidSupport {
+            support: r,
+            max: MAX_SUPPORT,
+        });
+    }
+    Ok(r)
+}
+
+/// Checks an amount of work against [`MAX_WORK`].
+pub(crate) fn check_work(what: &'static str, work: u128) -> Result<(), ReconError> {
+    if work > MAX_WORK {
+        return Err(ReconError::TooMuchWork {
+            what,
+            work,
+            max: MAX_WORK,
+        });
+    }
+    Ok(())
+}
+
+/// A reconstructed W×W image.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Reconstruction {
+    /// Size W (the image is W×W).
+    pub w: usize,
+    /// Pixel values, row-major (`pixels[j·W + i]`); zero-weight pixels hold [`Self::fill`].
+    pub pixels: Vec<f64>,
+    /// How many pixels had zero total weight.
+    pub zero_weight: usize,
+    /// `true` where the total weight was zero (row-major, like `pixels`).
+    pub mask: Vec<bool>,
+    /// The value given to zero-weight pixels ([`ZERO_WEIGHT_FILL`]).
+    pub fill: f64,
+    /// How many samples of the signal were used.
+    pub samples: usize,
+    /// Wall-clock time of the reconstruction (sampling included where the routine samples).
+    pub wall_time: Duration,
+}
+
+/// Error of a reconstruction against a reference image.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ErrorReport {
+    /// √(mean over all W² pixels of (I − R)²).
+    pub rmse: f64,
+    /// 10·log₁₀(1/MSE) dB for peak value 1 (+∞ when the images are identical).
+    pub psnr: f64,
+    /// max |I − R|.
+    pub max_abs: f64,
+    /// Zero-weight pixels in the reconstruction (they count with their fill value).
+    pub zero_weight: usize,
+    /// Wall-clock time of the reconstruction being judged (copied from it).
+    pub wall_time: Duration,
+}
+
+/// Root-mean-square difference √(Σ (aᵢ − bᵢ)²/n) of two equally long images.
+pub fn rmse(a: &[f64], b: &[f64]) -> Result<f64, ReconError> {
+    if a.len() != b.len() {
+        return Err(ReconError::LengthMismatch {
+            field: "reference",
+            got: b.len(),
+            expected: a.len(),
+            per: "pixel",
+        });
+    }
+    if a.is_empty() {
+        return Err(ReconError::OutOfRange {
+            field: "pixels",
+            value: 0,
+            min: 1,
+            max: MAX_W * MAX_W,
+        });
+    }
+    let sum: f64 = a.iter().zip(b).map(|(x, y)| (x - y) * (x - y)).sum();
+    Ok((sum / a.len() as f64).sqrt())
+}
+
+/// PSNR for peak value 1: 10·log₁₀(1/rmse²) = −20·log₁₀(rmse) dB; +∞ for rmse = 0.
+pub fn psnr(rmse: f64) -> f64 {
+    if rmse == 0.0 {
+        f64::INFINITY
+    } else {
+        -20.0 * rmse.log10()
+    }
+}
+
+/// The error of `recon` against the reference pixels (same W×W layout).
+pub fn error_report(recon: &Reconstruction, reference: &[f64]) -> Result<ErrorReport, ReconError> {
+    for (index, &value) in reference.iter().enumerate() {
+        if !value.is_finite() {
+            return Err(ReconError::NonFinite {
+                field: "reference",
+                index,
+                value,
+            });
+        }
+    }
+    let e = rmse(&recon.pixels, reference)?;
+    let max_abs = recon
+        .pixels
+        .iter()
+        .zip(reference)
+        .map(|(a, b)| (a - b).abs())
+        .fold(0.0, f64::max);
+    Ok(ErrorReport {
+        rmse: e,
+        psnr: psnr(e),
+        max_abs,
+        zero_weight: recon.zero_weight,
+        wall_time: recon.wall_time,
+    })
+}
+
+/// The centre ((i+½)/W, (j+½)/W) of pixel (i, j).
+#[inline]
+pub fn pixel_centre(i: usize, j: usize, w: usize) -> DVec2 {
+    DVec2::new((i as f64 + 0.5) / w as f64, (j as f64 + 0.5) / w as f64)
+}
+
+/// Helper: a cancellation check that converts to [`ReconError`].
+#[inline]
+pub(crate) fn check_cancel(cancel: &Cancel) -> Result<(), ReconError> {
+    cancel.check().map_err(ReconError::from)
+}

@@ -1,0 +1,171 @@
+//! The splatting engine shared by scattered, grid and supersampled reconstruction.
+//!
+//! Positions are in **pixel units** (pixel i covers [i, i+1), its centre is i + ½). A sample at
+//! x with value v adds w(d)·v and w(d) to every pixel whose centre c satisfies
+//! |c − x| < r_px (per axis), where d = (c − x)·inv_scale is the offset in filter units and
+//! r_px = support / inv_scale the support in pixels. The range of pixels is padded by
+//! [`PAD`] pixel so that rounding never drops a tap inside the support; taps outside it have
+//! weight 0 by the [`ReconKernel`] contract.
+
+use super::{ReconError, ReconKernel, Reconstruction, ZERO_WEIGHT_FILL};
+use glam::DVec2;
+use std::time::Duration;
+
+/// Padding of the splat range, in pixels (rounding errors are ~10⁻¹² px).
+pub(crate) const PAD: f64 = 1e-7;
+
+/// The offset in filter units of pixel centre `k + ½` from position `x` (pixel units). Splat
+/// and gather both call this, so they hand the kernel bit-identical arguments.
+#[inline(always)]
+pub(crate) fn offset(k: usize, x: f64, inv_scale: f64) -> f64 {
+    ((k as f64 + 0.5) - x) * inv_scale
+}
+
+/// The inclusive pixel range [lo, hi] whose centres lie within `r_px` (+ pad) of `x`, clipped
+/// to [0, w − 1]; `None` when empty.
+#[inline(always)]
+pub(crate) fn pixel_range(x: f64, r_px: f64, w: usize) -> Option<(usize, usize)> {
+    let lo = (x - 0.5 - r_px - PAD).ceil().max(0.0);
+    let hi = (x - 0.5 + r_px + PAD).floor().min((w - 1) as f64);
+    if hi < lo || hi.is_nan() || lo.is_nan() {
+        None
+    } else {
+        Some((lo as usize, hi as usize))
+    }
+}
+
+/// Running sums Σ w·v and Σ w per pixel (interleaved for locality).
+pub(crate) struct Accum<'k, K: ReconKernel + ?Sized> {
+    w: usize,
+    cells: Vec<[f64; 2]>,
+    kernel: &'k K,
+    separable: bool,
+    inv_scale: f64,
+    r_px: f64,
+    hx: Vec<f64>,
+    hy: Vec<f64>,
+}
+
+impl<'k, K: ReconKernel + ?Sized> Accum<'k, K> {
+    /// An empty W×W accumulator for `kernel` at `scale_px` pixels per filter unit.
+    pub(crate) fn new(w: usize, kernel: &'k K, support: f64, scale_px: f64) -> Self {
+        Accum {
+            w,
+            cells: vec![[0.0; 2]; w * w],
+            kernel,
+            separable: kernel.factor(0.0).is_some(),
+            inv_scale: 1.0 / scale_px,
+            r_px: support * scale_px,
+            hx: Vec::new(),
+            hy: Vec::new(),
+        }
+    }
+
+    /// Support in pixels.
+    pub(crate) fn r_px(&self) -> f64 {
+        self.r_px
+    }
+
+    /// Adds one sample at `x` (pixel units) with value `v`.
+    #[inline]
+    pub(crate) fn splat(&mut self, x: DVec2, v: f64) {
+        let Some((i0, i1)) = pixel_range(x.x, self.r_px, self.w) else {
+            return;
+        };
+        let Some((j0, j1)) = pixel_range(x.y, self.r_px, self.w) else {
+            return;
+        };
+        let w = self.w;
+        let s = self.inv_scale;
+        if self.separable {
+            let kernel = self.kernel;
+            self.hx.clear();
+            self.hx.extend(
+                (i0..=i1).map(|i| kernel.factor(offset(i, x.x, s)).unwrap_or(0.0)),
+            );
+            self.hy.clear();
+            self.hy.extend(
+                (j0..=j1).map(|j| kernel.factor(offset(j, x.y, s)).unwrap_or(0.0)),
+            );
+            for (j, &wy) in (j0..=j1).zip(&self.hy) {
+                if wy == 0.0 {
+                    continue;
+                }
+                let row = &mut self.cells[j * w + i0..=j * w + i1];
+                for (cell, &wx) in row.iter_mut().zip(&self.hx) {
+                    let wt = wx * wy;
+                    cell[0] += wt * v;
+                    cell[1] += wt;
+                }
+            }
+        } else {
+            for j in j0..=j1 {
+                let dy = offset(j, x.y, s);
+                let row = &mut self.cells[j * w + i0..=j * w + i1];
+                for (i, cell) in (i0..=i1).zip(row.iter_mut()) {
+                    let wt = self.kernel.weight(DVec2::new(offset(i, x.x, s), dy));
+                    cell[0] += wt * v;
+                    cell[1] += wt;
+                }
+            }
+        }
+    }
+
+    /// Normalises every pixel; zero-weight pixels get the fill value and are flagged.
+    pub(crate) fn finish(
+        self,
+        samples: usize,
+        wall_time: Duration,
+    ) -> Result<Reconstruction, ReconError> {
+        finish_sums(self.w, &self.cells, samples, wall_time)
+    }
+}
+
+/// Turns per-pixel sums [Σ w·v, Σ w] into a [`Reconstruction`].
+pub(crate) fn finish_sums(
+    w: usize,
+    cells: &[[f64; 2]],
+    samples: usize,
+    wall_time: Duration,
+) -> Result<Reconstruction, ReconError> {
+    let mut pixels = Vec::with_capacity(cells.len());
+    let mut mask = Vec::with_capacity(cells.len());
+    let mut zero_weight = 0;
+    for (pixel, &[num, den]) in cells.iter().enumerate() {
+        if !(num.is_finite() && den.is_finite()) {
+            return Err(ReconError::NonFiniteWeight { pixel });
+        }
+        if den == 0.0 {
+            pixels.push(ZERO_WEIGHT_FILL);
+            mask.push(true);
+            zero_weight += 1;
+        } else {
+            let v = num / den;
+            if !v.is_finite() {
+                return Err(ReconError::NonFiniteWeight { pixel });
+            }
+            pixels.push(v);
+            mask.push(false);
+        }
+    }
+    Ok(Reconstruction {
+        w,
+        pixels,
+        zero_weight,
+        mask,
+        fill: ZERO_WEIGHT_FILL,
+        samples,
+        wall_time,
+    })
+}
+
+/// Estimated kernel taps of splatting `n` samples with support `r_px` pixels onto W×W.
+pub(crate) fn splat_work(n: usize, r_px: f64, w: usize) -> u128 {
+    let per_axis = (2.0 * r_px + 2.0).min(w as f64 + 1.0);
+    let per_axis = if per_axis.is_finite() {
+        per_axis as u128
+    } else {
+        w as u128 + 1
+    };
+    n as u128 * per_axis * per_axis
+}

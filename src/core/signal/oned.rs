@@ -1,0 +1,256 @@
+//! 1D signals for the sampling-theorem view: sums of sines, a linear chirp, a square wave; and
+//! the constant field.
+//!
+//! Each is a function f(x) of x ∈ [0, 1) with values in [0, 1]; as a 2D image it is constant
+//! along y (f(p) = f(p.x)). Frequencies are in cycles per unit: sampling with N points per unit
+//! has Nyquist N/2. Phases are formed in double-double and reduced exactly, as for the zone plate.
+
+use super::exact::{rem2, sin_pi, DoubleDouble};
+use super::{check_range, SignalError};
+use serde::{Deserialize, Serialize};
+
+/// Number of terms of [`SumOfSines`].
+pub const MAX_TERMS: usize = 4;
+
+/// Largest frequency accepted by the 1D signals (cycles per unit).
+pub const MAX_FREQUENCY_1D: f64 = 1e6;
+
+/// f(x) = ½(1 + Σₖ aₖ sin(2π fₖ x)), with Σ|aₖ| ≤ 1 so that f ∈ [0, 1].
+///
+/// A band-limited signal when every fₖ < N/2: sampled at N points per unit it is recovered
+/// exactly by sinc interpolation (Shannon 1949); unused terms have aₖ = 0.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct SumOfSines {
+    /// Frequencies fₖ in cycles per unit, each in [0, 10⁶].
+    pub freqs: [f64; MAX_TERMS],
+    /// Amplitudes aₖ, with Σ|aₖ| ≤ 1.
+    pub amps: [f64; MAX_TERMS],
+}
+
+impl Default for SumOfSines {
+    fn default() -> Self {
+        SumOfSines {
+            freqs: [2.0, 5.0, 11.0, 0.0],
+            amps: [0.5, 0.3, 0.2, 0.0],
+        }
+    }
+}
+
+impl SumOfSines {
+    /// Name in scene files.
+    pub const NAME: &'static str = "sum-of-sines";
+
+    /// Checks every parameter against its range.
+    pub fn validate(&self) -> Result<(), SignalError> {
+        for &f in &self.freqs {
+            check_range(Self::NAME, "freqs", f, 0.0, MAX_FREQUENCY_1D)?;
+        }
+        let mut total = 0.0;
+        for &a in &self.amps {
+            check_range(Self::NAME, "amps", a, -1.0, 1.0)?;
+            total += a.abs();
+        }
+        if total > 1.0 {
+            return Err(SignalError::InvalidParam {
+                signal: Self::NAME,
+                field: "amps",
+                value: total,
+                allowed: "amplitudes with Σ|aₖ| ≤ 1 (value shown is Σ|aₖ|)".into(),
+            });
+        }
+        Ok(())
+    }
+
+    /// f(x) ∈ [0, 1].
+    #[inline]
+    pub fn eval1(&self, x: f64) -> f64 {
+        let mut s = 0.0;
+        for (&f, &a) in self.freqs.iter().zip(&self.amps) {
+            if a != 0.0 {
+                s += a * sin_pi(rem2(DoubleDouble::prod(2.0 * f, x)));
+            }
+        }
+        (0.5 * (1.0 + s)).clamp(0.0, 1.0)
+    }
+}
+
+/// A linear chirp f(x) = ½(1 + sin(2π(f₀x + (f₁ − f₀)x²/2))): instantaneous frequency
+/// f₀ + (f₁ − f₀)x cycles per unit, sweeping from f₀ at x = 0 to f₁ at x = 1.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct Chirp {
+    /// Start frequency f₀ (cycles per unit) at x = 0, in [0, 10⁶].
+    pub f0: f64,
+    /// End frequency f₁ (cycles per unit) at x = 1, in [0, 10⁶].
+    pub f1: f64,
+}
+
+impl Default for Chirp {
+    fn default() -> Self {
+        Chirp { f0: 1.0, f1: 64.0 }
+    }
+}
+
+impl Chirp {
+    /// Name in scene files.
+    pub const NAME: &'static str = "chirp";
+
+    /// Checks every parameter against its range.
+    pub fn validate(&self) -> Result<(), SignalError> {
+        check_range(Self::NAME, "f0", self.f0, 0.0, MAX_FREQUENCY_1D)?;
+        check_range(Self::NAME, "f1", self.f1, 0.0, MAX_FREQUENCY_1D)?;
+        Ok(())
+    }
+
+    /// Instantaneous frequency f₀ + (f₁ − f₀)x (cycles per unit).
+    pub fn frequency_at(&self, x: f64) -> f64 {
+        self.f0 + (self.f1 - self.f0) * x
+    }
+
+    /// f(x) ∈ [0, 1]; phase/π = 2f₀x + (f₁ − f₀)x², in double-double, reduced exactly.
+    #[inline]
+    pub fn eval1(&self, x: f64) -> f64 {
+        let lin = DoubleDouble::prod(2.0 * self.f0, x);
+        let quad = DoubleDouble::diff(self.f1, self.f0).mul_f64(x).mul_f64(x);
+        (0.5 * (1.0 + sin_pi(rem2(lin.add(quad))))).clamp(0.0, 1.0)
+    }
+}
+
+/// A square wave: f(x) = 1 where frac(f·x) < ½, else 0 (high on the first half period).
+///
+/// Its Fourier series has odd harmonics (2k+1)f with amplitudes 2/(π(2k+1)): never band-limited.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct Square {
+    /// Frequency f (periods per unit), in (0, 10⁶].
+    pub frequency: f64,
+}
+
+impl Default for Square {
+    fn default() -> Self {
+        Square { frequency: 4.0 }
+    }
+}
+
+impl Square {
+    /// Name in scene files.
+    pub const NAME: &'static str = "square";
+
+    /// Checks every parameter against its range.
+    pub fn validate(&self) -> Result<(), SignalError> {
+        if !(self.frequency.is_finite()
+            && self.frequency > 0.0
+            && self.frequency <= MAX_FREQUENCY_1D)
+        {
+            return Err(SignalError::InvalidParam {
+                signal: Self::NAME,
+                field: "frequency",
+                value: self.frequency,
+                allowed: format!("a finite number in (0, {MAX_FREQUENCY_1D}]"),
+            });
+        }
+        Ok(())
+    }
+
+    /// frac(f·x) ∈ [0, 1), with f·x formed exactly.
+    #[inline]
+    pub fn phase(&self, x: f64) -> f64 {
+        let t = DoubleDouble::prod(self.frequency, x);
+        let mut r = (t.hi % 1.0) + (t.lo % 1.0);
+        r %= 1.0;
+        if r < 0.0 {
+            r += 1.0;
+        }
+        if r >= 1.0 {
+            r -= 1.0;
+        }
+        r
+    }
+
+    /// f(x) ∈ {0, 1}.
+    #[inline]
+    pub fn eval1(&self, x: f64) -> f64 {
+        if self.phase(x) < 0.5 {
+            1.0
+        } else {
+            0.0
+        }
+    }
+}
+
+/// The constant field f(p) = value: reconstruction must return it exactly.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct Constant {
+    /// The value, in [0, 1].
+    pub value: f64,
+}
+
+impl Default for Constant {
+    fn default() -> Self {
+        Constant { value: 0.5 }
+    }
+}
+
+impl Constant {
+    /// Name in scene files.
+    pub const NAME: &'static str = "constant";
+
+    /// Checks every parameter against its range.
+    pub fn validate(&self) -> Result<(), SignalError> {
+        check_range(Self::NAME, "value", self.value, 0.0, 1.0)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn sum_of_sines_matches_naive_formula() {
+        let s = SumOfSines::default();
+        for i in 0..1000 {
+            let x = i as f64 / 1000.0;
+            let naive = 0.5
+                * (1.0
+                    + s.freqs
+                        .iter()
+                        .zip(&s.amps)
+                        .map(|(f, a)| a * (2.0 * std::f64::consts::PI * f * x).sin())
+                        .sum::<f64>());
+            assert!((s.eval1(x) - naive).abs() < 1e-13, "x = {x}");
+        }
+    }
+
+    #[test]
+    fn chirp_matches_naive_formula_at_low_frequency() {
+        let c = Chirp { f0: 3.0, f1: 40.0 };
+        for i in 0..1000 {
+            let x = i as f64 / 1000.0;
+            let ph = 2.0 * std::f64::consts::PI * (c.f0 * x + (c.f1 - c.f0) * x * x / 2.0);
+            let naive = 0.5 * (1.0 + ph.sin());
+            assert!((c.eval1(x) - naive).abs() < 1e-13, "x = {x}");
+        }
+    }
+
+    #[test]
+    fn square_wave_levels_and_transitions() {
+        let s = Square { frequency: 4.0 };
+        assert_eq!(s.eval1(0.0), 1.0);
+        assert_eq!(s.eval1(0.1), 1.0); // phase 0.4
+        assert_eq!(s.eval1(0.125), 0.0); // phase exactly ½
+        assert_eq!(s.eval1(0.2), 0.0); // phase 0.8
+        assert_eq!(s.eval1(0.25), 1.0); // next period
+    }
+
+    #[test]
+    fn sum_of_sines_rejects_amplitude_sum_above_one() {
+        let s = SumOfSines {
+            freqs: [1.0, 2.0, 0.0, 0.0],
+            amps: [0.6, -0.5, 0.0, 0.0],
+        };
+        let e = s.validate().unwrap_err();
+        assert!(e.to_string().contains("amps"), "{e}");
+    }
+}
