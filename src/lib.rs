@@ -46,3 +46,7 @@
 //! [`core::cancel::Cancel`] token and stops promptly when it is cancelled.
 
 pub mod core;
+pub mod engine;
+pub mod export;
+pub mod scene;
+pub mod ui;

@@ -9,6 +9,9 @@ use std::process::ExitCode;
 #[derive(Parser, Debug)]
 #[command(name = "samplescope", version, about, long_about = None)]
 struct Cli {
+    /// Scene file (RON) to open in the GUI (default: the built-in default scene).
+    #[arg(long, global = false)]
+    scene: Option<std::path::PathBuf>,
     #[command(subcommand)]
     command: Option<Command>,
 }
@@ -19,6 +22,10 @@ enum Command {
     Points(cli::points::PointsArgs),
     /// Quality metrics and frequency response of a reconstruction filter.
     Filter(cli::filter::FilterArgs),
+    /// Statistics, discrepancies, t-value and spectrum of a pattern or a point file.
+    Analyze(cli::analyze::AnalyzeArgs),
+    /// Sample a test signal with a pattern, reconstruct it, and report RMSE, PSNR and time.
+    Recon(cli::recon::ReconArgs),
 }
 
 fn main() -> ExitCode {
@@ -33,9 +40,9 @@ fn main() -> ExitCode {
     let result = match cli.command {
         Some(Command::Points(args)) => cli::points::run(&args),
         Some(Command::Filter(args)) => cli::filter::run(&args),
-        None => Err(cli::CliError::Usage(
-            "the GUI is not built yet; use a subcommand (see --help)".into(),
-        )),
+        Some(Command::Analyze(args)) => cli::analyze::run(&args),
+        Some(Command::Recon(args)) => cli::recon::run(&args),
+        None => samplescope::ui::run_gui(cli.scene).map_err(cli::CliError::Gui),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

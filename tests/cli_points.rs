@@ -14,7 +14,11 @@ fn samplescope(args: &[&str]) -> std::process::Output {
 #[test]
 fn points_writes_csv_with_header_that_round_trips() {
     let out = samplescope(&["points", "halton", "-n", "16"]);
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     let text = String::from_utf8(out.stdout).unwrap();
     let mut lines = text.lines();
     assert_eq!(lines.next(), Some("x,y"));
@@ -24,7 +28,10 @@ fn points_writes_csv_with_header_that_round_trips() {
             (x.parse().unwrap(), y.parse().unwrap())
         })
         .collect();
-    let expected = Pattern::from_name("halton").unwrap().generate(16, 0).unwrap();
+    let expected = Pattern::from_name("halton")
+        .unwrap()
+        .generate(16, 0)
+        .unwrap();
     assert_eq!(parsed.len(), 16);
     for (p, e) in parsed.iter().zip(&expected) {
         // Round-trip precision: the printed decimal parses back to the same bits.
@@ -52,12 +59,37 @@ fn bad_input_exits_with_status_2_and_one_line_naming_the_field() {
         (&["points", "nosuch", "-n", "4"], "unknown pattern 'nosuch'"),
         (&["points", "halton", "-n", "0"], "n = 0"),
         (&["points", "halton", "-n", "-3"], "-n"),
-        (&["points", "halton", "-n", "99999999999"], "n = 99999999999"),
-        (&["points", "halton", "-n", "4", "--set", "base_x=4"], "halton.base_x = 4"),
-        (&["points", "halton", "-n", "4", "--set", "nokey=1"], "unknown parameter 'nokey'"),
-        (&["points", "jitter", "-n", "4", "--set", "amount=NaN"], "jitter.amount = NaN"),
-        (&["points", "jitter", "-n", "4", "--set", "amount"], "expected key=value"),
-        (&["points", "poisson-dart", "-n", "1000", "--set", "radius=0.5"], "poisson-dart.radius = 0.5"),
+        (
+            &["points", "halton", "-n", "99999999999"],
+            "n = 99999999999",
+        ),
+        (
+            &["points", "halton", "-n", "4", "--set", "base_x=4"],
+            "halton.base_x = 4",
+        ),
+        (
+            &["points", "halton", "-n", "4", "--set", "nokey=1"],
+            "unknown parameter 'nokey'",
+        ),
+        (
+            &["points", "jitter", "-n", "4", "--set", "amount=NaN"],
+            "jitter.amount = NaN",
+        ),
+        (
+            &["points", "jitter", "-n", "4", "--set", "amount"],
+            "expected key=value",
+        ),
+        (
+            &[
+                "points",
+                "poisson-dart",
+                "-n",
+                "1000",
+                "--set",
+                "radius=0.5",
+            ],
+            "poisson-dart.radius = 0.5",
+        ),
     ];
     for (args, needle) in cases {
         let out = samplescope(args);
@@ -74,9 +106,19 @@ fn points_writes_a_file_and_sphere_mode_gives_unit_vectors() {
     std::fs::create_dir_all(&dir).unwrap();
     let file = dir.join("p.csv");
     let out = samplescope(&[
-        "points", "hammersley", "-n", "64", "--sphere", "--out", file.to_str().unwrap(),
+        "points",
+        "hammersley",
+        "-n",
+        "64",
+        "--sphere",
+        "--out",
+        file.to_str().unwrap(),
     ]);
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     let text = std::fs::read_to_string(&file).unwrap();
     let mut lines = text.lines();
     assert_eq!(lines.next(), Some("x,y,z"));
@@ -97,8 +139,27 @@ fn points_writes_a_file_and_sphere_mode_gives_unit_vectors() {
 fn random_parameters_never_panic() {
     let mut rng = Rng::new(2024);
     let texts = [
-        "0", "1", "2", "3", "4", "7", "-1", "0.5", "1.5", "NaN", "inf", "-0", "1e300", "abc", "",
-        "4294967296", "7919", "7920", "none", "owen", "random-digit",
+        "0",
+        "1",
+        "2",
+        "3",
+        "4",
+        "7",
+        "-1",
+        "0.5",
+        "1.5",
+        "NaN",
+        "inf",
+        "-0",
+        "1e300",
+        "abc",
+        "",
+        "4294967296",
+        "7919",
+        "7920",
+        "none",
+        "owen",
+        "random-digit",
     ];
     for case in 0..3000 {
         let all = Pattern::all();
@@ -106,7 +167,9 @@ fn random_parameters_never_panic() {
         let specs = p.specs();
         for _ in 0..rng.below(3) {
             let key = if !specs.is_empty() && rng.below(8) != 0 {
-                specs[rng.below(specs.len() as u64) as usize].name.to_string()
+                specs[rng.below(specs.len() as u64) as usize]
+                    .name
+                    .to_string()
             } else {
                 "bogus".to_string()
             };
@@ -136,7 +199,10 @@ fn random_parameters_never_panic() {
             Ok(Err(e)) => {
                 assert!(!e.to_string().is_empty());
                 if n == 0 || n > 1 << 24 {
-                    assert!(matches!(e, PatternError::InvalidN { .. }), "case {case}: {e}");
+                    assert!(
+                        matches!(e, PatternError::InvalidN { .. }),
+                        "case {case}: {e}"
+                    );
                 }
             }
         }

@@ -1,8 +1,10 @@
 //! Subcommands of the `samplescope` binary. Each returns a [`CliError`]: bad input exits with
 //! status 2 and one line naming the field and what is allowed; I/O failures exit with 1.
 
+pub mod analyze;
 pub mod filter;
 pub mod points;
+pub mod recon;
 
 use samplescope::core::filter::FilterError;
 use samplescope::core::pattern::{Pattern, PatternError};
@@ -19,6 +21,9 @@ pub enum CliError {
     /// A filter could not be built or evaluated from the given parameters (exit status 2).
     #[error("{0}")]
     Filter(#[from] FilterError),
+    /// The window could not be opened (exit status 1).
+    #[error("cannot open the window: {0}")]
+    Gui(String),
     /// Reading or writing a file failed (exit status 1).
     #[error("{path}: {source}")]
     Io {
@@ -31,7 +36,7 @@ impl CliError {
     /// The process exit status for this error.
     pub fn exit_code(&self) -> u8 {
         match self {
-            CliError::Io { .. } => 1,
+            CliError::Io { .. } | CliError::Gui(_) => 1,
             _ => 2,
         }
     }

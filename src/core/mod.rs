@@ -4,6 +4,7 @@ pub mod cancel;
 pub mod filter;
 pub mod metrics;
 pub mod pattern;
+pub mod pointset;
 pub mod recon;
 pub mod rng;
 pub mod signal;

@@ -80,13 +80,11 @@ impl<'k, K: ReconKernel + ?Sized> Accum<'k, K> {
         if self.separable {
             let kernel = self.kernel;
             self.hx.clear();
-            self.hx.extend(
-                (i0..=i1).map(|i| kernel.factor(offset(i, x.x, s)).unwrap_or(0.0)),
-            );
+            self.hx
+                .extend((i0..=i1).map(|i| kernel.factor(offset(i, x.x, s)).unwrap_or(0.0)));
             self.hy.clear();
-            self.hy.extend(
-                (j0..=j1).map(|j| kernel.factor(offset(j, x.y, s)).unwrap_or(0.0)),
-            );
+            self.hy
+                .extend((j0..=j1).map(|j| kernel.factor(offset(j, x.y, s)).unwrap_or(0.0)));
             for (j, &wy) in (j0..=j1).zip(&self.hy) {
                 if wy == 0.0 {
                     continue;

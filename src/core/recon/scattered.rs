@@ -16,8 +16,8 @@
 
 use super::accum::{finish_sums, offset, splat_work, Accum, PAD};
 use super::{
-    check_cancel, check_size, check_support, check_work, ReconError, ReconKernel,
-    Reconstruction, MAX_SAMPLES, MAX_W,
+    check_cancel, check_size, check_support, check_work, ReconError, ReconKernel, Reconstruction,
+    MAX_SAMPLES, MAX_W,
 };
 use crate::core::cancel::Cancel;
 use crate::core::signal::Signal;
@@ -115,7 +115,10 @@ pub fn reconstruct_scattered<K: ReconKernel + ?Sized>(
     let start = Instant::now();
     let (support, scale_px) = check_inputs(points, values, w, kernel)?;
     let mut acc = Accum::new(w, kernel, support, scale_px);
-    check_work("scattered splatting", splat_work(points.len(), acc.r_px(), w))?;
+    check_work(
+        "scattered splatting",
+        splat_work(points.len(), acc.r_px(), w),
+    )?;
     let wf = w as f64;
     for (k, (p, &v)) in points.iter().zip(values).enumerate() {
         if k % 4096 == 0 {
@@ -216,7 +219,8 @@ pub fn reconstruct_scattered_gather<K: ReconKernel + ?Sized>(
                     for bx in cx.saturating_sub(1)..=(cx + 1).min(c - 1) {
                         for &k in buckets.cell(bx, by) {
                             let x = pos[k as usize];
-                            let d = DVec2::new(offset(i, x.x, inv_scale), offset(j, x.y, inv_scale));
+                            let d =
+                                DVec2::new(offset(i, x.x, inv_scale), offset(j, x.y, inv_scale));
                             let wt = kernel.weight(d);
                             if wt != 0.0 {
                                 num += wt * values[k as usize];

@@ -233,11 +233,7 @@ pub fn cos_pi(x: f64) -> f64 {
     // cos is even: fold to r ∈ [0, 1].
     let r = rem2_f64(x).abs();
     // cos(π r) = −cos(π (1 − r)).
-    let (r, negative) = if r > 0.5 {
-        (1.0 - r, true)
-    } else {
-        (r, false)
-    };
+    let (r, negative) = if r > 0.5 { (1.0 - r, true) } else { (r, false) };
     let v = if r <= 0.25 {
         cos_pi_kernel(r)
     } else {
@@ -365,10 +361,7 @@ mod tests {
             lo: 0.5,
         };
         assert_eq!(rem2(x), 0.5);
-        let y = DoubleDouble {
-            hi: 3.0,
-            lo: -0.25,
-        };
+        let y = DoubleDouble { hi: 3.0, lo: -0.25 };
         assert_eq!(rem2(y), 0.75);
     }
 

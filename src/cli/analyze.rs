@@ -1,0 +1,261 @@
+//! `samplescope analyze`: statistics, discrepancies, t-value and spectrum of a point set, with
+//! the time and accuracy of every stage.
+
+use super::{parse_n, pattern_from_args, CliError};
+use samplescope::core::cancel::Cancel;
+use samplescope::core::metrics;
+use samplescope::core::pointset::{parse_points, OutOfRange};
+use samplescope::core::rng::derive_seed;
+use samplescope::core::spectrum::{
+    average_periodogram, radial_average, DcMode, Method, SpectrumRequest,
+};
+use samplescope::export::{png_bytes, write_file, PngColormap};
+use serde_json::json;
+use std::fmt::Write as _;
+use std::time::Instant;
+
+/// Arguments of `samplescope analyze`.
+#[derive(clap::Args, Debug)]
+pub struct AnalyzeArgs {
+    /// Pattern name (see `points --list`); or give --points.
+    #[arg(required_unless_present = "points", conflicts_with = "points")]
+    pub pattern: Option<String>,
+    /// Number of points (with a pattern).
+    #[arg(short = 'n', value_parser = parse_n, required_unless_present = "points")]
+    pub n: Option<usize>,
+    /// Seed (with a pattern).
+    #[arg(long, default_value_t = 0)]
+    pub seed: u64,
+    /// Pattern parameter `key=value`; repeatable.
+    #[arg(long = "set", value_name = "KEY=VALUE")]
+    pub set: Vec<String>,
+    /// Read the points from a file (CSV `x,y` as written by `points`, or PSA-style text).
+    #[arg(long)]
+    pub points: Option<String>,
+    /// Map the points' bounding box onto [0,1)² instead of rejecting points outside.
+    #[arg(long)]
+    pub normalize: bool,
+    /// Spectrum size M (M×M integer frequencies).
+    #[arg(long, default_value_t = 256)]
+    pub size: usize,
+    /// Realizations K averaged (with a pattern; seeds derived from --seed).
+    #[arg(long, default_value_t = 1)]
+    pub realizations: usize,
+    /// NUFFT tolerance (relative ℓ2 error of P), 1e-12..=1e-2.
+    #[arg(long, default_value_t = 1e-6)]
+    pub tolerance: f64,
+    /// Use the exact DFT instead of the NUFFT.
+    #[arg(long)]
+    pub exact: bool,
+    /// Write the centred periodogram (log10 scale, viridis) as PNG.
+    #[arg(long, value_name = "OUT.png")]
+    pub spectrum: Option<String>,
+    /// Write the averaged periodogram as CSV `kx,ky,power`.
+    #[arg(long = "spectrum-data", value_name = "OUT.csv")]
+    pub spectrum_data: Option<String>,
+    /// Write the radially averaged power spectrum as CSV `radius,power`.
+    #[arg(long, value_name = "OUT.csv")]
+    pub raps: Option<String>,
+    /// Print one JSON object instead of text.
+    #[arg(long)]
+    pub json: bool,
+}
+
+fn io_err(path: &str) -> impl FnOnce(std::io::Error) -> CliError + '_ {
+    move |source| CliError::Io {
+        path: path.to_string(),
+        source,
+    }
+}
+
+/// Runs `samplescope analyze`.
+pub fn run(args: &AnalyzeArgs) -> Result<(), CliError> {
+    let cancel = Cancel::never();
+    let mut timings: Vec<(String, f64)> = Vec::new();
+    let t0 = Instant::now();
+    let (points, generator) = if let Some(path) = &args.points {
+        if args.realizations != 1 {
+            return Err(CliError::Usage(format!(
+                "--realizations = {}: must be 1 with --points (a file is one realization)",
+                args.realizations
+            )));
+        }
+        let text = std::fs::read_to_string(path).map_err(io_err(path))?;
+        let mode = if args.normalize {
+            OutOfRange::NormalizeToBoundingBox
+        } else {
+            OutOfRange::Reject
+        };
+        let pts = parse_points(&text, mode).map_err(|e| CliError::Usage(format!("{path}: {e}")))?;
+        (pts, None)
+    } else {
+        let name = args.pattern.as_deref().unwrap_or_default();
+        let n = args.n.unwrap_or(0);
+        let pattern = pattern_from_args(name, &args.set)?;
+        let g = pattern.generate_with(n, args.seed, &cancel)?;
+        if let Some(note) = &g.note {
+            eprintln!("note: {note}");
+        }
+        (g.points, Some((pattern, n)))
+    };
+    timings.push(("points".into(), t0.elapsed().as_secs_f64() * 1e3));
+
+    let stats =
+        metrics::statistics(&points, &cancel).map_err(|e| CliError::Usage(e.to_string()))?;
+    for (name, d) in &stats.timings {
+        timings.push((name.to_string(), d.as_secs_f64() * 1e3));
+    }
+
+    let req = SpectrumRequest {
+        size: args.size,
+        method: if args.exact {
+            Method::Exact
+        } else {
+            Method::Nufft {
+                tolerance: args.tolerance,
+            }
+        },
+        realizations: args.realizations,
+        dc: DcMode::Show,
+        ..SpectrumRequest::default()
+    };
+    let first = derive_seed(args.seed, 0);
+    let seed = args.seed;
+    let pts = points.clone();
+    let (spec, report) = average_periodogram(
+        &req,
+        seed,
+        move |sd| match &generator {
+            // Realization 0 is the analysed point set; others are fresh seeds.
+            Some((pattern, n)) if sd != first => pattern.generate(*n, sd),
+            _ => Ok(pts.clone()),
+        },
+        &cancel,
+    )
+    .map_err(|e| CliError::Usage(e.to_string()))?;
+    for (name, d) in &report.stages {
+        timings.push((format!("spectrum {name}"), d.as_secs_f64() * 1e3));
+    }
+    let bins = radial_average(&spec);
+
+    if let Some(path) = &args.spectrum {
+        let m = spec.m;
+        let log = spec.to_log_image(true);
+        // Row 0 of the PNG is the highest ky.
+        let mut values = Vec::with_capacity(m * m);
+        for row in (0..m).rev() {
+            values.extend(log[row * m..(row + 1) * m].iter().map(|&v| v as f64));
+        }
+        let mut sorted: Vec<f64> = values.clone();
+        sorted.sort_by(|a, b| a.total_cmp(b));
+        let lo = sorted[(sorted.len() - 1) * 2 / 100];
+        let hi = sorted[(sorted.len() - 1) * 998 / 1000].max(lo + 1e-3);
+        let text = [
+            ("Software", "samplescope".to_string()),
+            (
+                "Description",
+                format!("centred periodogram, log10 P in [{lo:.3}, {hi:.3}], DC masked"),
+            ),
+            (
+                "Parameters",
+                format!(
+                    "n={} size={} realizations={} method={:?} seed={}",
+                    points.len(),
+                    m,
+                    args.realizations,
+                    req.method,
+                    args.seed
+                ),
+            ),
+        ];
+        let bytes = png_bytes(&values, m, m, lo, hi, PngColormap::Viridis, &text)
+            .map_err(|e| CliError::Usage(e.to_string()))?;
+        write_file(path, &bytes).map_err(|e| CliError::Usage(e.to_string()))?;
+    }
+    if let Some(path) = &args.spectrum_data {
+        let mut s = String::from("kx,ky,power\n");
+        for (kx, ky, p) in spec.to_csv_rows() {
+            let _ = writeln!(s, "{kx},{ky},{p:?}");
+        }
+        std::fs::write(path, s).map_err(io_err(path))?;
+    }
+    if let Some(path) = &args.raps {
+        let mut s = String::from("radius,power\n");
+        for b in &bins {
+            let _ = writeln!(s, "{:?},{:?}", b.radius, b.mean_power);
+        }
+        std::fs::write(path, s).map_err(io_err(path))?;
+    }
+
+    let md = stats.min_distance.as_ref();
+    let error = report.error.map(|e| e.relative_l2);
+    if args.json {
+        let timings_obj: serde_json::Map<String, serde_json::Value> =
+            timings.iter().map(|(k, v)| (k.clone(), json!(v))).collect();
+        let out = json!({
+            "n": points.len(),
+            "min_distance": md.map(|m| m.min_distance),
+            "min_distance_normalized": md.map(|m| m.normalized_min_distance),
+            "mean_nn_distance": md.map(|m| m.mean_nn_distance),
+            "star_discrepancy": stats.star.as_ref().map(|s| s.value),
+            "star_discrepancy_box": stats.star.as_ref().map(|s| [s.worst_box.0, s.worst_box.1]),
+            "l2_star_discrepancy": stats.l2_star,
+            "t_value": stats.t_value.as_ref().map(|t| t.t),
+            "spectrum": {
+                "size": spec.m,
+                "realizations": spec.realizations,
+                "method": if args.exact { "exact" } else { "nufft" },
+                "tolerance": report.tolerance,
+                "measured_relative_l2_error": error,
+            },
+            "timings_ms": timings_obj,
+        });
+        println!("{out}");
+    } else {
+        println!("n                      {}", points.len());
+        if let Some(m) = md {
+            println!(
+                "min distance           {:.6}  ({:.4} × hexagonal packing distance)",
+                m.min_distance, m.normalized_min_distance
+            );
+            println!("mean NN distance       {:.6}", m.mean_nn_distance);
+        }
+        match &stats.star {
+            Some(s) => println!(
+                "star discrepancy D*    {:.6e}  (worst anchored box [0,{:.6})×[0,{:.6}))",
+                s.value, s.worst_box.0, s.worst_box.1
+            ),
+            None => println!(
+                "star discrepancy D*    skipped: {}",
+                stats.star_skipped.clone().unwrap_or_default()
+            ),
+        }
+        println!("L2-star discrepancy    {:.6e}", stats.l2_star);
+        match &stats.t_value {
+            Some(t) => println!(
+                "t-value (base 2)       {}  ((t, m, 2)-net with m = {})",
+                t.t, t.m
+            ),
+            None => println!(
+                "t-value (base 2)       undefined: {}",
+                stats.t_value_skipped.clone().unwrap_or_default()
+            ),
+        }
+        println!(
+            "spectrum               {}² · K = {} · {}",
+            spec.m,
+            spec.realizations,
+            match (report.tolerance, error) {
+                (Some(t), Some(e)) =>
+                    format!("NUFFT, asked {t:.0e}, measured rel. ℓ2 error {e:.2e}"),
+                (Some(t), None) => format!("NUFFT, asked {t:.0e} (exact check too expensive)"),
+                (None, _) => "exact DFT".to_string(),
+            }
+        );
+        println!("timings (ms)");
+        for (k, v) in &timings {
+            println!("  {k:<22} {v:.3}");
+        }
+    }
+    Ok(())
+}

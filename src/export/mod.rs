@@ -1,0 +1,135 @@
+//! Figure and data writers: PNG images through a perceptual colour map, CSV.
+
+use std::io::Write;
+
+/// Why a figure could not be written.
+#[derive(Debug, thiserror::Error)]
+pub enum ExportError {
+    #[error("{path}: {source}")]
+    Io {
+        path: String,
+        source: std::io::Error,
+    },
+    #[error("{path}: PNG encoding failed: {message}")]
+    Png { path: String, message: String },
+    #[error("image size {width}×{height} does not match {len} values")]
+    Size {
+        width: usize,
+        height: usize,
+        len: usize,
+    },
+}
+
+/// Colour map of a PNG.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum PngColormap {
+    /// matplotlib's viridis (perceptually uniform), from the `colorous` crate.
+    Viridis,
+    /// Grey ramp.
+    Greys,
+}
+
+/// Encodes `values` (row-major, row 0 at the top) as an 8-bit RGB PNG, mapping
+/// [lo, hi] → [0, 1] → colour map; values outside are clamped, NaN maps to 0.
+/// `text` entries become PNG tEXt metadata (parameters of the figure).
+pub fn png_bytes(
+    values: &[f64],
+    width: usize,
+    height: usize,
+    lo: f64,
+    hi: f64,
+    colormap: PngColormap,
+    text: &[(&str, String)],
+) -> Result<Vec<u8>, ExportError> {
+    if values.len() != width * height || width == 0 || height == 0 {
+        return Err(ExportError::Size {
+            width,
+            height,
+            len: values.len(),
+        });
+    }
+    let span = if hi > lo { hi - lo } else { 1.0 };
+    let mut rgb = Vec::with_capacity(values.len() * 3);
+    for &v in values {
+        let t = if v.is_nan() {
+            0.0
+        } else {
+            ((v - lo) / span).clamp(0.0, 1.0)
+        };
+        let c = match colormap {
+            PngColormap::Viridis => colorous::VIRIDIS.eval_continuous(t),
+            PngColormap::Greys => {
+                let g = (t * 255.0).round() as u8;
+                colorous::Color { r: g, g, b: g }
+            }
+        };
+        rgb.extend_from_slice(&[c.r, c.g, c.b]);
+    }
+    let mut out = Vec::new();
+    {
+        let mut enc = png::Encoder::new(&mut out, width as u32, height as u32);
+        enc.set_color(png::ColorType::Rgb);
+        enc.set_depth(png::BitDepth::Eight);
+        for (k, v) in text {
+            enc.add_text_chunk(k.to_string(), v.clone())
+                .map_err(|e| ExportError::Png {
+                    path: String::new(),
+                    message: e.to_string(),
+                })?;
+        }
+        let mut w = enc.write_header().map_err(|e| ExportError::Png {
+            path: String::new(),
+            message: e.to_string(),
+        })?;
+        w.write_image_data(&rgb).map_err(|e| ExportError::Png {
+            path: String::new(),
+            message: e.to_string(),
+        })?;
+    }
+    Ok(out)
+}
+
+/// Writes bytes to `path`.
+pub fn write_file(path: &str, bytes: &[u8]) -> Result<(), ExportError> {
+    let mut f = std::fs::File::create(path).map_err(|source| ExportError::Io {
+        path: path.to_string(),
+        source,
+    })?;
+    f.write_all(bytes).map_err(|source| ExportError::Io {
+        path: path.to_string(),
+        source,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn png_round_trips_size_metadata_and_end_colours() {
+        let values = vec![0.0, 1.0, 0.5, f64::NAN];
+        let bytes = png_bytes(
+            &values,
+            2,
+            2,
+            0.0,
+            1.0,
+            PngColormap::Greys,
+            &[("pattern", "jitter".into())],
+        )
+        .unwrap();
+        let dec = png::Decoder::new(std::io::Cursor::new(bytes));
+        let mut reader = dec.read_info().unwrap();
+        let mut buf = vec![0; reader.output_buffer_size()];
+        let info = reader.next_frame(&mut buf).unwrap();
+        assert_eq!((info.width, info.height), (2, 2));
+        assert_eq!(&buf[..6], &[0, 0, 0, 255, 255, 255]);
+        assert_eq!(buf[6], 128);
+        assert_eq!(buf[9], 0);
+        let texts = &reader.info().uncompressed_latin1_text;
+        assert!(texts
+            .iter()
+            .any(|t| t.keyword == "pattern" && t.text == "jitter"));
+        assert!(png_bytes(&values, 3, 2, 0.0, 1.0, PngColormap::Greys, &[]).is_err());
+    }
+}

@@ -1,0 +1,597 @@
+//! What each node computes, as plain data for the panels.
+
+use super::graph::{key_of, NodeKey, NodeKind, NodeResult};
+use super::{ReconMode, Scene};
+use crate::core::cancel::Cancel;
+use glam::DVec2;
+use std::collections::HashMap;
+use std::sync::atomic::{AtomicU64, Ordering};
+use std::sync::Arc;
+use std::time::Duration;
+
+static VERSION: AtomicU64 = AtomicU64::new(1);
+
+/// A fresh version number for display uploads.
+pub fn next_version() -> u64 {
+    VERSION.fetch_add(1, Ordering::Relaxed)
+}
+
+/// A float image for display, row 0 at the top.
+#[derive(Debug, Clone)]
+pub struct ImageData {
+    pub width: usize,
+    pub height: usize,
+    pub values: Arc<Vec<f32>>,
+    /// Changes whenever the values change (GPU uploads happen only then).
+    pub version: u64,
+}
+
+impl ImageData {
+    /// An image from row-major values (row 0 at the top).
+    pub fn new(width: usize, height: usize, values: Vec<f32>) -> Self {
+        ImageData {
+            width,
+            height,
+            values: Arc::new(values),
+            version: next_version(),
+        }
+    }
+
+    /// From an image stored with row 0 at the bottom (y up), flipping rows.
+    pub fn from_y_up(width: usize, height: usize, values: impl Fn(usize) -> f32) -> Self {
+        let mut v = Vec::with_capacity(width * height);
+        for row in (0..height).rev() {
+            for col in 0..width {
+                v.push(values(row * width + col));
+            }
+        }
+        ImageData::new(width, height, v)
+    }
+}
+
+/// The points of a column.
+#[derive(Debug, Clone)]
+pub struct PointsData {
+    pub points: Vec<DVec2>,
+    /// The same points as f32, for the GPU.
+    pub gpu: Arc<Vec<[f32; 2]>>,
+    pub version: u64,
+    /// Why fewer points than asked were placed, if so.
+    pub note: Option<String>,
+}
+
+/// Point-set statistics for the overlays.
+#[derive(Debug, Clone)]
+pub struct StatsData {
+    pub min_distance: f64,
+    pub normalized_min_distance: f64,
+    pub mean_nn: f64,
+    /// Star discrepancy and the worst anchored box (a, b).
+    pub star: Option<(f64, (f64, f64))>,
+    pub l2_star: f64,
+    pub t_value: Option<u32>,
+}
+
+/// A periodogram ready to display.
+#[derive(Debug, Clone)]
+pub struct SpectrumData {
+    /// log10 P, row 0 = highest ky.
+    pub image: ImageData,
+    /// A display range from the data (2nd and 99.8th percentile of log10 P).
+    pub auto_range: (f32, f32),
+    /// Radially averaged power spectrum: (|k|, P).
+    pub raps: Vec<[f64; 2]>,
+    /// Anisotropy in dB: (|k|, A).
+    pub anisotropy: Vec<[f64; 2]>,
+    /// Wall time per stage (ms).
+    pub stages: Vec<(String, f64)>,
+}
+
+/// A reconstructed image.
+#[derive(Debug, Clone)]
+pub struct ReconData {
+    pub image: ImageData,
+    /// Pixels with zero total filter weight (shown at the fill value).
+    pub zero_weight: usize,
+}
+
+/// A reference image.
+#[derive(Debug, Clone)]
+pub struct ReferenceData {
+    pub image: ImageData,
+    pub error_estimate: Option<f64>,
+    pub method: String,
+}
+
+/// Error of a reconstruction against its reference.
+#[derive(Debug, Clone)]
+pub struct ErrorData {
+    pub rmse: f64,
+    pub psnr: f64,
+    /// |reconstruction − reference|.
+    pub image: ImageData,
+    pub max_error: f32,
+}
+
+/// A filter's curves, 2D response and quality metrics.
+#[derive(Debug, Clone)]
+pub struct ResponseData {
+    pub kernel: Vec<[f64; 2]>,
+    /// (ω, |H(ω)|/|H(0)|) for ω ∈ [0, omega_max].
+    pub magnitude: Vec<[f64; 2]>,
+    pub omega_max: f64,
+    /// |H(ωx, ωy)| over [−omega_max, omega_max]².
+    pub image: ImageData,
+    pub metrics: Vec<(&'static str, f64)>,
+}
+
+/// One point of a convergence curve.
+#[derive(Debug, Clone, Copy)]
+pub struct ConvergencePoint {
+    pub spp: usize,
+    pub rmse: f64,
+    pub millis: f64,
+}
+
+/// The value of a node.
+#[derive(Debug, Clone)]
+pub enum NodeValue {
+    Points(Arc<PointsData>),
+    Statistics(Arc<StatsData>),
+    Spectrum(Arc<SpectrumData>),
+    Samples(Arc<Vec<f64>>),
+    Reconstruction(Arc<ReconData>),
+    Reference(Arc<ReferenceData>),
+    Error(Arc<ErrorData>),
+    Response(Arc<ResponseData>),
+    Convergence(Arc<Vec<ConvergencePoint>>),
+}
+
+/// What a node computes.
+#[derive(Debug, Clone, Copy)]
+pub enum Job {
+    Points,
+    Statistics,
+    Spectrum,
+    Samples,
+    Reconstruction,
+    Reference,
+    Error,
+    Response,
+    Convergence,
+}
+
+type Output = Result<(NodeValue, Option<String>), String>;
+type Done = HashMap<NodeKind, Arc<NodeResult>>;
+
+/// The nodes column `c` needs, with their keys, in dependency order.
+pub fn column_nodes(scene: &Scene, c: usize) -> Vec<(NodeKey, Job)> {
+    let col = &scene.columns[c];
+    let mut out = Vec::new();
+    let panels = scene.panels;
+    let fx = scene.effects;
+    let recon_on = panels.zoneplate && fx.reconstruction;
+    let points = key_of(NodeKind::Points, &(&col.pattern, scene.n, col.seed), &[]);
+    let needs_points = panels.pattern || recon_on || (panels.pattern && fx.statistics);
+    if needs_points {
+        out.push((points, Job::Points));
+    }
+    if panels.pattern && fx.statistics {
+        out.push((
+            key_of(NodeKind::Statistics, &(), &[points]),
+            Job::Statistics,
+        ));
+    }
+    if panels.spectrum {
+        // The spectrum regenerates realizations r > 0 itself, so it depends on the pattern's
+        // parameters rather than on the points node.
+        out.push((
+            key_of(
+                NodeKind::Spectrum,
+                &(&col.pattern, scene.n, col.seed, &scene.spectrum),
+                &[],
+            ),
+            Job::Spectrum,
+        ));
+    }
+    if recon_on {
+        let (recon, samples) = match scene.recon.mode {
+            ReconMode::Scattered => {
+                let samples = key_of(NodeKind::Samples, &scene.signal, &[points]);
+                out.push((samples, Job::Samples));
+                (
+                    key_of(
+                        NodeKind::Reconstruction,
+                        &(&scene.filter, scene.recon.size),
+                        &[samples],
+                    ),
+                    Some(samples),
+                )
+            }
+            ReconMode::Supersample { spp } => (
+                key_of(
+                    NodeKind::Reconstruction,
+                    &(
+                        &col.pattern,
+                        col.seed,
+                        spp,
+                        &scene.signal,
+                        &scene.filter,
+                        scene.recon.size,
+                    ),
+                    &[],
+                ),
+                None,
+            ),
+        };
+        let _ = samples;
+        out.push((recon, Job::Reconstruction));
+        if fx.error {
+            let reference = key_of(NodeKind::Reference, &(&scene.signal, scene.recon.size), &[]);
+            out.push((reference, Job::Reference));
+            out.push((
+                key_of(NodeKind::Error, &(), &[recon, reference]),
+                Job::Error,
+            ));
+        }
+    }
+    if panels.filter {
+        out.push((
+            key_of(NodeKind::Response, &scene.filter, &[]),
+            Job::Response,
+        ));
+    }
+    if panels.cost && fx.convergence {
+        out.push((
+            key_of(
+                NodeKind::Convergence,
+                &(&col.pattern, col.seed, &scene.signal, &scene.filter),
+                &[],
+            ),
+            Job::Convergence,
+        ));
+    }
+    out
+}
+
+fn dep<'a>(done: &'a Done, kind: NodeKind) -> Result<&'a NodeValue, String> {
+    match done.get(&kind).map(|r| &r.value) {
+        Some(Ok(v)) => Ok(v),
+        Some(Err(e)) => Err(format!("{} failed: {e}", kind.name())),
+        None => Err(format!("{} missing", kind.name())),
+    }
+}
+
+fn points_of(done: &Done) -> Result<Arc<PointsData>, String> {
+    match dep(done, NodeKind::Points)? {
+        NodeValue::Points(p) => Ok(p.clone()),
+        _ => Err("points node has the wrong type".into()),
+    }
+}
+
+fn ms(d: Duration) -> f64 {
+    d.as_secs_f64() * 1e3
+}
+
+impl Job {
+    /// Computes the node for column `c` given the results of its dependencies.
+    pub fn run(self, scene: &Scene, c: usize, done: &Done, cancel: &Cancel) -> Output {
+        match self {
+            Job::Points => points(scene, c, cancel),
+            Job::Statistics => statistics(done, cancel),
+            Job::Spectrum => spectrum(scene, c, cancel),
+            Job::Samples => samples(scene, done),
+            Job::Reconstruction => reconstruction(scene, c, done, cancel),
+            Job::Reference => reference(scene, cancel),
+            Job::Error => error(done),
+            Job::Response => response(scene),
+            Job::Convergence => convergence(scene, c, cancel),
+        }
+    }
+}
+
+fn points(scene: &Scene, c: usize, cancel: &Cancel) -> Output {
+    let col = &scene.columns[c];
+    let g = col
+        .pattern
+        .generate_with(scene.n, col.seed, cancel)
+        .map_err(|e| e.to_string())?;
+    let gpu = g.points.iter().map(|p| [p.x as f32, p.y as f32]).collect();
+    Ok((
+        NodeValue::Points(Arc::new(PointsData {
+            points: g.points,
+            gpu: Arc::new(gpu),
+            version: next_version(),
+            note: g.note,
+        })),
+        None,
+    ))
+}
+
+fn statistics(done: &Done, cancel: &Cancel) -> Output {
+    let p = points_of(done)?;
+    let s = crate::core::metrics::statistics(&p.points, cancel).map_err(|e| e.to_string())?;
+    let md = s.min_distance.as_ref();
+    Ok((
+        NodeValue::Statistics(Arc::new(StatsData {
+            min_distance: md.map(|m| m.min_distance).unwrap_or(f64::NAN),
+            normalized_min_distance: md.map(|m| m.normalized_min_distance).unwrap_or(f64::NAN),
+            mean_nn: md.map(|m| m.mean_nn_distance).unwrap_or(f64::NAN),
+            star: s.star.as_ref().map(|st| (st.value, st.worst_box)),
+            l2_star: s.l2_star,
+            t_value: s.t_value.as_ref().map(|t| t.t),
+        })),
+        None,
+    ))
+}
+
+fn samples(scene: &Scene, done: &Done) -> Output {
+    let p = points_of(done)?;
+    let v = crate::core::recon::sample_signal(&scene.signal, &p.points, &Cancel::never())
+        .map_err(|e| e.to_string())?;
+    Ok((NodeValue::Samples(Arc::new(v)), None))
+}
+
+fn image_from_pixels(w: usize, pixels: &[f64]) -> ImageData {
+    // Reconstruction pixels are stored with row j at y = (j + ½)/W (y up): flip for display.
+    ImageData::from_y_up(w, w, |i| pixels[i] as f32)
+}
+
+fn reconstruction(scene: &Scene, c: usize, done: &Done, cancel: &Cancel) -> Output {
+    let w = scene.recon.size;
+    let r = match scene.recon.mode {
+        ReconMode::Scattered => {
+            let p = points_of(done)?;
+            let values = match dep(done, NodeKind::Samples)? {
+                NodeValue::Samples(v) => v.clone(),
+                _ => return Err("samples node has the wrong type".into()),
+            };
+            crate::core::recon::reconstruct_scattered(&p.points, &values, w, &scene.filter, cancel)
+                .map_err(|e| e.to_string())?
+        }
+        ReconMode::Supersample { spp } => {
+            let col = &scene.columns[c];
+            let provider = crate::core::recon::PatternProvider {
+                pattern: col.pattern,
+                seed: col.seed,
+            };
+            crate::core::recon::supersample(&scene.signal, w, spp, &provider, &scene.filter, cancel)
+                .map_err(|e| e.to_string())?
+        }
+    };
+    let accuracy = (r.zero_weight > 0).then(|| format!("{} zero-weight pixels", r.zero_weight));
+    Ok((
+        NodeValue::Reconstruction(Arc::new(ReconData {
+            image: image_from_pixels(w, &r.pixels),
+            zero_weight: r.zero_weight,
+        })),
+        accuracy,
+    ))
+}
+
+fn reference(scene: &Scene, cancel: &Cancel) -> Output {
+    let w = scene.recon.size;
+    let r = crate::core::recon::reference_image_with(
+        &scene.signal,
+        w,
+        &crate::core::recon::ReferenceOptions::default(),
+        cancel,
+    )
+    .map_err(|e| e.to_string())?;
+    let method = match r.method {
+        crate::core::recon::ReferenceMethod::ExactArea => "exact area coverage".to_string(),
+        crate::core::recon::ReferenceMethod::ExactIntegral => "exact pixel integral".to_string(),
+        crate::core::recon::ReferenceMethod::Supersampled { strata } => {
+            format!("{0}×{0} jittered supersampling", 2 * strata)
+        }
+    };
+    let accuracy = r.error_estimate.map(|e| format!("own RMS error ≈ {e:.1e}"));
+    Ok((
+        NodeValue::Reference(Arc::new(ReferenceData {
+            image: image_from_pixels(w, &r.pixels),
+            error_estimate: r.error_estimate,
+            method,
+        })),
+        accuracy,
+    ))
+}
+
+fn error(done: &Done) -> Output {
+    let (recon, reference) = match (
+        dep(done, NodeKind::Reconstruction)?,
+        dep(done, NodeKind::Reference)?,
+    ) {
+        (NodeValue::Reconstruction(a), NodeValue::Reference(b)) => (a.clone(), b.clone()),
+        _ => return Err("error inputs have the wrong type".into()),
+    };
+    let a = &recon.image;
+    let b = &reference.image;
+    if a.values.len() != b.values.len() {
+        return Err("reconstruction and reference sizes differ".into());
+    }
+    let mut sum = 0.0f64;
+    let mut max = 0.0f32;
+    let diff: Vec<f32> = a
+        .values
+        .iter()
+        .zip(b.values.iter())
+        .map(|(x, y)| {
+            let d = (x - y).abs();
+            sum += (d as f64) * (d as f64);
+            max = max.max(d);
+            d
+        })
+        .collect();
+    let rmse = (sum / diff.len().max(1) as f64).sqrt();
+    let psnr = crate::core::recon::psnr(rmse);
+    Ok((
+        NodeValue::Error(Arc::new(ErrorData {
+            rmse,
+            psnr,
+            image: ImageData::new(a.width, a.height, diff),
+            max_error: max,
+        })),
+        Some(format!("RMSE {rmse:.4}, PSNR {psnr:.2} dB")),
+    ))
+}
+
+/// ω range of the response plots and image (cycles per sample).
+pub const RESPONSE_OMEGA_MAX: f64 = 1.5;
+/// Side of the 2D response image.
+pub const RESPONSE_IMAGE_SIZE: usize = 96;
+
+fn response(scene: &Scene) -> Output {
+    let f2 = &scene.filter;
+    let f = &f2.filter;
+    let r = f.radius();
+    let kernel: Vec<[f64; 2]> = (0..=400)
+        .map(|i| {
+            let x = -r - 0.25 + (2.0 * r + 0.5) * i as f64 / 400.0;
+            [x, f.eval(x)]
+        })
+        .collect();
+    let curve = f
+        .response_curve(RESPONSE_OMEGA_MAX, 300)
+        .map_err(|e| e.to_string())?;
+    let magnitude = curve
+        .samples
+        .iter()
+        .map(|s| [s.omega, s.magnitude])
+        .collect();
+    let image = f2
+        .response_image(RESPONSE_IMAGE_SIZE, RESPONSE_OMEGA_MAX)
+        .map_err(|e| e.to_string())?;
+    let norm = image
+        .iter()
+        .fold(0.0f64, |a, &b| a.max(b.abs()))
+        .max(1e-300);
+    let n = RESPONSE_IMAGE_SIZE;
+    // Row 0 of the response image is the most negative ω_y: flip so ω_y points up.
+    let image = ImageData::from_y_up(n, n, |i| (image[i].abs() / norm) as f32);
+    let m = f2.metrics().map_err(|e| e.to_string())?;
+    Ok((
+        NodeValue::Response(Arc::new(ResponseData {
+            kernel,
+            magnitude,
+            omega_max: RESPONSE_OMEGA_MAX,
+            image,
+            metrics: vec![
+                ("smoothing", m.smoothing),
+                ("post-aliasing", m.post_aliasing),
+                ("ringing", m.ringing),
+                ("anisotropy", m.anisotropy),
+            ],
+        })),
+        None,
+    ))
+}
+
+/// Samples per pixel of the convergence curve.
+pub const CONVERGENCE_SPP: [usize; 5] = [1, 4, 16, 64, 256];
+/// Image size of the convergence curve (small: 256 spp per pixel).
+pub const CONVERGENCE_SIZE: usize = 64;
+
+fn convergence(scene: &Scene, c: usize, cancel: &Cancel) -> Output {
+    let col = &scene.columns[c];
+    let provider = crate::core::recon::PatternProvider {
+        pattern: col.pattern,
+        seed: col.seed,
+    };
+    let curve = crate::core::recon::convergence_curve(
+        &scene.signal,
+        &provider,
+        &CONVERGENCE_SPP,
+        CONVERGENCE_SIZE,
+        &scene.filter,
+        cancel,
+    )
+    .map_err(|e| e.to_string())?;
+    let points = curve
+        .points
+        .iter()
+        .map(|p| ConvergencePoint {
+            spp: p.spp,
+            rmse: p.rmse,
+            millis: ms(p.time),
+        })
+        .collect();
+    Ok((NodeValue::Convergence(Arc::new(points)), None))
+}
+
+fn spectrum(scene: &Scene, c: usize, cancel: &Cancel) -> Output {
+    use crate::core::spectrum::{
+        average_periodogram, radial_average, DcMode, Method, SpectrumRequest,
+    };
+    let col = &scene.columns[c];
+    let s = &scene.spectrum;
+    let req = SpectrumRequest {
+        size: s.size,
+        method: if s.exact {
+            Method::Exact
+        } else {
+            Method::Nufft {
+                tolerance: s.tolerance,
+            }
+        },
+        realizations: s.realizations,
+        dc: if s.mask_dc {
+            DcMode::Mask
+        } else {
+            DcMode::Show
+        },
+        // Two rows of the exact DFT: a measured error at ~2·N·M multiply-adds.
+        error_check_budget: 2 * (scene.n as u64) * (s.size as u64),
+    };
+    // Realization 0 is the point set the pattern panel shows (the column's own seed).
+    let first = crate::core::rng::derive_seed(col.seed, 0);
+    let (pattern, n, seed) = (col.pattern, scene.n, col.seed);
+    let (spec, report) = average_periodogram(
+        &req,
+        seed,
+        move |sd| pattern.generate(n, if sd == first { seed } else { sd }),
+        cancel,
+    )
+    .map_err(|e| e.to_string())?;
+    let m = spec.m;
+    let log = spec.to_display_image();
+    let mut sorted: Vec<f32> = log.iter().copied().filter(|v| v.is_finite()).collect();
+    sorted.sort_by(|a, b| a.total_cmp(b));
+    let pick = |q: f64| {
+        sorted
+            .get(((sorted.len().saturating_sub(1)) as f64 * q) as usize)
+            .copied()
+            .unwrap_or(0.0)
+    };
+    let auto_range = (pick(0.02), pick(0.998).max(pick(0.02) + 1e-3));
+    let bins = radial_average(&spec);
+    let raps = bins.iter().map(|b| [b.radius, b.mean_power]).collect();
+    let anisotropy = bins
+        .iter()
+        .filter(|b| b.anisotropy_db.is_finite())
+        .map(|b| [b.radius, b.anisotropy_db])
+        .collect();
+    let stages = report
+        .stages
+        .iter()
+        .map(|(name, d)| (name.to_string(), ms(*d)))
+        .collect();
+    let accuracy = match (report.tolerance, report.error) {
+        (Some(tol), Some(e)) => Some(format!(
+            "rel. ℓ2 error {:.1e} (asked {tol:.0e}, {} freq.)",
+            e.relative_l2, e.frequencies
+        )),
+        (Some(tol), None) => Some(format!("asked {tol:.0e}")),
+        (None, _) => Some("exact DFT".into()),
+    };
+    Ok((
+        NodeValue::Spectrum(Arc::new(SpectrumData {
+            // Row iy = ky − k_min: flip so that ky points up.
+            image: ImageData::from_y_up(m, m, |i| log[i]),
+            auto_range,
+            raps,
+            anisotropy,
+            stages,
+        })),
+        accuracy,
+    ))
+}

@@ -1,0 +1,326 @@
+//! Declarative scenes (RON files) and the compute graph they drive.
+//!
+//! A scene says what is shown: the columns (one sample pattern each, with its seed), the
+//! shared settings (N, signal, filter, reconstruction, spectrum), the visible panels and the
+//! effects that are on. The [`graph`] turns a scene into the list of nodes that the visible
+//! panels need; nothing else is computed.
+
+pub mod compute;
+pub mod graph;
+
+use crate::core::filter::Filter2D;
+use crate::core::pattern::Pattern;
+use crate::core::signal::Signal;
+use serde::{Deserialize, Serialize};
+
+/// One column of a comparison: a pattern and its seed.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct Column {
+    /// The sample pattern with its parameters.
+    pub pattern: Pattern,
+    /// The seed of its random stream.
+    pub seed: u64,
+    /// Optional label shown above the column (default: the pattern's name).
+    pub label: String,
+}
+
+impl Default for Column {
+    fn default() -> Self {
+        Column {
+            pattern: Pattern::default(),
+            seed: 1,
+            label: String::new(),
+        }
+    }
+}
+
+impl Column {
+    /// The label shown above the column.
+    pub fn title(&self) -> String {
+        if self.label.is_empty() {
+            self.pattern.name().to_string()
+        } else {
+            self.label.clone()
+        }
+    }
+}
+
+/// How the signal is sampled and reconstructed.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum ReconMode {
+    /// The column's N points sample the signal over the whole image; a filter scaled to the
+    /// mean sample spacing 1/√N reconstructs it on the output grid.
+    Scattered,
+    /// `spp` samples per output pixel from the column's pattern, combined by the pixel filter.
+    Supersample { spp: usize },
+}
+
+/// Spectrum settings.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct SpectrumSettings {
+    /// Frequencies per side (M×M integer frequencies, DC in the middle).
+    pub size: usize,
+    /// NUFFT tolerance (relative ℓ2); ignored when `exact`.
+    pub tolerance: f64,
+    /// Use the exact DFT instead of the NUFFT.
+    pub exact: bool,
+    /// Number of realizations averaged (seeds derived from the column's seed).
+    pub realizations: usize,
+    /// Hide the DC peak P(0) = N.
+    pub mask_dc: bool,
+}
+
+impl Default for SpectrumSettings {
+    fn default() -> Self {
+        SpectrumSettings {
+            size: 256,
+            tolerance: 1e-6,
+            exact: false,
+            realizations: 1,
+            mask_dc: true,
+        }
+    }
+}
+
+/// Reconstruction settings.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct ReconSettings {
+    /// How samples are taken.
+    pub mode: ReconMode,
+    /// Output image size W (W×W pixels).
+    pub size: usize,
+}
+
+impl Default for ReconSettings {
+    fn default() -> Self {
+        ReconSettings {
+            mode: ReconMode::Scattered,
+            size: 512,
+        }
+    }
+}
+
+/// Which panels are visible.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct Panels {
+    pub pattern: bool,
+    pub spectrum: bool,
+    pub zoneplate: bool,
+    pub filter: bool,
+    /// The cost view (every node's time and error, and the convergence plot).
+    pub cost: bool,
+}
+
+impl Default for Panels {
+    fn default() -> Self {
+        Panels {
+            pattern: true,
+            spectrum: true,
+            zoneplate: true,
+            filter: true,
+            cost: false,
+        }
+    }
+}
+
+/// Which effects are simulated. An effect that is off costs nothing.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct Effects {
+    /// Sample the signal and reconstruct it (the zone plate panel's image).
+    pub reconstruction: bool,
+    /// Compute the reference image and the error against it.
+    pub error: bool,
+    /// Compute the convergence curve (RMSE vs samples per pixel) for the cost view.
+    pub convergence: bool,
+    /// Point-set statistics (minimum distance, discrepancy) for the pattern overlays.
+    pub statistics: bool,
+}
+
+impl Default for Effects {
+    fn default() -> Self {
+        Effects {
+            reconstruction: true,
+            error: true,
+            convergence: false,
+            statistics: false,
+        }
+    }
+}
+
+/// A scene: what is shown and how it is computed.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct Scene {
+    pub title: String,
+    /// What to look at (shown under the title).
+    pub notes: String,
+    pub columns: Vec<Column>,
+    /// Number of points per column.
+    pub n: usize,
+    pub signal: Signal,
+    pub filter: Filter2D,
+    pub recon: ReconSettings,
+    pub spectrum: SpectrumSettings,
+    pub panels: Panels,
+    pub effects: Effects,
+}
+
+impl Default for Scene {
+    fn default() -> Self {
+        Scene {
+            title: "untitled".into(),
+            notes: String::new(),
+            columns: vec![Column::default()],
+            n: 4096,
+            signal: Signal::default(),
+            filter: Filter2D::default(),
+            recon: ReconSettings::default(),
+            spectrum: SpectrumSettings::default(),
+            panels: Panels::default(),
+            effects: Effects::default(),
+        }
+    }
+}
+
+/// Why a scene could not be loaded.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum SceneError {
+    /// The RON text is malformed or names an unknown field; `line`/`column` are 1-based.
+    #[error("{source_name}:{line}:{column}: {message}")]
+    Parse {
+        source_name: String,
+        line: usize,
+        column: usize,
+        message: String,
+    },
+    /// The scene parsed but a value is out of range.
+    #[error("{source_name}: {field} = {value}: must be {allowed}")]
+    Invalid {
+        source_name: String,
+        field: String,
+        value: String,
+        allowed: String,
+    },
+    /// The file could not be read.
+    #[error("{path}: {message}")]
+    Io { path: String, message: String },
+}
+
+/// Scenes shipped with the app: (file name, RON text).
+pub const BUILTIN: &[(&str, &str)] = &[
+    (
+        "default.ron",
+        include_str!("../../assets/scenes/default.ron"),
+    ),
+    (
+        "two-columns.ron",
+        include_str!("../../assets/scenes/two-columns.ron"),
+    ),
+];
+
+impl Scene {
+    /// Parses and validates a scene from RON text; `source_name` appears in errors.
+    pub fn from_ron(text: &str, source_name: &str) -> Result<Scene, SceneError> {
+        let scene: Scene = ron::from_str(text).map_err(|e| SceneError::Parse {
+            source_name: source_name.to_string(),
+            line: e.span.start.line,
+            column: e.span.start.col,
+            message: e.code.to_string(),
+        })?;
+        scene.validate(source_name)?;
+        Ok(scene)
+    }
+
+    /// Reads a scene file.
+    pub fn load(path: &std::path::Path) -> Result<Scene, SceneError> {
+        let text = std::fs::read_to_string(path).map_err(|e| SceneError::Io {
+            path: path.display().to_string(),
+            message: e.to_string(),
+        })?;
+        Scene::from_ron(&text, &path.display().to_string())
+    }
+
+    /// The built-in default scene.
+    pub fn builtin_default() -> Scene {
+        Scene::from_ron(BUILTIN[0].1, BUILTIN[0].0).unwrap_or_default()
+    }
+
+    /// The scene as RON text.
+    pub fn to_ron(&self) -> String {
+        ron::ser::to_string_pretty(self, ron::ser::PrettyConfig::default()).unwrap_or_default()
+    }
+
+    /// Checks ranges that the types alone cannot express.
+    pub fn validate(&self, source_name: &str) -> Result<(), SceneError> {
+        let invalid = |field: &str, value: String, allowed: &str| SceneError::Invalid {
+            source_name: source_name.to_string(),
+            field: field.to_string(),
+            value,
+            allowed: allowed.to_string(),
+        };
+        if self.columns.is_empty() || self.columns.len() > MAX_COLUMNS {
+            return Err(invalid(
+                "columns",
+                format!("{} columns", self.columns.len()),
+                &format!("1..={MAX_COLUMNS} columns"),
+            ));
+        }
+        if self.n == 0 || self.n > MAX_SCENE_N {
+            return Err(invalid(
+                "n",
+                self.n.to_string(),
+                &format!("an integer in 1..={MAX_SCENE_N}"),
+            ));
+        }
+        let s = &self.spectrum;
+        if !(8..=2048).contains(&s.size) {
+            return Err(invalid(
+                "spectrum.size",
+                s.size.to_string(),
+                "an integer in 8..=2048",
+            ));
+        }
+        if !(s.tolerance >= 1e-12 && s.tolerance <= 1e-2) {
+            return Err(invalid(
+                "spectrum.tolerance",
+                format!("{:e}", s.tolerance),
+                "a number in [1e-12, 1e-2]",
+            ));
+        }
+        if !(1..=256).contains(&s.realizations) {
+            return Err(invalid(
+                "spectrum.realizations",
+                s.realizations.to_string(),
+                "an integer in 1..=256",
+            ));
+        }
+        if !(16..=2048).contains(&self.recon.size) {
+            return Err(invalid(
+                "recon.size",
+                self.recon.size.to_string(),
+                "an integer in 16..=2048",
+            ));
+        }
+        if let ReconMode::Supersample { spp } = self.recon.mode {
+            if !(1..=1024).contains(&spp) {
+                return Err(invalid(
+                    "recon.mode.spp",
+                    spp.to_string(),
+                    "an integer in 1..=1024",
+                ));
+            }
+        }
+        Ok(())
+    }
+}
+
+/// Most columns a scene may have.
+pub const MAX_COLUMNS: usize = 8;
+/// Most points per column in a scene (interactive use).
+pub const MAX_SCENE_N: usize = 1 << 20;

@@ -1,0 +1,463 @@
+//! The application: scene, engine, controls, and the column layout.
+
+use super::gpu::{self, Colormap};
+use super::panels::{self, ViewState};
+use crate::core::pattern::params::{ParamKind, ParamValue};
+use crate::core::pattern::Pattern;
+use crate::engine::Engine;
+use crate::scene::graph::{NodeKind, NodeResult};
+use crate::scene::{Column, ReconMode, Scene, BUILTIN, MAX_COLUMNS};
+use eframe::egui;
+use std::collections::HashMap;
+use std::sync::Arc;
+use std::time::{Duration, Instant};
+
+/// Results of one column, by node kind.
+pub type ColumnResults = HashMap<NodeKind, Arc<NodeResult>>;
+
+/// The samplescope GUI application.
+pub struct SamplescopeApp {
+    /// The scene being shown.
+    pub scene: Scene,
+    /// Name of the scene (file name or built-in name).
+    pub scene_name: String,
+    /// The engine evaluating the scene.
+    pub engine: Engine,
+    /// Latest results per column.
+    pub results: Vec<ColumnResults>,
+    /// Display state (ranges, zoom, overlays).
+    pub view: ViewState,
+    /// Whether the wgpu pipelines are installed (else images are colour-mapped on the CPU).
+    pub gpu: bool,
+    /// Last scene error (loading a malformed scene), shown in the UI.
+    pub scene_error: Option<String>,
+    /// Path typed into the "open scene" box.
+    open_path: String,
+    submitted: Option<Scene>,
+    frame_time: Duration,
+    last_frame: Option<Instant>,
+    textures: panels::TextureCache,
+}
+
+/// Keys under which eframe persists the window's state.
+const STORAGE_SCENE: &str = "samplescope.scene";
+const STORAGE_VIEW: &str = "samplescope.view";
+
+impl SamplescopeApp {
+    /// Creates the app; installs the wgpu pipelines when a wgpu renderer is present. Opens
+    /// `scene_path` if given, else the persisted scene, else the built-in default scene.
+    pub fn new(cc: &eframe::CreationContext<'_>, scene_path: Option<&std::path::Path>) -> Self {
+        let ctx = cc.egui_ctx.clone();
+        let engine = Engine::new(Arc::new(move || ctx.request_repaint()));
+        let gpu = match cc.wgpu_render_state.as_ref() {
+            Some(rs) => match gpu::install(rs) {
+                Ok(()) => true,
+                Err(e) => {
+                    eprintln!("{e}; falling back to CPU colour mapping");
+                    false
+                }
+            },
+            None => false,
+        };
+        let mut app = SamplescopeApp {
+            scene: Scene::builtin_default(),
+            scene_name: BUILTIN[0].0.to_string(),
+            engine,
+            results: Vec::new(),
+            view: ViewState::default(),
+            gpu,
+            scene_error: None,
+            open_path: String::new(),
+            submitted: None,
+            frame_time: Duration::ZERO,
+            last_frame: None,
+            textures: panels::TextureCache::default(),
+        };
+        if let Some(storage) = cc.storage {
+            if scene_path.is_none() {
+                if let Some(scene) = eframe::get_value::<Scene>(storage, STORAGE_SCENE) {
+                    if scene.validate("saved state").is_ok() {
+                        app.scene = scene;
+                        app.scene_name = "restored".into();
+                    }
+                }
+            }
+            if let Some(view) = eframe::get_value::<ViewState>(storage, STORAGE_VIEW) {
+                app.view = view;
+            }
+        }
+        if let Some(path) = scene_path {
+            app.open_file(path);
+        }
+        app
+    }
+
+    /// Opens a scene file; on error keeps the current scene and shows the error.
+    pub fn open_file(&mut self, path: &std::path::Path) {
+        match Scene::load(path) {
+            Ok(scene) => {
+                self.set_scene(scene, path.display().to_string());
+            }
+            Err(e) => self.scene_error = Some(e.to_string()),
+        }
+    }
+
+    /// Replaces the scene.
+    pub fn set_scene(&mut self, scene: Scene, name: String) {
+        self.scene = scene;
+        self.scene_name = name;
+        self.scene_error = None;
+        self.results.clear();
+    }
+
+    /// Adds a column (a copy of the last one with the next seed).
+    pub fn add_column(&mut self) {
+        if self.scene.columns.len() < MAX_COLUMNS {
+            let mut c = self.scene.columns.last().cloned().unwrap_or_default();
+            c.seed = c.seed.wrapping_add(1);
+            self.scene.columns.push(c);
+        }
+    }
+
+    /// Submits the scene to the engine if it changed, and takes results that arrived.
+    pub fn sync_engine(&mut self) {
+        if self.submitted.as_ref() != Some(&self.scene) {
+            self.engine.submit(&self.scene);
+            self.submitted = Some(self.scene.clone());
+            self.results
+                .resize_with(self.scene.columns.len(), HashMap::new);
+            self.results.truncate(self.scene.columns.len());
+        }
+        for u in self.engine.poll() {
+            if let Some(col) = self.results.get_mut(u.column) {
+                col.insert(u.kind, u.result);
+            }
+        }
+    }
+
+    fn shortcuts(&mut self, ctx: &egui::Context) {
+        use egui::{Key, Modifiers};
+        let (add, dup, remove, toggle_spec, toggle_cost, reseed, lock) = ctx.input_mut(|i| {
+            (
+                i.consume_key(Modifiers::CTRL, Key::N),
+                i.consume_key(Modifiers::CTRL, Key::D),
+                i.consume_key(Modifiers::CTRL, Key::W),
+                i.consume_key(Modifiers::NONE, Key::F2),
+                i.consume_key(Modifiers::NONE, Key::F4),
+                i.consume_key(Modifiers::CTRL, Key::R),
+                i.consume_key(Modifiers::CTRL, Key::L),
+            )
+        });
+        if add || dup {
+            self.add_column();
+        }
+        if remove && self.scene.columns.len() > 1 {
+            self.scene.columns.pop();
+        }
+        if toggle_spec {
+            self.scene.panels.spectrum = !self.scene.panels.spectrum;
+        }
+        if toggle_cost {
+            self.scene.panels.cost = !self.scene.panels.cost;
+        }
+        if reseed {
+            for c in &mut self.scene.columns {
+                c.seed = c.seed.wrapping_add(1);
+            }
+        }
+        if lock {
+            self.view.lock_scales = !self.view.lock_scales;
+        }
+    }
+
+    fn top_bar(&mut self, ui: &mut egui::Ui) {
+        ui.horizontal_wrapped(|ui| {
+            ui.heading("samplescope");
+            ui.separator();
+            let mut chosen = None;
+            egui::ComboBox::from_label("Scene")
+                .selected_text(self.scene_name.clone())
+                .show_ui(ui, |ui| {
+                    for (name, text) in BUILTIN {
+                        if ui
+                            .selectable_label(self.scene_name == *name, *name)
+                            .clicked()
+                        {
+                            chosen = Some((*name, *text));
+                        }
+                    }
+                });
+            if let Some((name, text)) = chosen {
+                match Scene::from_ron(text, name) {
+                    Ok(s) => self.set_scene(s, name.to_string()),
+                    Err(e) => self.scene_error = Some(e.to_string()),
+                }
+            }
+            ui.add(
+                egui::TextEdit::singleline(&mut self.open_path)
+                    .hint_text("path/to/scene.ron")
+                    .desired_width(180.0),
+            );
+            if ui.button("Open").clicked() {
+                let p = std::path::PathBuf::from(self.open_path.trim());
+                self.open_file(&p);
+            }
+            ui.separator();
+            if ui.button("Add column").on_hover_text("Ctrl+N").clicked() {
+                self.add_column();
+            }
+            ui.checkbox(&mut self.view.lock_scales, "Lock scales")
+                .on_hover_text("Same display range in every column (Ctrl+L)");
+            ui.separator();
+            if self.view.show_timings {
+                ui.label(format!(
+                    "frame {:.1} ms · update {}",
+                    self.frame_time.as_secs_f64() * 1e3,
+                    match self.engine.last_update_time {
+                        Some(t) if self.engine.is_idle() =>
+                            format!("{:.1} ms", t.as_secs_f64() * 1e3),
+                        _ => "computing…".into(),
+                    }
+                ));
+            }
+            if !self.engine.is_idle() {
+                ui.spinner();
+            }
+        });
+        ui.label(egui::RichText::new(&self.scene.title).strong());
+        if !self.scene.notes.is_empty() {
+            ui.label(&self.scene.notes);
+        }
+        if let Some(e) = &self.scene_error {
+            ui.colored_label(egui::Color32::from_rgb(200, 40, 40), e);
+        }
+    }
+
+    fn controls(&mut self, ui: &mut egui::Ui) {
+        ui.heading("Sampling");
+        let mut n = self.scene.n as f64;
+        if ui
+            .add(
+                egui::Slider::new(&mut n, 1.0..=65536.0)
+                    .logarithmic(true)
+                    .integer()
+                    .text("N"),
+            )
+            .changed()
+        {
+            self.scene.n = n.round().max(1.0) as usize;
+        }
+        ui.collapsing("Panels", |ui| {
+            let p = &mut self.scene.panels;
+            ui.checkbox(&mut p.pattern, "Pattern");
+            ui.checkbox(&mut p.spectrum, "Spectrum (F2)");
+            ui.checkbox(&mut p.zoneplate, "Zone plate");
+            ui.checkbox(&mut p.filter, "Filter");
+            ui.checkbox(&mut p.cost, "Cost view (F4)");
+        });
+        ui.collapsing("Effects", |ui| {
+            let e = &mut self.scene.effects;
+            ui.checkbox(&mut e.reconstruction, "Reconstruction");
+            ui.checkbox(&mut e.error, "Reference and error");
+            ui.checkbox(&mut e.statistics, "Point statistics (overlays)");
+            ui.checkbox(&mut e.convergence, "Convergence curve");
+        });
+        ui.separator();
+        let ncols = self.scene.columns.len();
+        let mut remove = None;
+        let mut duplicate = None;
+        for (ci, column) in self.scene.columns.iter_mut().enumerate() {
+            ui.push_id(ci, |ui| {
+                ui.horizontal(|ui| {
+                    ui.strong(format!("Column {}", ci + 1));
+                    if ui.small_button("Duplicate").clicked() {
+                        duplicate = Some(ci);
+                    }
+                    if ncols > 1 && ui.small_button("Remove").clicked() {
+                        remove = Some(ci);
+                    }
+                });
+                pattern_ui(ui, column);
+            });
+            ui.separator();
+        }
+        if let Some(ci) = duplicate {
+            if self.scene.columns.len() < MAX_COLUMNS {
+                let c = self.scene.columns[ci].clone();
+                self.scene.columns.insert(ci + 1, c);
+            }
+        }
+        if let Some(ci) = remove {
+            self.scene.columns.remove(ci);
+            if ci < self.results.len() {
+                self.results.remove(ci);
+            }
+        }
+        ui.heading("Spectrum");
+        let s = &mut self.scene.spectrum;
+        egui::ComboBox::from_label("Size")
+            .selected_text(format!("{}²", s.size))
+            .show_ui(ui, |ui| {
+                for m in [64, 128, 256, 512, 640, 1024] {
+                    ui.selectable_value(&mut s.size, m, format!("{m}²"));
+                }
+            });
+        ui.checkbox(&mut s.exact, "Exact DFT");
+        ui.add_enabled(
+            !s.exact,
+            egui::Slider::new(&mut s.tolerance, 1e-12..=1e-2)
+                .logarithmic(true)
+                .text("tolerance"),
+        );
+        ui.add(egui::Slider::new(&mut s.realizations, 1..=64).text("realizations K"));
+        ui.checkbox(&mut s.mask_dc, "Mask DC");
+        ui.heading("Reconstruction");
+        panels::signal_ui(ui, &mut self.scene.signal);
+        let r = &mut self.scene.recon;
+        egui::ComboBox::from_label("Output size")
+            .selected_text(format!("{}²", r.size))
+            .show_ui(ui, |ui| {
+                for w in [128, 256, 512, 1024] {
+                    ui.selectable_value(&mut r.size, w, format!("{w}²"));
+                }
+            });
+        let mut supersample = matches!(r.mode, ReconMode::Supersample { .. });
+        if ui
+            .checkbox(&mut supersample, "Supersample (spp from the pattern)")
+            .changed()
+        {
+            r.mode = if supersample {
+                ReconMode::Supersample { spp: 16 }
+            } else {
+                ReconMode::Scattered
+            };
+        }
+        if let ReconMode::Supersample { spp } = &mut r.mode {
+            ui.add(
+                egui::Slider::new(spp, 1..=256)
+                    .logarithmic(true)
+                    .text("spp"),
+            );
+        }
+        ui.heading("Filter");
+        panels::filter_ui(ui, &mut self.scene.filter);
+        ui.heading("Display");
+        egui::ComboBox::from_label("Colour map")
+            .selected_text(self.view.colormap.name())
+            .show_ui(ui, |ui| {
+                for c in Colormap::ALL {
+                    ui.selectable_value(&mut self.view.colormap, c, c.name());
+                }
+            });
+        ui.add(egui::Slider::new(&mut self.view.spectrum_lo, -4.0..=2.0).text("log10 P min"));
+        ui.add(egui::Slider::new(&mut self.view.spectrum_hi, -2.0..=4.0).text("log10 P max"));
+        ui.add(egui::Slider::new(&mut self.view.zoom, 1..=8).text("zoom"));
+    }
+}
+
+/// Pattern selection and parameter sliders generated from the pattern's descriptors.
+pub fn pattern_ui(ui: &mut egui::Ui, column: &mut Column) {
+    let mut name = column.pattern.name();
+    egui::ComboBox::from_label("Pattern")
+        .selected_text(name)
+        .show_ui(ui, |ui| {
+            for p in Pattern::all() {
+                ui.selectable_value(&mut name, p.name(), p.name())
+                    .on_hover_text(p.summary());
+            }
+        });
+    if name != column.pattern.name() {
+        if let Ok(p) = Pattern::from_name(name) {
+            column.pattern = p;
+        }
+    }
+    for spec in column.pattern.specs() {
+        let Some(value) = column.pattern.get(spec.name) else {
+            continue;
+        };
+        let text = match (spec.kind.clone(), value) {
+            (ParamKind::Int { min, max, .. }, ParamValue::Int(mut v)) => {
+                let hi = max.min(min.saturating_add(100_000));
+                let r = ui
+                    .add(egui::Slider::new(&mut v, min..=hi).text(spec.name))
+                    .on_hover_text(spec.doc);
+                r.changed().then(|| v.to_string())
+            }
+            (ParamKind::Float { min, max, .. }, ParamValue::Float(mut v)) => {
+                let r = ui
+                    .add(egui::Slider::new(&mut v, min..=max).text(spec.name))
+                    .on_hover_text(spec.doc);
+                r.changed().then(|| format!("{v:?}"))
+            }
+            (ParamKind::Choice { options, .. }, ParamValue::Choice(current)) => {
+                let mut chosen = current;
+                egui::ComboBox::from_label(spec.name)
+                    .selected_text(current)
+                    .show_ui(ui, |ui| {
+                        for o in options {
+                            ui.selectable_value(&mut chosen, o, *o);
+                        }
+                    });
+                (chosen != current).then(|| chosen.to_string())
+            }
+            _ => None,
+        };
+        if let Some(t) = text {
+            // The slider's range is the parameter's range, so this cannot fail; if it did, the
+            // old value stays.
+            let _ = column.pattern.set(spec.name, &t);
+        }
+    }
+    let mut seed = column.seed;
+    ui.horizontal(|ui| {
+        ui.label("seed");
+        ui.add(egui::DragValue::new(&mut seed));
+    });
+    column.seed = seed;
+}
+
+impl eframe::App for SamplescopeApp {
+    fn ui(&mut self, ui: &mut egui::Ui, _frame: &mut eframe::Frame) {
+        let now = Instant::now();
+        if let Some(last) = self.last_frame {
+            self.frame_time = now - last;
+        }
+        self.last_frame = Some(now);
+        let ctx = ui.ctx().clone();
+        self.shortcuts(&ctx);
+        egui::Panel::top("samplescope-top").show(ui, |ui| self.top_bar(ui));
+        egui::Panel::left("samplescope-controls")
+            .resizable(true)
+            .default_size(300.0)
+            .show(ui, |ui| {
+                egui::ScrollArea::vertical().show(ui, |ui| self.controls(ui));
+            });
+        self.sync_engine();
+        if self.scene.panels.cost {
+            egui::Panel::bottom("samplescope-cost")
+                .resizable(true)
+                .default_size(220.0)
+                .show(ui, |ui| {
+                    panels::cost_ui(ui, &self.scene, &self.results, self.engine.evaluator())
+                });
+        }
+        egui::CentralPanel::default().show(ui, |ui| {
+            panels::columns_ui(
+                ui,
+                &self.scene,
+                &self.results,
+                &mut self.view,
+                self.gpu,
+                &mut self.textures,
+            );
+        });
+        if !self.engine.is_idle() {
+            ctx.request_repaint_after(Duration::from_millis(30));
+        }
+    }
+
+    fn save(&mut self, storage: &mut dyn eframe::Storage) {
+        eframe::set_value(storage, STORAGE_SCENE, &self.scene);
+        eframe::set_value(storage, STORAGE_VIEW, &self.view);
+    }
+}

@@ -1,0 +1,118 @@
+//! The real UI driven by its labels (egui_kittest, wgpu renderer on Mesa lavapipe/llvmpipe).
+//! These tests need a wgpu adapter; without one they fail (they never skip).
+
+use egui_kittest::kittest::Queryable;
+use egui_kittest::Harness;
+use samplescope::scene::graph::NodeKind;
+use samplescope::ui::SamplescopeApp;
+use std::time::{Duration, Instant};
+
+fn harness() -> Harness<'static, SamplescopeApp> {
+    let mut h = Harness::builder()
+        .with_size(eframe::egui::Vec2::new(1400.0, 1000.0))
+        .wgpu()
+        .build_eframe(|cc| {
+            let mut app = SamplescopeApp::new(cc, None);
+            app.view.show_timings = false;
+            app
+        });
+    settle(&mut h);
+    h
+}
+
+/// Steps the UI until the engine has delivered every node of the current scene.
+fn settle(h: &mut Harness<'static, SamplescopeApp>) {
+    let deadline = Instant::now() + Duration::from_secs(120);
+    loop {
+        h.step();
+        let app = h.state();
+        if app.engine.is_idle() && app.results.len() == app.scene.columns.len() {
+            break;
+        }
+        assert!(Instant::now() < deadline, "engine did not finish");
+        std::thread::sleep(Duration::from_millis(5));
+    }
+    h.step();
+    h.step();
+}
+
+#[test]
+fn default_scene_shows_four_panels_for_one_column() {
+    let h = harness();
+    let app = h.state();
+    assert_eq!(app.scene.columns.len(), 1);
+    let col = &app.results[0];
+    for kind in [
+        NodeKind::Points,
+        NodeKind::Spectrum,
+        NodeKind::Reconstruction,
+        NodeKind::Response,
+    ] {
+        let r = col.get(&kind).unwrap_or_else(|| panic!("{kind:?} missing"));
+        assert!(r.value.is_ok(), "{kind:?}: {:?}", r.value.as_ref().err());
+    }
+    h.get_by_label("Pattern");
+    h.get_by_label("Add column");
+}
+
+#[test]
+fn add_column_by_button_and_equal_inputs_share_one_evaluation() {
+    let mut h = harness();
+    let before = h.state().engine.evaluator().count(NodeKind::Response);
+    h.get_by_label("Add column").click();
+    settle(&mut h);
+    let app = h.state();
+    assert_eq!(app.scene.columns.len(), 2);
+    assert_eq!(app.results.len(), 2);
+    // The filter is shared: its response was computed once for both columns.
+    assert_eq!(app.engine.evaluator().count(NodeKind::Response), before);
+    // The new column has a new seed: new points.
+    assert!(app.engine.evaluator().count(NodeKind::Points) >= 2);
+}
+
+#[test]
+fn hiding_the_spectrum_panel_stops_spectrum_work() {
+    let mut h = harness();
+    h.get_by_label("Spectrum (F2)").click();
+    settle(&mut h);
+    assert!(!h.state().scene.panels.spectrum);
+    let spectra = h.state().engine.evaluator().count(NodeKind::Spectrum);
+    // Change N: points and reconstruction recompute, the hidden spectrum does not.
+    h.get_by_label("N").set_value_accesskit(1000.0);
+    settle(&mut h);
+    let app = h.state();
+    assert_eq!(app.scene.n, 1000);
+    assert_eq!(app.engine.evaluator().count(NodeKind::Spectrum), spectra);
+    assert!(app.engine.evaluator().count(NodeKind::Points) >= 2);
+}
+
+#[test]
+fn dragging_n_updates_every_panel() {
+    let mut h = harness();
+    h.get_by_label("N").set_value_accesskit(256.0);
+    settle(&mut h);
+    let app = h.state();
+    assert_eq!(app.scene.n, 256);
+    match &app.results[0][&NodeKind::Points].value {
+        Ok(samplescope::scene::graph::NodeValue::Points(p)) => assert_eq!(p.points.len(), 256),
+        other => panic!("{other:?}"),
+    }
+}
+
+#[test]
+fn changing_the_pattern_through_the_combo_box() {
+    let mut h = harness();
+    h.get_by_label("Pattern").click();
+    h.run_steps(2);
+    h.get_by_label("halton").click();
+    settle(&mut h);
+    assert_eq!(h.state().scene.columns[0].pattern.name(), "halton");
+    // The filter did not change: no new response evaluation.
+    assert_eq!(h.state().engine.evaluator().count(NodeKind::Response), 1);
+}
+
+#[test]
+fn snapshot_default_scene() {
+    let mut h = harness();
+    h.snapshot("default_scene");
+}
