@@ -242,7 +242,7 @@ impl Spectrum {
     pub fn at(&self, kx: i64, ky: i64) -> Option<f64> {
         let ix = self.index_of(kx)?;
         let iy = self.index_of(ky)?;
-        Some(self.power[iy * self.m + ix])
+        self.power.get(iy * self.m + ix).copied()
     }
 
     /// Index of DC in `power`: (⌊m/2⌋, ⌊m/2⌋).
@@ -254,11 +254,12 @@ impl Spectrum {
     /// log10 P(k) as `f32`, row-major like `power`, for display. Powers below [`LOG_FLOOR`]
     /// (including exact zeros) map to log10(LOG_FLOOR) = −10. When `dc_masked`, the DC pixel is
     /// painted with the mean power of its 8 neighbours (toroidal wrap on the grid) so that
-    /// P(0) = N neither dominates the colour scale nor leaves a hole.
+    /// P(0) = N neither dominates the colour scale nor leaves a hole (a hand-built spectrum whose
+    /// `power` is not m² long is converted without masking).
     pub fn to_log_image(&self, dc_masked: bool) -> Vec<f32> {
         let to_log = |p: f64| p.max(LOG_FLOOR).log10() as f32;
         let mut image: Vec<f32> = self.power.iter().map(|&p| to_log(p)).collect();
-        if dc_masked {
+        if dc_masked && self.power.len() == self.m * self.m {
             let m = self.m;
             let c = m / 2;
             let mut sum = 0.0;
