@@ -18,8 +18,9 @@ use std::time::{Duration, Instant};
 /// Default budget of the error check, in complex multiply-adds of the exact reference
 /// (2²² ≈ 4.2 M: a few milliseconds on one core).
 pub const DEFAULT_ERROR_CHECK_BUDGET: u64 = 1 << 22;
-/// Realizations in flight at once are limited so that their buffers (about 72·M² bytes
-/// each for the NUFFT) stay under this many bytes.
+/// Realizations in flight at once are limited so that their buffers stay under this many
+/// bytes: about 56·M² each for the NUFFT (upsampled grid 32·M², kept columns 16·M², output
+/// 8·M²), counted as 64·M².
 const IN_FLIGHT_BYTES: usize = 1 << 30;
 
 /// How a periodogram is computed.
@@ -177,7 +178,7 @@ where
     // fewer when their buffers would pass IN_FLIGHT_BYTES. The sum below runs in realization
     // order whatever the group size, so the bits do not depend on it.
     let group = (2 * rayon::current_num_threads())
-        .min(IN_FLIGHT_BYTES / (72 * m * m))
+        .min(IN_FLIGHT_BYTES / (64 * m * m))
         .clamp(1, 16);
     // Periodogram buffers are recycled between groups (fresh M² buffers cost page faults).
     let buffers: Mutex<Vec<Vec<f64>>> = Mutex::new(Vec::new());
