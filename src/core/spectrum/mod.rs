@@ -24,6 +24,10 @@
 //! - **Averages** over K realizations are plain means of P; realization r is generated from
 //!   [`crate::core::rng::derive_seed`]`(seed, r)`, and the sum runs in realization order, so the
 //!   result is bit-for-bit the same for any number of threads.
+//! - **Determinism.** Every routine sums in a fixed order (never in thread-arrival order), so
+//!   the same input gives the same bits on every run and for any number of threads. Across
+//!   platforms the bits can differ only through the system's `sin`, `cos` and `exp` (last-ulp
+//!   differences of libm), well below every tolerance.
 //! - **DC.** [`DcMode`] only affects display ([`Spectrum::to_display_image`]); `power` always
 //!   holds the true P(0) = N (mean N over realizations). RAPS and anisotropy always exclude DC.
 //! - **Error metric.** Accuracy is the relative ℓ2 error over all frequencies except DC,
