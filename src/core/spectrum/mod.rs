@@ -44,8 +44,10 @@
 //!
 //! [`average_periodogram`] averages K realizations with either method and returns a
 //! [`SpectrumReport`] with the time of every stage and the measured error.
-//! [`radial_average`] gives RAPS (annuli of width 1) and anisotropy; [`pair_correlation`]
-//! gives g(r).
+//! [`radial_average`] gives RAPS over annuli of width 1 (annulus b holds |k| ∈ [b − ½, b + ½),
+//! b ≥ 1, only annuli that the square grid contains completely) and PSA's anisotropy
+//! 10·log10(variance/mean²) per annulus; [`pair_correlation`] gives g(r) on the torus (cell
+//! list; [`pair_correlation_naive`] is the all-pairs reference, N ≤ 16 384).
 
 pub mod average;
 pub mod dft;
