@@ -92,7 +92,7 @@ fn n_65536_points_meet_tolerance_on_rows_of_a_256_grid() {
     let field = exact_field_rows(&pts, k0, m, &rows, &c).unwrap();
     for tol in [1e-3, 1e-9] {
         let s = periodogram_nufft(&pts, m, tol, &c).unwrap();
-        let (mut num, mut den) = (0.0, 0.0);
+        let (mut num, mut den) = (0.0f64, 0.0f64);
         for (r, &ky) in rows.iter().enumerate() {
             for ix in 0..m {
                 let (re, im) = (field[r * 2 * m + ix], field[r * 2 * m + m + ix]);
@@ -102,7 +102,7 @@ fn n_65536_points_meet_tolerance_on_rows_of_a_256_grid() {
                 den += exact * exact;
             }
         }
-        let err = (num / den as f64).sqrt();
+        let err = (num / den).sqrt();
         assert!(err <= tol, "tolerance {tol:e}: error {err:e}");
     }
 }

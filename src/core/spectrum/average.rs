@@ -12,13 +12,15 @@ use crate::core::rng::derive_seed;
 use glam::DVec2;
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
+use std::sync::Mutex;
 use std::time::{Duration, Instant};
 
 /// Default budget of the error check, in complex multiply-adds of the exact reference
 /// (2²² ≈ 4.2 M: a few milliseconds on one core).
 pub const DEFAULT_ERROR_CHECK_BUDGET: u64 = 1 << 22;
-/// Realizations in flight at once are limited so that their buffers (about 72·M² bytes
-/// each for the NUFFT) stay under this many bytes.
+/// Realizations in flight at once are limited so that their buffers stay under this many
+/// bytes: about 56·M² each for the NUFFT (upsampled grid 32·M², kept columns 16·M², output
+/// 8·M²), counted as 64·M².
 const IN_FLIGHT_BYTES: usize = 1 << 30;
 
 /// How a periodogram is computed.
@@ -142,9 +144,10 @@ const STAGE_NAMES: [&str; 5] = ["generate", "spread", "fft", "deconvolve", "erro
 ///
 /// P̄(k) = (1/K) Σ_r P_r(k).
 ///
-/// Realizations run in parallel (rayon) in groups (at most 16, fewer for large M so that the
-/// buffers in flight stay under 1 GiB); the sum runs in realization order on the calling
-/// thread, so the bits do not depend on the number of threads. A NUFFT request builds its
+/// Realizations run in parallel (rayon) in groups (two per thread, at most 16, fewer for
+/// large M so that the buffers in flight stay under 1 GiB; buffers are recycled between
+/// groups); the sum runs in realization order on the calling thread, so the bits do not
+/// depend on the number of threads. A NUFFT request builds its
 /// plan once. For the NUFFT, realization 0 is also compared with the exact periodogram when
 /// the request's error-check budget allows ([`SpectrumReport::error`]).
 ///
@@ -171,7 +174,21 @@ where
         Method::Exact => None,
     };
     let k = req.realizations;
-    let group = (IN_FLIGHT_BYTES / (72 * m * m)).clamp(1, 16);
+    // Realizations in flight: two per thread (so that a slow one does not idle a thread),
+    // fewer when their buffers would pass IN_FLIGHT_BYTES. The sum below runs in realization
+    // order whatever the group size, so the bits do not depend on it.
+    let group = (2 * rayon::current_num_threads())
+        .min(IN_FLIGHT_BYTES / (64 * m * m))
+        .clamp(1, 16);
+    // Periodogram buffers are recycled between groups (fresh M² buffers cost page faults).
+    let buffers: Mutex<Vec<Vec<f64>>> = Mutex::new(Vec::new());
+    let take_buffer = || {
+        buffers
+            .lock()
+            .unwrap_or_else(|e| e.into_inner())
+            .pop()
+            .unwrap_or_default()
+    };
     let one = |r: usize| -> Result<Realization, SpectrumError> {
         cancel.check()?;
         let mut times = [Duration::ZERO; 5];
@@ -184,28 +201,31 @@ where
         times[0] = t0.elapsed();
         check_points(&points)?;
         let mut error = None;
-        let spectrum = match &plan {
+        let power = match &plan {
             Some(plan) => {
-                let (s, t) = plan.periodogram_timed(&points, cancel)?;
+                let mut power = take_buffer();
+                let t = plan.periodogram_into(&points, &mut power, cancel)?;
                 times[1] = t.spread;
                 times[2] = t.fft;
                 times[3] = t.deconvolve;
                 if r == 0 && req.error_check_budget > 0 {
                     let t = Instant::now();
+                    let s = Spectrum::from_power(m, power, points.len());
                     error = error_check(&points, &s, req.error_check_budget, cancel)?;
+                    power = s.power;
                     times[4] = t.elapsed();
                 }
-                s
+                power
             }
             None => {
                 let t = Instant::now();
                 let s = periodogram_exact(&points, m, cancel)?;
                 times[1] = t.elapsed();
-                s
+                s.power
             }
         };
         Ok(Realization {
-            power: spectrum.power,
+            power,
             n_points: points.len(),
             times,
             error,
@@ -228,6 +248,10 @@ where
                 *a += p;
             }
             average_time += t.elapsed();
+            buffers
+                .lock()
+                .unwrap_or_else(|e| e.into_inner())
+                .push(real.power);
             for (total, t) in times.iter_mut().zip(real.times) {
                 *total += t;
             }

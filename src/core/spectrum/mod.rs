@@ -24,6 +24,10 @@
 //! - **Averages** over K realizations are plain means of P; realization r is generated from
 //!   [`crate::core::rng::derive_seed`]`(seed, r)`, and the sum runs in realization order, so the
 //!   result is bit-for-bit the same for any number of threads.
+//! - **Determinism.** Every routine sums in a fixed order (never in thread-arrival order), so
+//!   the same input gives the same bits on every run and for any number of threads. Across
+//!   platforms the bits can differ only through the system's `sin`, `cos` and `exp` (last-ulp
+//!   differences of libm), well below every tolerance.
 //! - **DC.** [`DcMode`] only affects display ([`Spectrum::to_display_image`]); `power` always
 //!   holds the true P(0) = N (mean N over realizations). RAPS and anisotropy always exclude DC.
 //! - **Error metric.** Accuracy is the relative ℓ2 error over all frequencies except DC,
@@ -40,8 +44,10 @@
 //!
 //! [`average_periodogram`] averages K realizations with either method and returns a
 //! [`SpectrumReport`] with the time of every stage and the measured error.
-//! [`radial_average`] gives RAPS (annuli of width 1) and anisotropy; [`pair_correlation`]
-//! gives g(r).
+//! [`radial_average`] gives RAPS over annuli of width 1 (annulus b holds |k| ∈ [b − ½, b + ½),
+//! b ≥ 1, only annuli that the square grid contains completely) and PSA's anisotropy
+//! 10·log10(variance/mean²) per annulus; [`pair_correlation`] gives g(r) on the torus (cell
+//! list; [`pair_correlation_naive`] is the all-pairs reference, N ≤ 16 384).
 
 pub mod average;
 pub mod dft;
@@ -242,7 +248,7 @@ impl Spectrum {
     pub fn at(&self, kx: i64, ky: i64) -> Option<f64> {
         let ix = self.index_of(kx)?;
         let iy = self.index_of(ky)?;
-        Some(self.power[iy * self.m + ix])
+        self.power.get(iy * self.m + ix).copied()
     }
 
     /// Index of DC in `power`: (⌊m/2⌋, ⌊m/2⌋).
@@ -254,11 +260,12 @@ impl Spectrum {
     /// log10 P(k) as `f32`, row-major like `power`, for display. Powers below [`LOG_FLOOR`]
     /// (including exact zeros) map to log10(LOG_FLOOR) = −10. When `dc_masked`, the DC pixel is
     /// painted with the mean power of its 8 neighbours (toroidal wrap on the grid) so that
-    /// P(0) = N neither dominates the colour scale nor leaves a hole.
+    /// P(0) = N neither dominates the colour scale nor leaves a hole (a hand-built spectrum whose
+    /// `power` is not m² long is converted without masking).
     pub fn to_log_image(&self, dc_masked: bool) -> Vec<f32> {
         let to_log = |p: f64| p.max(LOG_FLOOR).log10() as f32;
         let mut image: Vec<f32> = self.power.iter().map(|&p| to_log(p)).collect();
-        if dc_masked {
+        if dc_masked && self.power.len() == self.m * self.m {
             let m = self.m;
             let c = m / 2;
             let mut sum = 0.0;

@@ -9,8 +9,9 @@
 //!
 //! the count divided by its expectation for N uniform i.i.d. points (a binomial process, the
 //! finite-N Poisson process): a pair's displacement is uniform on the torus and the disc of
-//! radius r ≤ ½ lies inside the unit cell, so P(d ∈ bin) is the annulus area exactly (the
-//! 2πr·dr of the continuous definition, without its discretisation error). Hence r_max ≤ ½.
+//! radius r ≤ ½ lies inside the unit cell, so P(d ∈ bin) is the annulus area exactly, which
+//! is the 2π r dr of the continuous definition taken at the bin centre:
+//! π(r₂² − r₁²) = 2π·((r₁ + r₂)/2)·Δ. Hence r_max ≤ ½.
 //! Uniform random points give g ≈ 1; hard-disk or grid patterns give g = 0 below their
 //! minimum distance.
 //!

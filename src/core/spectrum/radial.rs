@@ -12,7 +12,7 @@
 //! so σ²/μ² ≈ 1 → 0 dB for one periodogram and ≈ 1/K → −10·log10 K dB for a mean of K;
 //! an isotropic spectrum approaches that floor, a directional one rises above it.
 
-use super::Spectrum;
+use super::{check_size, Spectrum, SpectrumError};
 
 /// One annulus of the radial average.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -28,23 +28,31 @@ pub struct RadialBin {
 }
 
 /// RAPS and anisotropy of `spectrum` over the complete annuli b = 1, …, b_max of width 1
-/// (see the module docs); empty for M ≤ 3 (even) / M = 1 (odd).
-pub fn radial_average(spectrum: &Spectrum) -> Vec<RadialBin> {
+/// (see the module docs); empty for M = 2 (one frequency on each side of DC is no annulus).
+///
+/// # Errors
+/// [`SpectrumError::InvalidParam`] naming `power` when `power.len() ≠ m²` (a hand-built
+/// [`Spectrum`]); [`SpectrumError::InvalidSize`] when m is out of range.
+pub fn radial_average(spectrum: &Spectrum) -> Result<Vec<RadialBin>, SpectrumError> {
     let m = spectrum.m;
-    let b_max = if m % 2 == 0 {
-        (m / 2).saturating_sub(1)
-    } else {
-        (m - 1) / 2
-    };
+    check_size(m)?;
+    if spectrum.power.len() != m * m {
+        return Err(SpectrumError::InvalidParam {
+            field: "power",
+            value: format!("{} values", spectrum.power.len()),
+            allowed: format!("m² = {} values", m * m),
+        });
+    }
+    let b_max = if m % 2 == 0 { m / 2 - 1 } else { (m - 1) / 2 };
     if b_max == 0 {
-        return Vec::new();
+        return Ok(Vec::new());
     }
     let c = (m / 2) as i64;
     // Annulus index of every frequency inside the largest complete annulus.
     let bin_of = |ix: usize, iy: usize| -> Option<usize> {
         let (kx, ky) = (ix as i64 - c, iy as i64 - c);
         let b = ((kx * kx + ky * ky) as f64).sqrt().round() as usize;
-        (1..=b_max).contains(&b).then_some(b - 1)
+        (1..=b_max).contains(&b).then(|| b - 1)
     };
     let mut sum = vec![0.0f64; b_max];
     let mut count = vec![0usize; b_max];
@@ -66,7 +74,7 @@ pub fn radial_average(spectrum: &Spectrum) -> Vec<RadialBin> {
             }
         }
     }
-    (0..b_max)
+    Ok((0..b_max)
         .map(|b| {
             let variance = squares[b] / count[b] as f64;
             RadialBin {
@@ -76,5 +84,5 @@ pub fn radial_average(spectrum: &Spectrum) -> Vec<RadialBin> {
                 anisotropy_db: 10.0 * (variance / (mean[b] * mean[b])).log10(),
             }
         })
-        .collect()
+        .collect())
 }
