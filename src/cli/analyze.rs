@@ -136,7 +136,7 @@ pub fn run(args: &AnalyzeArgs) -> Result<(), CliError> {
     for (name, d) in &report.stages {
         timings.push((format!("spectrum {name}"), d.as_secs_f64() * 1e3));
     }
-    let bins = radial_average(&spec);
+    let bins = radial_average(&spec).map_err(|e| CliError::Usage(e.to_string()))?;
 
     if let Some(path) = &args.spectrum {
         let m = spec.m;

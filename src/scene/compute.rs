@@ -563,7 +563,7 @@ fn spectrum(scene: &Scene, c: usize, cancel: &Cancel) -> Output {
             .unwrap_or(0.0)
     };
     let auto_range = (pick(0.02), pick(0.998).max(pick(0.02) + 1e-3));
-    let bins = radial_average(&spec);
+    let bins = radial_average(&spec).map_err(|e| e.to_string())?;
     let raps = bins.iter().map(|b| [b.radius, b.mean_power]).collect();
     let anisotropy = bins
         .iter()
