@@ -19,7 +19,9 @@ fn rmse_and_psnr_closed_forms() {
     assert!((rmse(&a, &b).unwrap() - 0.1).abs() < 1e-15);
     assert!((psnr(0.1) - 20.0).abs() < 1e-12);
     // Alternating ±0.25: rmse 0.25, psnr 20·log10(4) = 12.0412 dB.
-    let c: Vec<f64> = (0..n).map(|k| 0.5 + if k % 2 == 0 { 0.25 } else { -0.25 }).collect();
+    let c: Vec<f64> = (0..n)
+        .map(|k| 0.5 + if k % 2 == 0 { 0.25 } else { -0.25 })
+        .collect();
     let half = vec![0.5; n];
     assert_eq!(rmse(&c, &half).unwrap(), 0.25);
     assert!((psnr(0.25) - 12.041_199_826_559_248).abs() < 1e-12);
@@ -36,7 +38,11 @@ fn rmse_and_psnr_closed_forms() {
 fn rmse_rejects_mismatched_or_empty_images() {
     assert!(matches!(
         rmse(&[0.0; 4], &[0.0; 5]),
-        Err(ReconError::LengthMismatch { got: 5, expected: 4, .. })
+        Err(ReconError::LengthMismatch {
+            got: 5,
+            expected: 4,
+            ..
+        })
     ));
     assert!(rmse(&[], &[]).is_err());
 }
@@ -63,6 +69,9 @@ fn error_report_counts_zero_weight_pixels_with_their_fill() {
     assert!((e.psnr - 10.0 * (16.0f64 / 3.0).log10()).abs() < 1e-12);
     let mut bad = reference.clone();
     bad[3] = f64::NAN;
-    assert!(error_report(&r, &bad).unwrap_err().to_string().starts_with("reference[3] = NaN"));
+    assert!(error_report(&r, &bad)
+        .unwrap_err()
+        .to_string()
+        .starts_with("reference[3] = NaN"));
     assert!(error_report(&r, &reference[..15]).is_err());
 }

@@ -51,7 +51,10 @@ fn grid_tent_is_bilinear_interpolation_inside() {
             let at = |x: usize, y: usize| v[y * g + x];
             let bilinear = (1.0 - fy) * ((1.0 - fx) * at(a, b) + fx * at(a + 1, b))
                 + fy * ((1.0 - fx) * at(a, b + 1) + fx * at(a + 1, b + 1));
-            assert!((r.pixels[j * w + i] - bilinear).abs() < 1e-14, "pixel ({i},{j})");
+            assert!(
+                (r.pixels[j * w + i] - bilinear).abs() < 1e-14,
+                "pixel ({i},{j})"
+            );
         }
     }
 }
@@ -122,7 +125,9 @@ fn grid_rejects_bad_sizes() {
         Err(e) => e.to_string(),
         Ok(_) => panic!("accepted"),
     };
-    assert!(e(resample_grid(&sig, 0, 16, &k, &c)).starts_with("g = 0: must be an integer in 1..=4096"));
+    assert!(
+        e(resample_grid(&sig, 0, 16, &k, &c)).starts_with("g = 0: must be an integer in 1..=4096")
+    );
     assert!(e(resample_grid(&sig, 4097, 16, &k, &c)).starts_with("g = 4097"));
     assert!(e(resample_grid(&sig, 8, 0, &k, &c)).starts_with("w = 0"));
 }

@@ -201,10 +201,7 @@ fn grating_exact_integral_matches_supersampled_and_estimate_is_conservative() {
     let w = 24;
     let exact = reference_image(&g, w).unwrap();
     assert_eq!(exact.method, ReferenceMethod::ExactIntegral);
-    let opts = ReferenceOptions {
-        strata: 4,
-        seed: 3,
-    };
+    let opts = ReferenceOptions { strata: 4, seed: 3 };
     let ss = reference_supersampled(&g, w, &opts, &Cancel::never()).unwrap();
     let true_err = rmse(&exact.pixels, &ss.pixels).unwrap();
     let est = ss.error_estimate.unwrap();
@@ -215,7 +212,10 @@ fn grating_exact_integral_matches_supersampled_and_estimate_is_conservative() {
     assert!(true_err < 1e-2, "supersampled vs exact: {true_err:e}");
     // The estimate measures the coarser pass: it must not under-estimate the returned image's
     // error, and should not be wildly pessimistic either.
-    assert!(est >= true_err && est < 20.0 * true_err, "estimate {est:e}, true {true_err:e}");
+    assert!(
+        est >= true_err && est < 20.0 * true_err,
+        "estimate {est:e}, true {true_err:e}"
+    );
 }
 
 #[test]
@@ -238,10 +238,18 @@ fn sum_of_sines_and_square_exact_integrals_match_quadrature() {
                 .map(|k| sig.eval1((i as f64 + (k as f64 + 0.5) / m as f64) / w as f64))
                 .sum::<f64>()
                 / m as f64;
-            let tol = if matches!(sig, Signal::Square(_)) { 2.0 / m as f64 } else { 1e-8 };
+            let tol = if matches!(sig, Signal::Square(_)) {
+                2.0 / m as f64
+            } else {
+                1e-8
+            };
             for j in [0, w / 2, w - 1] {
                 let got = r.pixels[j * w + i];
-                assert!((got - q).abs() <= tol, "{} pixel {i}: {got} vs {q}", sig.name());
+                assert!(
+                    (got - q).abs() <= tol,
+                    "{} pixel {i}: {got} vs {q}",
+                    sig.name()
+                );
             }
         }
     }
@@ -264,7 +272,11 @@ fn zone_plate_reference_is_supersampled_with_shrinking_estimate() {
     // Same options → same bits.
     let a = reference_image_with(&z, 16, &ReferenceOptions::default(), &c).unwrap();
     let b = reference_image_with(&z, 16, &ReferenceOptions::default(), &c).unwrap();
-    assert!(a.pixels.iter().zip(&b.pixels).all(|(x, y)| x.to_bits() == y.to_bits()));
+    assert!(a
+        .pixels
+        .iter()
+        .zip(&b.pixels)
+        .all(|(x, y)| x.to_bits() == y.to_bits()));
 }
 
 #[test]
@@ -275,8 +287,13 @@ fn unresolved_zone_plate_reports_large_error_estimate() {
         k: 20_000.0,
         ..Default::default()
     });
-    let r = reference_image_with(&z, 16, &ReferenceOptions { strata: 2, seed: 5 }, &Cancel::never())
-        .unwrap();
+    let r = reference_image_with(
+        &z,
+        16,
+        &ReferenceOptions { strata: 2, seed: 5 },
+        &Cancel::never(),
+    )
+    .unwrap();
     assert!(r.error_estimate.unwrap() > 0.05, "{:?}", r.error_estimate);
 }
 
@@ -289,10 +306,23 @@ fn reference_rejects_bad_input() {
         Ok(_) => panic!("accepted"),
     };
     assert!(err(reference_image(&z, 0)).starts_with("w = 0: must be an integer in 1..=8192"));
-    assert!(err(reference_image_with(&z, 8, &ReferenceOptions { strata: 0, seed: 0 }, &c))
-        .starts_with("strata = 0"));
-    assert!(err(reference_image_with(&z, 8, &ReferenceOptions { strata: 65, seed: 0 }, &c))
-        .starts_with("strata = 65"));
+    assert!(err(reference_image_with(
+        &z,
+        8,
+        &ReferenceOptions { strata: 0, seed: 0 },
+        &c
+    ))
+    .starts_with("strata = 0"));
+    assert!(err(reference_image_with(
+        &z,
+        8,
+        &ReferenceOptions {
+            strata: 65,
+            seed: 0
+        },
+        &c
+    ))
+    .starts_with("strata = 65"));
     let bad = Signal::ZonePlate(ZonePlate {
         k: f64::INFINITY,
         ..Default::default()

@@ -7,8 +7,8 @@ use samplescope::core::recon::kernels::{
     BoxKernel, ConeKernel, GaussianKernel, LanczosKernel, NonSeparable, TentKernel,
 };
 use samplescope::core::recon::{
-    reconstruct_scattered, reconstruct_scattered_gather, sample_signal, ReconError,
-    ReconKernel, Reconstruction, ZERO_WEIGHT_FILL,
+    reconstruct_scattered, reconstruct_scattered_gather, sample_signal, ReconError, ReconKernel,
+    Reconstruction, ZERO_WEIGHT_FILL,
 };
 use samplescope::core::rng::Rng;
 use samplescope::core::signal::{Signal, ZonePlate};
@@ -37,7 +37,11 @@ fn brute_force<K: ReconKernel>(points: &[DVec2], values: &[f64], w: usize, k: &K
                 num += wt * v;
                 den += wt;
             }
-            out[j * w + i] = if den == 0.0 { ZERO_WEIGHT_FILL } else { num / den };
+            out[j * w + i] = if den == 0.0 {
+                ZERO_WEIGHT_FILL
+            } else {
+                num / den
+            };
         }
     }
     out
@@ -45,7 +49,10 @@ fn brute_force<K: ReconKernel>(points: &[DVec2], values: &[f64], w: usize, k: &K
 
 fn max_diff(a: &[f64], b: &[f64]) -> f64 {
     assert_eq!(a.len(), b.len());
-    a.iter().zip(b).map(|(x, y)| (x - y).abs()).fold(0.0, f64::max)
+    a.iter()
+        .zip(b)
+        .map(|(x, y)| (x - y).abs())
+        .fold(0.0, f64::max)
 }
 
 fn zone_values(points: &[DVec2]) -> Vec<f64> {
@@ -221,10 +228,18 @@ fn scattered_is_deterministic() {
     let k = TentKernel { radius: 1.0 };
     let a: Reconstruction = reconstruct_scattered(&points, &values, 50, &k, &c).unwrap();
     let b = reconstruct_scattered(&points, &values, 50, &k, &c).unwrap();
-    assert!(a.pixels.iter().zip(&b.pixels).all(|(x, y)| x.to_bits() == y.to_bits()));
+    assert!(a
+        .pixels
+        .iter()
+        .zip(&b.pixels)
+        .all(|(x, y)| x.to_bits() == y.to_bits()));
     let a = reconstruct_scattered_gather(&points, &values, 50, &k, &c).unwrap();
     let b = reconstruct_scattered_gather(&points, &values, 50, &k, &c).unwrap();
-    assert!(a.pixels.iter().zip(&b.pixels).all(|(x, y)| x.to_bits() == y.to_bits()));
+    assert!(a
+        .pixels
+        .iter()
+        .zip(&b.pixels)
+        .all(|(x, y)| x.to_bits() == y.to_bits()));
 }
 
 #[test]
@@ -234,20 +249,32 @@ fn scattered_rejects_bad_input_naming_the_field() {
     let pts = random_points(10, 10);
     let vals = vec![0.5; 10];
     let msg = |r: Result<Reconstruction, ReconError>| r.unwrap_err().to_string();
-    assert!(msg(reconstruct_scattered(&pts, &vals, 0, &k, &c)).starts_with("w = 0: must be an integer in 1..=8192"));
+    assert!(msg(reconstruct_scattered(&pts, &vals, 0, &k, &c))
+        .starts_with("w = 0: must be an integer in 1..=8192"));
     assert!(msg(reconstruct_scattered(&pts, &vals, 8193, &k, &c)).starts_with("w = 8193"));
-    assert!(msg(reconstruct_scattered(&[], &[], 8, &k, &c)).starts_with("n = 0: must be an integer in 1..="));
-    assert!(msg(reconstruct_scattered(&pts, &vals[..9], 8, &k, &c)).starts_with("values has 9 entries but must have 10"));
+    assert!(msg(reconstruct_scattered(&[], &[], 8, &k, &c))
+        .starts_with("n = 0: must be an integer in 1..="));
+    assert!(msg(reconstruct_scattered(&pts, &vals[..9], 8, &k, &c))
+        .starts_with("values has 9 entries but must have 10"));
     let mut bad = vals.clone();
     bad[3] = f64::NAN;
-    assert!(msg(reconstruct_scattered(&pts, &bad, 8, &k, &c)).starts_with("values[3] = NaN: must be finite"));
+    assert!(msg(reconstruct_scattered(&pts, &bad, 8, &k, &c))
+        .starts_with("values[3] = NaN: must be finite"));
     let mut badp = pts.clone();
     badp[2] = DVec2::new(1.5, 0.2);
-    assert!(msg(reconstruct_scattered(&badp, &vals, 8, &k, &c)).starts_with("points[2] = (1.5, 0.2): must lie in [0,1]²"));
+    assert!(msg(reconstruct_scattered(&badp, &vals, 8, &k, &c))
+        .starts_with("points[2] = (1.5, 0.2): must lie in [0,1]²"));
     badp[2] = DVec2::new(f64::INFINITY, 0.2);
-    assert!(msg(reconstruct_scattered_gather(&badp, &vals, 8, &k, &c)).starts_with("points[2] = inf: must be finite"));
+    assert!(msg(reconstruct_scattered_gather(&badp, &vals, 8, &k, &c))
+        .starts_with("points[2] = inf: must be finite"));
     for radius in [0.0, -1.0, f64::NAN, 65.0] {
-        let e = msg(reconstruct_scattered(&pts, &vals, 8, &TentKernel { radius }, &c));
+        let e = msg(reconstruct_scattered(
+            &pts,
+            &vals,
+            8,
+            &TentKernel { radius },
+            &c,
+        ));
         assert!(e.starts_with("kernel support"), "{e}");
     }
 }

@@ -12,7 +12,9 @@ use samplescope::core::rng::{derive_seed, Rng};
 use samplescope::core::signal::{Constant, Polygon, Signal, ZonePlate};
 
 /// An inline jitter provider (independent of the library's): per-pixel stream, k×k strata.
-fn inline_jitter(seed: u64) -> impl Fn(u64, usize, &mut Vec<DVec2>) -> Result<(), ReconError> + Sync {
+fn inline_jitter(
+    seed: u64,
+) -> impl Fn(u64, usize, &mut Vec<DVec2>) -> Result<(), ReconError> + Sync {
     move |pixel, spp, out| {
         let k = (spp as f64).sqrt() as usize;
         assert_eq!(k * k, spp, "inline jitter wants square spp");
@@ -36,7 +38,10 @@ fn jittered_supersampling_error_decreases_with_spp() {
     let sig = Signal::Polygon(Polygon::default());
     let c = Cancel::never();
     let k = BoxKernel { radius: 0.5 };
-    for provider in [&inline_jitter(1) as &dyn SampleProvider, &Jittered { seed: 1 }] {
+    for provider in [
+        &inline_jitter(1) as &dyn SampleProvider,
+        &Jittered { seed: 1 },
+    ] {
         let curve = convergence_curve(&sig, provider, &[1, 4, 16, 64], 32, &k, &c).unwrap();
         assert_eq!(curve.reference_error, None);
         let e: Vec<f64> = curve.points.iter().map(|p| p.rmse).collect();
@@ -61,18 +66,34 @@ fn box_half_pixel_is_the_plain_mean_of_the_pixel_samples() {
     });
     let (w, spp) = (20, 9);
     let prov = inline_jitter(5);
-    let r = supersample(&sig, w, spp, &prov, &BoxKernel { radius: 0.5 }, &Cancel::never()).unwrap();
+    let r = supersample(
+        &sig,
+        w,
+        spp,
+        &prov,
+        &BoxKernel { radius: 0.5 },
+        &Cancel::never(),
+    )
+    .unwrap();
     let mut buf = Vec::new();
     for j in 0..w {
         for i in 0..w {
             buf.clear();
-            prov(( j * w + i) as u64, spp, &mut buf).unwrap();
+            prov((j * w + i) as u64, spp, &mut buf).unwrap();
             let mean = buf
                 .iter()
-                .map(|u| sig.eval(DVec2::new((i as f64 + u.x) / w as f64, (j as f64 + u.y) / w as f64)))
+                .map(|u| {
+                    sig.eval(DVec2::new(
+                        (i as f64 + u.x) / w as f64,
+                        (j as f64 + u.y) / w as f64,
+                    ))
+                })
                 .sum::<f64>()
                 / spp as f64;
-            assert!((r.pixels[j * w + i] - mean).abs() < 1e-14, "pixel ({i},{j})");
+            assert!(
+                (r.pixels[j * w + i] - mean).abs() < 1e-14,
+                "pixel ({i},{j})"
+            );
         }
     }
 }
@@ -87,7 +108,10 @@ fn wide_pixel_filter_gathers_neighbouring_pixels_samples() {
     let (w, spp) = (14, 4);
     let prov = Jittered { seed: 9 };
     let c = Cancel::never();
-    for k in [&TentKernel { radius: 1.5 } as &dyn ReconKernel, &LanczosKernel { a: 2.0 }] {
+    for k in [
+        &TentKernel { radius: 1.5 } as &dyn ReconKernel,
+        &LanczosKernel { a: 2.0 },
+    ] {
         let r = supersample(&sig, w, spp, &prov, k, &c).unwrap();
         let mut samples = Vec::new();
         let mut buf = Vec::new();
@@ -109,7 +133,11 @@ fn wide_pixel_filter_gathers_neighbouring_pixels_samples() {
                     den += wt;
                 }
                 let got = r.pixels[j * w + i];
-                assert!((got - num / den).abs() < 1e-12, "pixel ({i},{j}): {got} vs {}", num / den);
+                assert!(
+                    (got - num / den).abs() < 1e-12,
+                    "pixel ({i},{j}): {got} vs {}",
+                    num / den
+                );
             }
         }
     }
@@ -119,10 +147,17 @@ fn wide_pixel_filter_gathers_neighbouring_pixels_samples() {
 fn constant_signal_supersamples_exactly() {
     let sig = Signal::Constant(Constant { value: 0.37 });
     let c = Cancel::never();
-    for k in [&BoxKernel { radius: 0.5 } as &dyn ReconKernel, &TentKernel { radius: 2.0 }] {
+    for k in [
+        &BoxKernel { radius: 0.5 } as &dyn ReconKernel,
+        &TentKernel { radius: 2.0 },
+    ] {
         let r = supersample(&sig, 16, 16, &Jittered { seed: 2 }, k, &c).unwrap();
         assert_eq!(r.zero_weight, 0);
-        let d = r.pixels.iter().map(|p| (p - 0.37).abs()).fold(0.0, f64::max);
+        let d = r
+            .pixels
+            .iter()
+            .map(|p| (p - 0.37).abs())
+            .fold(0.0, f64::max);
         assert!(d < 1e-15, "max deviation {d:e}");
     }
 }
@@ -131,7 +166,15 @@ fn constant_signal_supersamples_exactly() {
 fn uniform_grid_spp1_is_point_sampling_at_centres() {
     let sig = Signal::ZonePlate(ZonePlate::default());
     let w = 24;
-    let r = supersample(&sig, w, 1, &UniformGrid, &BoxKernel { radius: 0.5 }, &Cancel::never()).unwrap();
+    let r = supersample(
+        &sig,
+        w,
+        1,
+        &UniformGrid,
+        &BoxKernel { radius: 0.5 },
+        &Cancel::never(),
+    )
+    .unwrap();
     for j in 0..w {
         for i in 0..w {
             let c = DVec2::new((i as f64 + 0.5) / w as f64, (j as f64 + 0.5) / w as f64);
@@ -148,9 +191,16 @@ fn supersample_deterministic_and_thread_count_independent() {
     let c = Cancel::never();
     let run = || supersample(&sig, 32, 4, &Jittered { seed: 11 }, &k, &c).unwrap();
     let a = run();
-    let pool = rayon::ThreadPoolBuilder::new().num_threads(1).build().unwrap();
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(1)
+        .build()
+        .unwrap();
     let b = pool.install(run);
-    assert!(a.pixels.iter().zip(&b.pixels).all(|(x, y)| x.to_bits() == y.to_bits()));
+    assert!(a
+        .pixels
+        .iter()
+        .zip(&b.pixels)
+        .all(|(x, y)| x.to_bits() == y.to_bits()));
 }
 
 fn err(r: Result<Reconstruction, ReconError>) -> ReconError {
@@ -166,9 +216,15 @@ fn supersample_rejects_bad_input_and_bad_providers() {
     let k = BoxKernel { radius: 0.5 };
     let c = Cancel::never();
     let j = Jittered { seed: 0 };
-    assert!(err(supersample(&sig, 0, 4, &j, &k, &c)).to_string().starts_with("w = 0: must be an integer in 1..=8192"));
-    assert!(err(supersample(&sig, 8, 0, &j, &k, &c)).to_string().starts_with("spp = 0: must be an integer in 1..=4096"));
-    assert!(err(supersample(&sig, 8, 4097, &j, &k, &c)).to_string().starts_with("spp = 4097"));
+    assert!(err(supersample(&sig, 0, 4, &j, &k, &c))
+        .to_string()
+        .starts_with("w = 0: must be an integer in 1..=8192"));
+    assert!(err(supersample(&sig, 8, 0, &j, &k, &c))
+        .to_string()
+        .starts_with("spp = 0: must be an integer in 1..=4096"));
+    assert!(err(supersample(&sig, 8, 4097, &j, &k, &c))
+        .to_string()
+        .starts_with("spp = 4097"));
     let e = err(supersample(&sig, 8, 3, &UniformGrid, &k, &c));
     assert!(matches!(e, ReconError::ProviderSpp { spp: 3, .. }), "{e}");
     let short = |_: u64, _: usize, out: &mut Vec<DVec2>| {
@@ -176,7 +232,10 @@ fn supersample_rejects_bad_input_and_bad_providers() {
         Ok(())
     };
     let e = err(supersample(&sig, 8, 2, &short, &k, &c));
-    assert!(matches!(e, ReconError::ProviderCount { got: 1, spp: 2, .. }), "{e}");
+    assert!(
+        matches!(e, ReconError::ProviderCount { got: 1, spp: 2, .. }),
+        "{e}"
+    );
     let outside = |_: u64, spp: usize, out: &mut Vec<DVec2>| {
         out.extend(std::iter::repeat_n(DVec2::new(1.0, 0.5), spp));
         Ok(())
@@ -187,10 +246,15 @@ fn supersample_rejects_bad_input_and_bad_providers() {
         cx: f64::NAN,
         ..Default::default()
     });
-    assert!(err(supersample(&bad, 8, 1, &j, &k, &c)).to_string().starts_with("zone-plate.cx = NaN"));
+    assert!(err(supersample(&bad, 8, 1, &j, &k, &c))
+        .to_string()
+        .starts_with("zone-plate.cx = NaN"));
     let cancelled = Cancel::new();
     cancelled.cancel();
-    assert_eq!(err(supersample(&sig, 8, 1, &j, &k, &cancelled)), ReconError::Cancelled);
+    assert_eq!(
+        err(supersample(&sig, 8, 1, &j, &k, &cancelled)),
+        ReconError::Cancelled
+    );
     // 8192² pixels × 4096 spp is far beyond the work limit.
     let e = err(supersample(&sig, 8192, 4096, &j, &k, &c));
     assert!(matches!(e, ReconError::TooMuchWork { .. }), "{e}");

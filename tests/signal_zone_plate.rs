@@ -80,7 +80,10 @@ fn zone_plate_non_dyadic_grid_within_input_rounding_bound() {
         let e = max_error(k, w, 500, 500, 20_000, k, false);
         let bound = (k as f64) * 3.5e-16 + 1e-14;
         eprintln!("W = 1000, K = {k}: max error {e:e}");
-        assert!(e < 1e-9 && e < bound, "K = {k}: max error {e:e} (bound {bound:e})");
+        assert!(
+            e < 1e-9 && e < bound,
+            "K = {k}: max error {e:e} (bound {bound:e})"
+        );
     }
 }
 
@@ -96,6 +99,10 @@ fn zone_plate_local_frequency_is_k_rho() {
     let phase = |x: f64| std::f64::consts::PI * z.k * (x - 0.5) * (x - 0.5);
     let h = 1e-6;
     let f = (phase(p.x + h) - phase(p.x - h)) / (2.0 * h) / (2.0 * std::f64::consts::PI);
-    assert!((f - z.local_frequency(p)).abs() < 1e-6, "{f} vs {}", z.local_frequency(p));
+    assert!(
+        (f - z.local_frequency(p)).abs() < 1e-6,
+        "{f} vs {}",
+        z.local_frequency(p)
+    );
     assert!((z.local_frequency(p) - 90.0).abs() < 1e-12);
 }

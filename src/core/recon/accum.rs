@@ -23,15 +23,60 @@ pub(crate) fn offset(k: usize, x: f64, inv_scale: f64) -> f64 {
 
 /// The inclusive pixel range [lo, hi] whose centres lie within `r_px` (+ pad) of `x`, clipped
 /// to [0, w − 1]; `None` when empty.
+///
+/// Written with truncating casts instead of `ceil`/`floor`, which are library calls on
+/// baseline x86-64; positions are finite and |x| + r_px < 2⁶² (checked by the callers).
 #[inline(always)]
 pub(crate) fn pixel_range(x: f64, r_px: f64, w: usize) -> Option<(usize, usize)> {
-    let lo = (x - 0.5 - r_px - PAD).ceil().max(0.0);
-    let hi = (x - 0.5 + r_px + PAD).floor().min((w - 1) as f64);
-    if hi < lo || hi.is_nan() || lo.is_nan() {
+    let a = x - 0.5 - r_px - PAD;
+    let b = x - 0.5 + r_px + PAD;
+    // b < 0 (or NaN): every centre is to the right of the support.
+    if b.is_nan() || b < 0.0 {
+        return None;
+    }
+    let lo = if a > 0.0 {
+        let t = a as u64; // ⌊a⌋ for a ≥ 0
+        if (t as f64) < a {
+            t + 1
+        } else {
+            t
+        }
+    } else {
+        0
+    };
+    let hi = (b as u64).min(w as u64 - 1); // ⌊b⌋ for b ≥ 0
+    if hi < lo {
         None
     } else {
         Some((lo as usize, hi as usize))
     }
+}
+
+/// The order in which to splat samples at pixel positions `pos`: sorted (stably) by 64×64-pixel
+/// tile, row-major, so that consecutive splats touch memory that is already in cache.
+pub(crate) fn tile_order(pos: impl Iterator<Item = DVec2> + Clone, w: usize) -> Vec<u32> {
+    const TILE: f64 = 64.0;
+    let tiles = w.div_ceil(64).max(1);
+    let key = |p: DVec2| {
+        let tx = ((p.x.max(0.0) / TILE) as usize).min(tiles - 1);
+        let ty = ((p.y.max(0.0) / TILE) as usize).min(tiles - 1);
+        ty * tiles + tx
+    };
+    let mut start = vec![0u32; tiles * tiles + 1];
+    for p in pos.clone() {
+        start[key(p) + 1] += 1;
+    }
+    for k in 0..tiles * tiles {
+        start[k + 1] += start[k];
+    }
+    let n = start[tiles * tiles] as usize;
+    let mut order = vec![0u32; n];
+    for (j, p) in pos.enumerate() {
+        let k = key(p);
+        order[start[k] as usize] = j as u32;
+        start[k] += 1;
+    }
+    order
 }
 
 /// Running sums Σ w·v and Σ w per pixel (interleaved for locality).
@@ -80,13 +125,11 @@ impl<'k, K: ReconKernel + ?Sized> Accum<'k, K> {
         if self.separable {
             let kernel = self.kernel;
             self.hx.clear();
-            self.hx.extend(
-                (i0..=i1).map(|i| kernel.factor(offset(i, x.x, s)).unwrap_or(0.0)),
-            );
+            self.hx
+                .extend((i0..=i1).map(|i| kernel.factor(offset(i, x.x, s)).unwrap_or(0.0)));
             self.hy.clear();
-            self.hy.extend(
-                (j0..=j1).map(|j| kernel.factor(offset(j, x.y, s)).unwrap_or(0.0)),
-            );
+            self.hy
+                .extend((j0..=j1).map(|j| kernel.factor(offset(j, x.y, s)).unwrap_or(0.0)));
             for (j, &wy) in (j0..=j1).zip(&self.hy) {
                 if wy == 0.0 {
                     continue;

@@ -45,8 +45,8 @@ mod accum;
 pub use convergence::{convergence_curve, ConvergenceCurve, ConvergencePoint, DEFAULT_SPP_LIST};
 pub use grid::{resample_grid, sample_grid};
 pub use reference::{
-    reference_image, reference_image_with, reference_supersampled, ReferenceImage,
-    ReferenceMethod, ReferenceOptions,
+    reference_image, reference_image_with, reference_supersampled, ReferenceImage, ReferenceMethod,
+    ReferenceOptions,
 };
 pub use scattered::{reconstruct_scattered, reconstruct_scattered_gather, sample_signal};
 pub use supersample::{supersample, Jittered, PatternProvider, SampleProvider, UniformGrid};
@@ -135,7 +135,9 @@ pub enum ReconError {
     #[error("kernel support = {support}: must be a finite number in (0, {max}]")]
     InvalidSupport { support: f64, max: f64 },
     /// The kernel produced a non-finite weight (first affected pixel given).
-    #[error("kernel weights at pixel {pixel} are not finite: the kernel must return finite weights")]
+    #[error(
+        "kernel weights at pixel {pixel} are not finite: the kernel must return finite weights"
+    )]
     NonFiniteWeight { pixel: usize },
     /// The signal's parameters are invalid.
     #[error(transparent)]

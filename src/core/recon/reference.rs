@@ -106,19 +106,21 @@ pub fn reference_image_with(
     let exact = match signal {
         Signal::StepEdge(s) => {
             let (n, b) = s.half_plane();
-            Some((ReferenceMethod::ExactArea, area_image(&[(n, b)], w, cancel)?))
+            Some((
+                ReferenceMethod::ExactArea,
+                area_image(&[(n, b)], w, cancel)?,
+            ))
         }
         Signal::Polygon(p) => {
             let planes = half_planes(&p.vertices());
             Some((ReferenceMethod::ExactArea, area_image(&planes, w, cancel)?))
         }
-        Signal::Grating(_)
-        | Signal::SumOfSines(_)
-        | Signal::Square(_)
-        | Signal::Constant(_) => Some((
-            ReferenceMethod::ExactIntegral,
-            per_pixel(w, cancel, |i, j| box_integral(signal, i, j, w))?,
-        )),
+        Signal::Grating(_) | Signal::SumOfSines(_) | Signal::Square(_) | Signal::Constant(_) => {
+            Some((
+                ReferenceMethod::ExactIntegral,
+                per_pixel(w, cancel, |i, j| box_integral(signal, i, j, w))?,
+            ))
+        }
         Signal::ZonePlate(_) | Signal::Checkerboard(_) | Signal::Chirp(_) => None,
     };
     match exact {
@@ -211,11 +213,7 @@ where
 }
 
 /// Area coverage of every pixel by the intersection of half-planes {p : a·p ≥ b}.
-fn area_image(
-    planes: &[(DVec2, f64)],
-    w: usize,
-    cancel: &Cancel,
-) -> Result<Vec<f64>, ReconError> {
+fn area_image(planes: &[(DVec2, f64)], w: usize, cancel: &Cancel) -> Result<Vec<f64>, ReconError> {
     per_pixel(w, cancel, |i, j| pixel_coverage(planes, i, j, w))
 }
 

@@ -19,8 +19,8 @@
 
 use super::accum::{splat_work, Accum};
 use super::{
-    check_cancel, check_size, check_support, check_work, ReconError, ReconKernel,
-    Reconstruction, MAX_SPP, MAX_W,
+    check_cancel, check_size, check_support, check_work, ReconError, ReconKernel, Reconstruction,
+    MAX_SPP, MAX_W,
 };
 use crate::core::cancel::Cancel;
 use crate::core::pattern::{clamp_unit, divisor_near_sqrt, Pattern};
@@ -145,10 +145,7 @@ where
     let support = check_support(kernel)?;
     let mut acc = Accum::new(w, kernel, support, 1.0);
     let n = w * w * spp;
-    check_work(
-        "supersampling",
-        splat_work(n, acc.r_px(), w) + n as u128,
-    )?;
+    check_work("supersampling", splat_work(n, acc.r_px(), w) + n as u128)?;
     let rows_per_batch = (BATCH_SAMPLES / (w * spp)).clamp(1, w);
     let wf = w as f64;
     let mut j0 = 0;

@@ -154,7 +154,10 @@ mod tests {
         // Ground point (X, Y) = (1, 4): v = height/Y = 0.5, u = X·v/height = 0.25.
         let p = DVec2::new(0.5 + 0.25, 0.3 + 0.5);
         let g = c.ground_checks(p).unwrap();
-        assert!((g.x - 1.0).abs() < 1e-15 && (g.y - 4.0).abs() < 1e-15, "{g}");
+        assert!(
+            (g.x - 1.0).abs() < 1e-15 && (g.y - 4.0).abs() < 1e-15,
+            "{g}"
+        );
     }
 
     #[test]

@@ -205,7 +205,10 @@ mod tests {
     fn serde_round_trip_with_kind_tag() {
         for s in Signal::all() {
             let json = serde_json::to_string(&s).unwrap();
-            assert!(json.contains(&format!("\"kind\":\"{}\"", s.name())), "{json}");
+            assert!(
+                json.contains(&format!("\"kind\":\"{}\"", s.name())),
+                "{json}"
+            );
             let back: Signal = serde_json::from_str(&json).unwrap();
             assert_eq!(back, s);
         }
@@ -268,10 +271,7 @@ mod tests {
                 Signal::Square(Square { frequency: 0.0 }),
                 "square.frequency",
             ),
-            (
-                Signal::Constant(Constant { value: 1.5 }),
-                "constant.value",
-            ),
+            (Signal::Constant(Constant { value: 1.5 }), "constant.value"),
         ];
         for (s, field) in cases {
             let e = s.validate().unwrap_err().to_string();
