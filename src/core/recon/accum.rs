@@ -212,3 +212,67 @@ pub(crate) fn splat_work(n: usize, r_px: f64, w: usize) -> u128 {
     };
     n as u128 * per_axis * per_axis
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The definition: every k in 0..w with |k + ½ − x| < r (pixel centres inside the support).
+    fn naive_range(x: f64, r: f64, w: usize) -> Option<(usize, usize)> {
+        let ks: Vec<usize> = (0..w)
+            .filter(|&k| ((k as f64 + 0.5) - x).abs() < r)
+            .collect();
+        ks.first().map(|&lo| (lo, *ks.last().unwrap_or(&lo)))
+    }
+
+    #[test]
+    fn pixel_range_matches_definition_at_borders_and_outside() {
+        let w = 10;
+        for &x in &[
+            0.0, 0.2, 0.5, 0.51, 1.0, 3.3, 9.49, 9.5, 9.99, 10.0, -0.7, -3.0, 10.4, 14.0,
+        ] {
+            for &r in &[0.3, 0.5, 1.0, 1.25, 2.5, 20.0] {
+                let got = pixel_range(x, r, w);
+                let want = naive_range(x, r, w);
+                // The padded range may include a centre at distance exactly r (weight 0).
+                match (got, want) {
+                    (Some((a, b)), Some((c, d))) => {
+                        assert!(a <= c && b >= d && c - a <= 1 && b - d <= 1, "x {x} r {r}")
+                    }
+                    (None, None) => {}
+                    (Some((a, b)), None) => {
+                        // Only a boundary tap (|k + ½ − x| = r within the pad) may appear.
+                        for k in a..=b {
+                            let dist = ((k as f64 + 0.5) - x).abs();
+                            assert!((dist - r).abs() <= PAD, "x {x} r {r} k {k}");
+                        }
+                    }
+                    (None, Some(_)) => panic!("x {x} r {r}: range dropped"),
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn pixel_range_exact_support_boundary_is_padded() {
+        // Centre 2.5 is exactly r = 1 away from x = 1.5: included (the kernel gives it 0).
+        assert_eq!(pixel_range(1.5, 1.0, 8), Some((0, 2)));
+        // Nothing when the support ends left of the first centre.
+        assert_eq!(pixel_range(-1.0, 1.0, 8), None);
+        assert_eq!(pixel_range(f64::NAN, 1.0, 8), None);
+    }
+
+    #[test]
+    fn tile_order_is_a_stable_permutation_grouped_by_tile() {
+        let pos = [
+            DVec2::new(100.0, 3.0),
+            DVec2::new(1.0, 1.0),
+            DVec2::new(70.0, 2.0),
+            DVec2::new(2.0, 90.0),
+            DVec2::new(3.0, 2.0),
+        ];
+        let order = tile_order(pos.iter().copied(), 128);
+        // Tiles (2×2 of 64 px): (0,0) holds 1, 4; (1,0) holds 0, 2; (0,1) holds 3.
+        assert_eq!(order, vec![1, 4, 0, 2, 3]);
+    }
+}

@@ -111,6 +111,16 @@ pub struct PatternProvider {
     pub seed: u64,
 }
 
+impl Default for PatternProvider {
+    /// The default pattern (full jitter) with seed 0.
+    fn default() -> Self {
+        PatternProvider {
+            pattern: Pattern::default(),
+            seed: 0,
+        }
+    }
+}
+
 impl SampleProvider for PatternProvider {
     fn offsets(&self, pixel: u64, spp: usize, out: &mut Vec<DVec2>) -> Result<(), ReconError> {
         out.extend(self.pattern.generate(spp, derive_seed(self.seed, pixel))?);
