@@ -306,3 +306,25 @@ fn checkerboard_point_sampling_aliases_towards_the_horizon() {
     // enough to judge both.
     assert!(est < 0.5 * jit_horizon);
 }
+
+#[test]
+fn supersample_stops_when_cancelled_mid_flight() {
+    // The provider cancels the token at pixel 100 of 256×256: the computation must stop with
+    // Cancelled instead of finishing (checks happen every ~2¹⁴ samples).
+    let token = Cancel::new();
+    let t = token.clone();
+    let calls = std::sync::atomic::AtomicUsize::new(0);
+    let prov = |pixel: u64, spp: usize, out: &mut Vec<DVec2>| {
+        calls.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+        if pixel == 100 {
+            t.cancel();
+        }
+        out.extend(std::iter::repeat_n(DVec2::splat(0.5), spp));
+        Ok(())
+    };
+    let sig = Signal::default();
+    let r = supersample(&sig, 256, 16, &prov, &BoxKernel { radius: 0.5 }, &token);
+    assert_eq!(err(r), ReconError::Cancelled);
+    let n = calls.load(std::sync::atomic::Ordering::Relaxed);
+    assert!(n < 256 * 256, "provider called for every pixel ({n})");
+}
