@@ -52,31 +52,34 @@ pub(crate) fn pixel_range(x: f64, r_px: f64, w: usize) -> Option<(usize, usize)>
     }
 }
 
-/// The order in which to splat samples at pixel positions `pos`: sorted (stably) by 64×64-pixel
-/// tile, row-major, so that consecutive splats touch memory that is already in cache.
-pub(crate) fn tile_order(pos: impl Iterator<Item = DVec2> + Clone, w: usize) -> Vec<u32> {
+/// The samples (positions scaled to pixel units, values) sorted stably by 64×64-pixel tile,
+/// row-major, so that consecutive splats touch memory that is already in cache. A counting
+/// sort: one sequential pass to count, one to scatter the pairs into place (so the splat
+/// loop then reads them sequentially).
+pub(crate) fn tile_sorted(points: &[DVec2], values: &[f64], w: usize) -> Vec<(DVec2, f64)> {
     const TILE: f64 = 64.0;
+    let wf = w as f64;
     let tiles = w.div_ceil(64).max(1);
     let key = |p: DVec2| {
         let tx = ((p.x.max(0.0) / TILE) as usize).min(tiles - 1);
         let ty = ((p.y.max(0.0) / TILE) as usize).min(tiles - 1);
         ty * tiles + tx
     };
-    let mut start = vec![0u32; tiles * tiles + 1];
-    for p in pos.clone() {
-        start[key(p) + 1] += 1;
+    let mut start = vec![0usize; tiles * tiles + 1];
+    for p in points {
+        start[key(*p * wf) + 1] += 1;
     }
     for k in 0..tiles * tiles {
         start[k + 1] += start[k];
     }
-    let n = start[tiles * tiles] as usize;
-    let mut order = vec![0u32; n];
-    for (j, p) in pos.enumerate() {
-        let k = key(p);
-        order[start[k] as usize] = j as u32;
+    let mut out = vec![(DVec2::ZERO, 0.0); points.len()];
+    for (p, &v) in points.iter().zip(values) {
+        let x = *p * wf;
+        let k = key(x);
+        out[start[k]] = (x, v);
         start[k] += 1;
     }
-    order
+    out
 }
 
 /// Running sums Σ w·v and Σ w per pixel (interleaved for locality).
@@ -263,7 +266,8 @@ mod tests {
     }
 
     #[test]
-    fn tile_order_is_a_stable_permutation_grouped_by_tile() {
+    fn tile_sort_is_a_stable_permutation_grouped_by_tile() {
+        // W = 128: tiles of 64 px are 2×2; positions given in unit coordinates.
         let pos = [
             DVec2::new(100.0, 3.0),
             DVec2::new(1.0, 1.0),
@@ -271,8 +275,12 @@ mod tests {
             DVec2::new(2.0, 90.0),
             DVec2::new(3.0, 2.0),
         ];
-        let order = tile_order(pos.iter().copied(), 128);
-        // Tiles (2×2 of 64 px): (0,0) holds 1, 4; (1,0) holds 0, 2; (0,1) holds 3.
-        assert_eq!(order, vec![1, 4, 0, 2, 3]);
+        let unit: Vec<DVec2> = pos.iter().map(|p| *p / 128.0).collect();
+        let values = [0.0, 1.0, 2.0, 3.0, 4.0];
+        let sorted = tile_sorted(&unit, &values, 128);
+        // Tile (0,0) holds 1, 4; (1,0) holds 0, 2; (0,1) holds 3.
+        let order: Vec<f64> = sorted.iter().map(|s| s.1).collect();
+        assert_eq!(order, vec![1.0, 4.0, 0.0, 2.0, 3.0]);
+        assert_eq!(sorted[2].0, pos[0]);
     }
 }

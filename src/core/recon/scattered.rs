@@ -14,7 +14,7 @@
 //!   over rows). It is the reference the splat is tested against (to 1e-12; only the order of
 //!   the additions differs).
 
-use super::accum::{finish_sums, offset, splat_work, tile_order, Accum, PAD};
+use super::accum::{finish_sums, offset, splat_work, tile_sorted, Accum, PAD};
 use super::{
     check_cancel, check_size, check_support, check_work, ReconError, ReconKernel, Reconstruction,
     MAX_SAMPLES, MAX_W,
@@ -120,16 +120,14 @@ pub fn reconstruct_scattered<K: ReconKernel + ?Sized>(
         "scattered splatting",
         splat_work(points.len(), acc.r_px(), w),
     )?;
-    let wf = w as f64;
     // Splat tile by tile (a stable counting sort of the samples): the same sums, added in an
     // order that keeps the W×W accumulator's working set in cache.
-    let order = tile_order(points.iter().map(|p| *p * wf), w);
-    for (k, &j) in order.iter().enumerate() {
+    let sorted = tile_sorted(points, values, w);
+    for (k, &(x, v)) in sorted.iter().enumerate() {
         if k % 4096 == 0 {
             check_cancel(cancel)?;
         }
-        let j = j as usize;
-        acc.splat(points[j] * wf, values[j]);
+        acc.splat(x, v);
     }
     acc.finish(points.len(), start.elapsed())
 }
