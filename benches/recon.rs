@@ -56,11 +56,31 @@ fn pool() -> rayon::ThreadPool {
         .expect("one-thread pool")
 }
 
-/// On-CPU time of the calling thread in ns (Linux `/proc/thread-self/schedstat`, field 1),
-/// which excludes the time spent waiting for a core on a shared machine; `None` elsewhere.
+/// On-CPU time of the calling thread in ns (`clock_gettime(CLOCK_THREAD_CPUTIME_ID)`), which
+/// excludes the time spent waiting for a core on a shared machine; `None` off 64-bit Linux.
+#[cfg(all(target_os = "linux", target_pointer_width = "64"))]
 fn thread_cpu_ns() -> Option<u64> {
-    let s = std::fs::read_to_string("/proc/thread-self/schedstat").ok()?;
-    s.split_whitespace().next()?.parse().ok()
+    #[repr(C)]
+    struct Timespec {
+        tv_sec: i64,
+        tv_nsec: i64,
+    }
+    extern "C" {
+        fn clock_gettime(clock: i32, ts: *mut Timespec) -> i32;
+    }
+    const CLOCK_THREAD_CPUTIME_ID: i32 = 3;
+    let mut ts = Timespec {
+        tv_sec: 0,
+        tv_nsec: 0,
+    };
+    // SAFETY: `ts` is a valid, writable timespec (two 64-bit fields on 64-bit Linux).
+    let rc = unsafe { clock_gettime(CLOCK_THREAD_CPUTIME_ID, &mut ts) };
+    (rc == 0).then(|| ts.tv_sec as u64 * 1_000_000_000 + ts.tv_nsec as u64)
+}
+
+#[cfg(not(all(target_os = "linux", target_pointer_width = "64")))]
+fn thread_cpu_ns() -> Option<u64> {
+    None
 }
 
 /// Best of `runs` (wall time, on-CPU time) of `f`, run on the one-thread pool.

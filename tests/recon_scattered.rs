@@ -313,3 +313,42 @@ fn scattered_refuses_too_much_work() {
         Ok(r) => panic!("accepted {} pixels of work", r.pixels.len()),
     }
 }
+
+/// A kernel that returns a fixed (possibly non-finite or huge) weight inside its support.
+struct FixedKernel(f64);
+
+impl ReconKernel for FixedKernel {
+    fn support(&self) -> f64 {
+        1.0
+    }
+    fn weight(&self, d: DVec2) -> f64 {
+        if d.x.abs() < 1.0 && d.y.abs() < 1.0 {
+            self.0
+        } else {
+            0.0
+        }
+    }
+}
+
+#[test]
+fn non_finite_kernel_weights_are_reported_not_propagated() {
+    let pts = random_points(64, 13);
+    let vals = vec![0.5; 64];
+    let c = Cancel::never();
+    for k in [
+        FixedKernel(f64::NAN),
+        FixedKernel(f64::INFINITY),
+        FixedKernel(1e308),
+    ] {
+        for r in [
+            reconstruct_scattered(&pts, &vals, 16, &k, &c),
+            reconstruct_scattered_gather(&pts, &vals, 16, &k, &c),
+        ] {
+            match r {
+                Err(ReconError::NonFiniteWeight { pixel }) => assert!(pixel < 256),
+                Err(e) => panic!("unexpected error {e}"),
+                Ok(_) => panic!("weight {} accepted", k.0),
+            }
+        }
+    }
+}

@@ -65,21 +65,52 @@ pub(crate) fn tile_sorted(points: &[DVec2], values: &[f64], w: usize) -> Vec<(DV
         let ty = ((p.y.max(0.0) / TILE) as usize).min(tiles - 1);
         ty * tiles + tx
     };
+    let keys: Vec<u32> = points.iter().map(|p| key(*p * wf) as u32).collect();
     let mut start = vec![0usize; tiles * tiles + 1];
-    for p in points {
-        start[key(*p * wf) + 1] += 1;
+    for &k in &keys {
+        start[k as usize + 1] += 1;
     }
     for k in 0..tiles * tiles {
         start[k + 1] += start[k];
     }
     let mut out = vec![(DVec2::ZERO, 0.0); points.len()];
-    for (p, &v) in points.iter().zip(values) {
-        let x = *p * wf;
-        let k = key(x);
-        out[start[k]] = (x, v);
-        start[k] += 1;
+    for ((p, &v), &k) in points.iter().zip(values).zip(&keys) {
+        let slot = &mut start[k as usize];
+        out[*slot] = (*p * wf, v);
+        *slot += 1;
     }
     out
+}
+
+/// Largest per-axis tap count handled with stack buffers.
+const SMALL: usize = 16;
+
+/// Adds the separable weights hx[a]·hy[b] (times v, and alone) to the pixels
+/// (i0 + a, j0 + b).
+#[inline(always)]
+fn splat_rows(
+    cells: &mut [[f64; 2]],
+    w: usize,
+    i0: usize,
+    j0: usize,
+    hx: &[f64],
+    hy: &[f64],
+    v: f64,
+) {
+    let nx = hx.len();
+    for (b, &wy) in hy.iter().enumerate() {
+        if wy == 0.0 {
+            continue;
+        }
+        let base = (j0 + b) * w + i0;
+        let row = &mut cells[base..base + nx];
+        // [wy·v, wy] scaled by wx: one packed multiply-add per tap.
+        let wyv = wy * v;
+        for (cell, &wx) in row.iter_mut().zip(hx) {
+            cell[0] += wx * wyv;
+            cell[1] += wx * wy;
+        }
+    }
 }
 
 /// Running sums Σ w·v and Σ w per pixel (interleaved for locality).
@@ -123,33 +154,38 @@ impl<'k, K: ReconKernel + ?Sized> Accum<'k, K> {
         let Some((j0, j1)) = pixel_range(x.y, self.r_px, self.w) else {
             return;
         };
+        let (nx, ny) = (i1 - i0 + 1, j1 - j0 + 1);
         let w = self.w;
         let s = self.inv_scale;
+        let kernel = self.kernel;
         if self.separable {
-            let kernel = self.kernel;
-            self.hx.clear();
-            self.hx
-                .extend((i0..=i1).map(|i| kernel.factor(offset(i, x.x, s)).unwrap_or(0.0)));
-            self.hy.clear();
-            self.hy
-                .extend((j0..=j1).map(|j| kernel.factor(offset(j, x.y, s)).unwrap_or(0.0)));
-            for (j, &wy) in (j0..=j1).zip(&self.hy) {
-                if wy == 0.0 {
-                    continue;
+            if nx <= SMALL && ny <= SMALL {
+                // Common case (supports up to 7 px): factors on the stack.
+                let mut hx = [0.0; SMALL];
+                let mut hy = [0.0; SMALL];
+                for (a, h) in hx[..nx].iter_mut().enumerate() {
+                    *h = kernel.factor(offset(i0 + a, x.x, s)).unwrap_or(0.0);
                 }
-                let row = &mut self.cells[j * w + i0..=j * w + i1];
-                for (cell, &wx) in row.iter_mut().zip(&self.hx) {
-                    let wt = wx * wy;
-                    cell[0] += wt * v;
-                    cell[1] += wt;
+                for (b, h) in hy[..ny].iter_mut().enumerate() {
+                    *h = kernel.factor(offset(j0 + b, x.y, s)).unwrap_or(0.0);
                 }
+                splat_rows(&mut self.cells, w, i0, j0, &hx[..nx], &hy[..ny], v);
+            } else {
+                self.hx.clear();
+                self.hx
+                    .extend((i0..=i1).map(|i| kernel.factor(offset(i, x.x, s)).unwrap_or(0.0)));
+                self.hy.clear();
+                self.hy
+                    .extend((j0..=j1).map(|j| kernel.factor(offset(j, x.y, s)).unwrap_or(0.0)));
+                splat_rows(&mut self.cells, w, i0, j0, &self.hx, &self.hy, v);
             }
         } else {
-            for j in j0..=j1 {
+            for j in j0..j0 + ny {
                 let dy = offset(j, x.y, s);
-                let row = &mut self.cells[j * w + i0..=j * w + i1];
-                for (i, cell) in (i0..=i1).zip(row.iter_mut()) {
-                    let wt = self.kernel.weight(DVec2::new(offset(i, x.x, s), dy));
+                let base = j * w + i0;
+                let row = &mut self.cells[base..base + nx];
+                for (a, cell) in row.iter_mut().enumerate() {
+                    let wt = kernel.weight(DVec2::new(offset(i0 + a, x.x, s), dy));
                     cell[0] += wt * v;
                     cell[1] += wt;
                 }
@@ -174,25 +210,28 @@ pub(crate) fn finish_sums(
     samples: usize,
     wall_time: Duration,
 ) -> Result<Reconstruction, ReconError> {
-    let mut pixels = Vec::with_capacity(cells.len());
-    let mut mask = Vec::with_capacity(cells.len());
-    let mut zero_weight = 0;
-    for (pixel, &[num, den]) in cells.iter().enumerate() {
-        if !(num.is_finite() && den.is_finite()) {
-            return Err(ReconError::NonFiniteWeight { pixel });
-        }
-        if den == 0.0 {
-            pixels.push(ZERO_WEIGHT_FILL);
-            mask.push(true);
-            zero_weight += 1;
-        } else {
-            let v = num / den;
-            if !v.is_finite() {
-                return Err(ReconError::NonFiniteWeight { pixel });
-            }
-            pixels.push(v);
-            mask.push(false);
-        }
+    let n = cells.len();
+    let mut pixels = vec![0.0; n];
+    let mut mask = vec![false; n];
+    let mut zero_weight = 0usize;
+    // One branch-free pass. x·0 is NaN exactly when x is not finite, and a finite sum over a
+    // tiny non-zero weight can still overflow: both make `bad` true.
+    let mut bad = false;
+    for ((&[num, den], p), m) in cells.iter().zip(pixels.iter_mut()).zip(mask.iter_mut()) {
+        let zero = den == 0.0;
+        let v = if zero { ZERO_WEIGHT_FILL } else { num / den };
+        bad |= (num * 0.0 + den * 0.0 != 0.0) | !v.is_finite();
+        *p = v;
+        *m = zero;
+        zero_weight += zero as usize;
+    }
+    if bad {
+        let pixel = cells
+            .iter()
+            .zip(&pixels)
+            .position(|(&[n, d], v)| !(n.is_finite() && d.is_finite() && v.is_finite()))
+            .unwrap_or(0);
+        return Err(ReconError::NonFiniteWeight { pixel });
     }
     Ok(Reconstruction {
         w,
