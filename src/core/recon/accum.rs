@@ -23,14 +23,93 @@ pub(crate) fn offset(k: usize, x: f64, inv_scale: f64) -> f64 {
 
 /// The inclusive pixel range [lo, hi] whose centres lie within `r_px` (+ pad) of `x`, clipped
 /// to [0, w − 1]; `None` when empty.
+///
+/// Written with truncating casts instead of `ceil`/`floor`, which are library calls on
+/// baseline x86-64; positions are finite and |x| + r_px < 2⁶² (checked by the callers).
 #[inline(always)]
 pub(crate) fn pixel_range(x: f64, r_px: f64, w: usize) -> Option<(usize, usize)> {
-    let lo = (x - 0.5 - r_px - PAD).ceil().max(0.0);
-    let hi = (x - 0.5 + r_px + PAD).floor().min((w - 1) as f64);
-    if hi < lo || hi.is_nan() || lo.is_nan() {
+    let a = x - 0.5 - r_px - PAD;
+    let b = x - 0.5 + r_px + PAD;
+    // b < 0 (or NaN): every centre is to the right of the support.
+    if b.is_nan() || b < 0.0 {
+        return None;
+    }
+    let lo = if a > 0.0 {
+        let t = a as u64; // ⌊a⌋ for a ≥ 0
+        if (t as f64) < a {
+            t + 1
+        } else {
+            t
+        }
+    } else {
+        0
+    };
+    let hi = (b as u64).min(w as u64 - 1); // ⌊b⌋ for b ≥ 0
+    if hi < lo {
         None
     } else {
         Some((lo as usize, hi as usize))
+    }
+}
+
+/// The samples (positions scaled to pixel units, values) sorted stably by 64×64-pixel tile,
+/// row-major, so that consecutive splats touch memory that is already in cache. A counting
+/// sort: one sequential pass to count, one to scatter the pairs into place (so the splat
+/// loop then reads them sequentially).
+pub(crate) fn tile_sorted(points: &[DVec2], values: &[f64], w: usize) -> Vec<(DVec2, f64)> {
+    const TILE: f64 = 64.0;
+    let wf = w as f64;
+    let tiles = w.div_ceil(64).max(1);
+    let key = |p: DVec2| {
+        let tx = ((p.x.max(0.0) / TILE) as usize).min(tiles - 1);
+        let ty = ((p.y.max(0.0) / TILE) as usize).min(tiles - 1);
+        ty * tiles + tx
+    };
+    let keys: Vec<u32> = points.iter().map(|p| key(*p * wf) as u32).collect();
+    let mut start = vec![0usize; tiles * tiles + 1];
+    for &k in &keys {
+        start[k as usize + 1] += 1;
+    }
+    for k in 0..tiles * tiles {
+        start[k + 1] += start[k];
+    }
+    let mut out = vec![(DVec2::ZERO, 0.0); points.len()];
+    for ((p, &v), &k) in points.iter().zip(values).zip(&keys) {
+        let slot = &mut start[k as usize];
+        out[*slot] = (*p * wf, v);
+        *slot += 1;
+    }
+    out
+}
+
+/// Largest per-axis tap count handled with stack buffers.
+const SMALL: usize = 16;
+
+/// Adds the separable weights hx[a]·hy[b] (times v, and alone) to the pixels
+/// (i0 + a, j0 + b).
+#[inline(always)]
+fn splat_rows(
+    cells: &mut [[f64; 2]],
+    w: usize,
+    i0: usize,
+    j0: usize,
+    hx: &[f64],
+    hy: &[f64],
+    v: f64,
+) {
+    let nx = hx.len();
+    for (b, &wy) in hy.iter().enumerate() {
+        if wy == 0.0 {
+            continue;
+        }
+        let base = (j0 + b) * w + i0;
+        let row = &mut cells[base..base + nx];
+        // [wy·v, wy] scaled by wx: one packed multiply-add per tap.
+        let wyv = wy * v;
+        for (cell, &wx) in row.iter_mut().zip(hx) {
+            cell[0] += wx * wyv;
+            cell[1] += wx * wy;
+        }
     }
 }
 
@@ -75,33 +154,38 @@ impl<'k, K: ReconKernel + ?Sized> Accum<'k, K> {
         let Some((j0, j1)) = pixel_range(x.y, self.r_px, self.w) else {
             return;
         };
+        let (nx, ny) = (i1 - i0 + 1, j1 - j0 + 1);
         let w = self.w;
         let s = self.inv_scale;
+        let kernel = self.kernel;
         if self.separable {
-            let kernel = self.kernel;
-            self.hx.clear();
-            self.hx
-                .extend((i0..=i1).map(|i| kernel.factor(offset(i, x.x, s)).unwrap_or(0.0)));
-            self.hy.clear();
-            self.hy
-                .extend((j0..=j1).map(|j| kernel.factor(offset(j, x.y, s)).unwrap_or(0.0)));
-            for (j, &wy) in (j0..=j1).zip(&self.hy) {
-                if wy == 0.0 {
-                    continue;
+            if nx <= SMALL && ny <= SMALL {
+                // Common case (supports up to 7 px): factors on the stack.
+                let mut hx = [0.0; SMALL];
+                let mut hy = [0.0; SMALL];
+                for (a, h) in hx[..nx].iter_mut().enumerate() {
+                    *h = kernel.factor(offset(i0 + a, x.x, s)).unwrap_or(0.0);
                 }
-                let row = &mut self.cells[j * w + i0..=j * w + i1];
-                for (cell, &wx) in row.iter_mut().zip(&self.hx) {
-                    let wt = wx * wy;
-                    cell[0] += wt * v;
-                    cell[1] += wt;
+                for (b, h) in hy[..ny].iter_mut().enumerate() {
+                    *h = kernel.factor(offset(j0 + b, x.y, s)).unwrap_or(0.0);
                 }
+                splat_rows(&mut self.cells, w, i0, j0, &hx[..nx], &hy[..ny], v);
+            } else {
+                self.hx.clear();
+                self.hx
+                    .extend((i0..=i1).map(|i| kernel.factor(offset(i, x.x, s)).unwrap_or(0.0)));
+                self.hy.clear();
+                self.hy
+                    .extend((j0..=j1).map(|j| kernel.factor(offset(j, x.y, s)).unwrap_or(0.0)));
+                splat_rows(&mut self.cells, w, i0, j0, &self.hx, &self.hy, v);
             }
         } else {
-            for j in j0..=j1 {
+            for j in j0..j0 + ny {
                 let dy = offset(j, x.y, s);
-                let row = &mut self.cells[j * w + i0..=j * w + i1];
-                for (i, cell) in (i0..=i1).zip(row.iter_mut()) {
-                    let wt = self.kernel.weight(DVec2::new(offset(i, x.x, s), dy));
+                let base = j * w + i0;
+                let row = &mut self.cells[base..base + nx];
+                for (a, cell) in row.iter_mut().enumerate() {
+                    let wt = kernel.weight(DVec2::new(offset(i0 + a, x.x, s), dy));
                     cell[0] += wt * v;
                     cell[1] += wt;
                 }
@@ -126,25 +210,28 @@ pub(crate) fn finish_sums(
     samples: usize,
     wall_time: Duration,
 ) -> Result<Reconstruction, ReconError> {
-    let mut pixels = Vec::with_capacity(cells.len());
-    let mut mask = Vec::with_capacity(cells.len());
-    let mut zero_weight = 0;
-    for (pixel, &[num, den]) in cells.iter().enumerate() {
-        if !(num.is_finite() && den.is_finite()) {
-            return Err(ReconError::NonFiniteWeight { pixel });
-        }
-        if den == 0.0 {
-            pixels.push(ZERO_WEIGHT_FILL);
-            mask.push(true);
-            zero_weight += 1;
-        } else {
-            let v = num / den;
-            if !v.is_finite() {
-                return Err(ReconError::NonFiniteWeight { pixel });
-            }
-            pixels.push(v);
-            mask.push(false);
-        }
+    let n = cells.len();
+    let mut pixels = vec![0.0; n];
+    let mut mask = vec![false; n];
+    let mut zero_weight = 0usize;
+    // One branch-free pass. x·0 is NaN exactly when x is not finite, and a finite sum over a
+    // tiny non-zero weight can still overflow: both make `bad` true.
+    let mut bad = false;
+    for ((&[num, den], p), m) in cells.iter().zip(pixels.iter_mut()).zip(mask.iter_mut()) {
+        let zero = den == 0.0;
+        let v = if zero { ZERO_WEIGHT_FILL } else { num / den };
+        bad |= (num * 0.0 + den * 0.0 != 0.0) | !v.is_finite();
+        *p = v;
+        *m = zero;
+        zero_weight += zero as usize;
+    }
+    if bad {
+        let pixel = cells
+            .iter()
+            .zip(&pixels)
+            .position(|(&[n, d], v)| !(n.is_finite() && d.is_finite() && v.is_finite()))
+            .unwrap_or(0);
+        return Err(ReconError::NonFiniteWeight { pixel });
     }
     Ok(Reconstruction {
         w,
@@ -166,4 +253,73 @@ pub(crate) fn splat_work(n: usize, r_px: f64, w: usize) -> u128 {
         w as u128 + 1
     };
     n as u128 * per_axis * per_axis
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The definition: every k in 0..w with |k + ½ − x| < r (pixel centres inside the support).
+    fn naive_range(x: f64, r: f64, w: usize) -> Option<(usize, usize)> {
+        let ks: Vec<usize> = (0..w)
+            .filter(|&k| ((k as f64 + 0.5) - x).abs() < r)
+            .collect();
+        ks.first().map(|&lo| (lo, *ks.last().unwrap_or(&lo)))
+    }
+
+    #[test]
+    fn pixel_range_matches_definition_at_borders_and_outside() {
+        let w = 10;
+        for &x in &[
+            0.0, 0.2, 0.5, 0.51, 1.0, 3.3, 9.49, 9.5, 9.99, 10.0, -0.7, -3.0, 10.4, 14.0,
+        ] {
+            for &r in &[0.3, 0.5, 1.0, 1.25, 2.5, 20.0] {
+                let got = pixel_range(x, r, w);
+                let want = naive_range(x, r, w);
+                // The padded range may include a centre at distance exactly r (weight 0).
+                match (got, want) {
+                    (Some((a, b)), Some((c, d))) => {
+                        assert!(a <= c && b >= d && c - a <= 1 && b - d <= 1, "x {x} r {r}")
+                    }
+                    (None, None) => {}
+                    (Some((a, b)), None) => {
+                        // Only a boundary tap (|k + ½ − x| = r within the pad) may appear.
+                        for k in a..=b {
+                            let dist = ((k as f64 + 0.5) - x).abs();
+                            assert!((dist - r).abs() <= PAD, "x {x} r {r} k {k}");
+                        }
+                    }
+                    (None, Some(_)) => panic!("x {x} r {r}: range dropped"),
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn pixel_range_exact_support_boundary_is_padded() {
+        // Centre 2.5 is exactly r = 1 away from x = 1.5: included (the kernel gives it 0).
+        assert_eq!(pixel_range(1.5, 1.0, 8), Some((0, 2)));
+        // Nothing when the support ends left of the first centre.
+        assert_eq!(pixel_range(-1.0, 1.0, 8), None);
+        assert_eq!(pixel_range(f64::NAN, 1.0, 8), None);
+    }
+
+    #[test]
+    fn tile_sort_is_a_stable_permutation_grouped_by_tile() {
+        // W = 128: tiles of 64 px are 2×2; positions given in unit coordinates.
+        let pos = [
+            DVec2::new(100.0, 3.0),
+            DVec2::new(1.0, 1.0),
+            DVec2::new(70.0, 2.0),
+            DVec2::new(2.0, 90.0),
+            DVec2::new(3.0, 2.0),
+        ];
+        let unit: Vec<DVec2> = pos.iter().map(|p| *p / 128.0).collect();
+        let values = [0.0, 1.0, 2.0, 3.0, 4.0];
+        let sorted = tile_sorted(&unit, &values, 128);
+        // Tile (0,0) holds 1, 4; (1,0) holds 0, 2; (0,1) holds 3.
+        let order: Vec<f64> = sorted.iter().map(|s| s.1).collect();
+        assert_eq!(order, vec![1.0, 4.0, 0.0, 2.0, 3.0]);
+        assert_eq!(sorted[2].0, pos[0]);
+    }
 }

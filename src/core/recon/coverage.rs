@@ -61,7 +61,7 @@ pub fn half_planes(poly: &[DVec2]) -> Vec<(DVec2, f64)> {
         .collect()
 }
 
-/// The unit square [0,1]² as a counter-clockwise polygon.
+/// The unit square \[0,1\]² as a counter-clockwise polygon.
 pub const UNIT_SQUARE: [DVec2; 4] = [
     DVec2::new(0.0, 0.0),
     DVec2::new(1.0, 0.0),
@@ -69,7 +69,7 @@ pub const UNIT_SQUARE: [DVec2; 4] = [
     DVec2::new(0.0, 1.0),
 ];
 
-/// Fraction of the unit square [0,1]² inside the intersection of the half-planes
+/// Fraction of the unit square \[0,1\]² inside the intersection of the half-planes
 /// {p : aₖ·p ≥ bₖ} (exact up to rounding; in [0, 1]).
 ///
 /// Planes that contain all four corners are skipped and a plane that excludes all four gives
@@ -111,7 +111,7 @@ fn corner_range(n: DVec2, c: f64) -> (f64, f64) {
 /// Coverage of pixel (i, j) of a W×W image by the intersection of half-planes given in image
 /// coordinates ({p : a·p ≥ b}, p ∈ [0,1)²).
 ///
-/// The planes are moved to pixel-local coordinates q = p·W − (i, j), where the pixel is [0,1]²:
+/// The planes are moved to pixel-local coordinates q = p·W − (i, j), where the pixel is \[0,1\]²:
 /// a·p ≥ b ⇔ a·q ≥ b·W − a·(i, j).
 pub fn pixel_coverage(planes: &[(DVec2, f64)], i: usize, j: usize, w: usize) -> f64 {
     let origin = DVec2::new(i as f64, j as f64);

@@ -13,7 +13,7 @@
 //!   evaluated at every pixel centre p, with a [`ReconKernel`] w given in filter units and a
 //!   scale h: the mean sample spacing h = 1/√N for N scattered samples over the image
 //!   ([`scattered`], and [`grid`] where N = G²), the output pixel h = 1/W for supersampling
-//!   ([`supersample`]). A kernel with support r covers |d| < r sample spacings (or pixels).
+//!   ([`supersample`](mod@supersample)). A kernel with support r covers |d| < r sample spacings (or pixels).
 //! - **Borders are open** (not toroidal): the signals are not periodic, so a sample only
 //!   contributes to pixels inside the image, distances are plain Euclidean, and pixels near the
 //!   border are normalised by the smaller weight they receive. This keeps the normalised sum
@@ -22,7 +22,7 @@
 //!   support, or cancelling negative lobes) is never divided: it is set to
 //!   [`ZERO_WEIGHT_FILL`] (½, mid grey), flagged in [`Reconstruction::mask`] and counted in
 //!   [`Reconstruction::zero_weight`]. No output is ever NaN.
-//! - **Reference images** ([`reference`]) are box-prefiltered: the mean of the signal over each
+//! - **Reference images** ([`reference`](mod@reference)) are box-prefiltered: the mean of the signal over each
 //!   pixel square, exact where a closed form exists (area coverage, integrals) and estimated by
 //!   stratified supersampling, with an error estimate, otherwise.
 //! - **Errors** ([`ErrorReport`]) are measured over every pixel (zero-weight pixels count with

@@ -13,9 +13,10 @@
 //! mean of the pixel's samples, which converges to the box-prefiltered [`super::reference`].
 //! Borders are open: samples are only taken inside the image.
 //!
-//! Implementation: rows are evaluated in parallel in batches of at most 2²¹ samples (sample
-//! offsets and signal values), then splatted serially in row-major order, so the result does
-//! not depend on the number of threads.
+//! Implementation: pixels are evaluated in parallel (tasks of ~2¹⁴ samples, each checking the
+//! cancel token) in batches of at most 2²¹ samples (offsets and signal values, ~50 MB), then
+//! splatted serially in row-major pixel order, so the result does not depend on the number of
+//! threads.
 
 use super::accum::{splat_work, Accum};
 use super::{
@@ -111,6 +112,16 @@ pub struct PatternProvider {
     pub seed: u64,
 }
 
+impl Default for PatternProvider {
+    /// The default pattern (full jitter) with seed 0.
+    fn default() -> Self {
+        PatternProvider {
+            pattern: Pattern::default(),
+            seed: 0,
+        }
+    }
+}
+
 impl SampleProvider for PatternProvider {
     fn offsets(&self, pixel: u64, spp: usize, out: &mut Vec<DVec2>) -> Result<(), ReconError> {
         out.extend(self.pattern.generate(spp, derive_seed(self.seed, pixel))?);
@@ -120,12 +131,14 @@ impl SampleProvider for PatternProvider {
 
 /// Samples per evaluation batch (bounds the memory to ~50 MB).
 const BATCH_SAMPLES: usize = 1 << 21;
+/// Samples per parallel task (and per cancellation check).
+const TASK_SAMPLES: usize = 1 << 14;
 
 /// Supersamples `signal` on a W×W image with `spp` samples per pixel from `provider`, filtered
 /// by `kernel` in pixel units (see the module docs).
 ///
 /// Checks: W in 1..=8192, spp in 1..=4096, the kernel support, the provider's offsets (count
-/// and range), and the total work. Cancellable every row.
+/// and range), and the total work. Cancellable every ~2¹⁴ samples.
 pub fn supersample<K, P>(
     signal: &Signal,
     w: usize,
@@ -146,41 +159,50 @@ where
     let mut acc = Accum::new(w, kernel, support, 1.0);
     let n = w * w * spp;
     check_work("supersampling", splat_work(n, acc.r_px(), w) + n as u128)?;
-    let rows_per_batch = (BATCH_SAMPLES / (w * spp)).clamp(1, w);
     let wf = w as f64;
-    let mut j0 = 0;
-    while j0 < w {
-        let j1 = (j0 + rows_per_batch).min(w);
-        let rows: Vec<Vec<(DVec2, f64)>> = (j0..j1)
+    let pixels = w * w;
+    // Batches of at most BATCH_SAMPLES samples (at least one pixel), evaluated in parallel
+    // in tasks of about TASK_SAMPLES samples, then splatted serially in pixel order.
+    let per_batch = (BATCH_SAMPLES / spp).max(1);
+    let per_task = (TASK_SAMPLES / spp).max(1);
+    let mut p0 = 0;
+    while p0 < pixels {
+        let p1 = (p0 + per_batch).min(pixels);
+        let tasks: Vec<usize> = (p0..p1).step_by(per_task).collect();
+        let parts: Vec<Vec<(DVec2, f64)>> = tasks
             .into_par_iter()
-            .map(|j| sample_row(signal, w, wf, j, spp, provider, cancel))
+            .map(|q0| {
+                let q1 = (q0 + per_task).min(p1);
+                sample_pixels(signal, w, wf, q0..q1, spp, provider, cancel)
+            })
             .collect::<Result<_, _>>()?;
-        for row in rows {
+        for part in parts {
             check_cancel(cancel)?;
-            for (x, v) in row {
+            for (x, v) in part {
                 acc.splat(x, v);
             }
         }
-        j0 = j1;
+        p0 = p1;
     }
     acc.finish(n, start.elapsed())
 }
 
-/// The samples of row j: positions in pixel units and signal values.
-fn sample_row<P: SampleProvider + ?Sized>(
+/// The samples of pixels `range` (row-major indices): positions in pixel units and values.
+fn sample_pixels<P: SampleProvider + ?Sized>(
     signal: &Signal,
     w: usize,
     wf: f64,
-    j: usize,
+    range: std::ops::Range<usize>,
     spp: usize,
     provider: &P,
     cancel: &Cancel,
 ) -> Result<Vec<(DVec2, f64)>, ReconError> {
     check_cancel(cancel)?;
-    let mut out = Vec::with_capacity(w * spp);
+    let mut out = Vec::with_capacity(range.len() * spp);
     let mut buf = Vec::with_capacity(spp);
-    for i in 0..w {
-        let pixel = (j * w + i) as u64;
+    for p in range {
+        let (i, j) = (p % w, p / w);
+        let pixel = p as u64;
         buf.clear();
         provider.offsets(pixel, spp, &mut buf)?;
         if buf.len() != spp {

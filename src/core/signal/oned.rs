@@ -113,7 +113,7 @@ impl Chirp {
     pub fn eval1(&self, x: f64) -> f64 {
         let lin = DoubleDouble::prod(2.0 * self.f0, x);
         let quad = DoubleDouble::diff(self.f1, self.f0).mul_f64(x).mul_f64(x);
-        (0.5 * (1.0 + sin_pi(rem2(lin.add(quad))))).clamp(0.0, 1.0)
+        (0.5 * (1.0 + sin_pi(rem2(lin + quad)))).clamp(0.0, 1.0)
     }
 }
 

@@ -65,7 +65,7 @@ impl Grating {
     #[inline]
     pub fn phase_over_pi(&self, p: DVec2) -> f64 {
         let n = direction(self.angle);
-        let proj = DoubleDouble::prod(p.x, n.x).add(DoubleDouble::prod(p.y, n.y));
+        let proj = DoubleDouble::prod(p.x, n.x) + DoubleDouble::prod(p.y, n.y);
         rem2(proj.mul_f64(2.0 * self.frequency))
     }
 

@@ -68,7 +68,7 @@ impl ZonePlate {
     pub fn phase_over_pi(&self, p: DVec2) -> f64 {
         let dx = DoubleDouble::diff(p.x, self.cx);
         let dy = DoubleDouble::diff(p.y, self.cy);
-        let d2 = dx.mul(dx).add(dy.mul(dy));
+        let d2 = dx * dx + dy * dy;
         rem2(d2.mul_f64(self.k))
     }
 
