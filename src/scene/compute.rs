@@ -172,7 +172,8 @@ pub fn column_nodes(scene: &Scene, c: usize) -> Vec<(NodeKey, Job)> {
     let fx = scene.effects;
     let recon_on = panels.zoneplate && fx.reconstruction;
     let points = key_of(NodeKind::Points, &(&col.pattern, scene.n, col.seed), &[]);
-    let needs_points = panels.pattern || recon_on || (panels.pattern && fx.statistics);
+    let recon_uses_points = recon_on && scene.recon.mode == ReconMode::Scattered;
+    let needs_points = panels.pattern || recon_uses_points;
     if needs_points {
         out.push((points, Job::Points));
     }
@@ -208,6 +209,14 @@ pub fn column_nodes(scene: &Scene, c: usize) -> Vec<(NodeKey, Job)> {
                     Some(samples),
                 )
             }
+            ReconMode::Resample { grid } => (
+                key_of(
+                    NodeKind::Reconstruction,
+                    &(grid, &scene.signal, &scene.filter, scene.recon.size),
+                    &[],
+                ),
+                None,
+            ),
             ReconMode::Supersample { spp } => (
                 key_of(
                     NodeKind::Reconstruction,
@@ -347,6 +356,10 @@ fn reconstruction(scene: &Scene, c: usize, done: &Done, cancel: &Cancel) -> Outp
                 _ => return Err("samples node has the wrong type".into()),
             };
             crate::core::recon::reconstruct_scattered(&p.points, &values, w, &scene.filter, cancel)
+                .map_err(|e| e.to_string())?
+        }
+        ReconMode::Resample { grid } => {
+            crate::core::recon::resample_grid(&scene.signal, grid, w, &scene.filter, cancel)
                 .map_err(|e| e.to_string())?
         }
         ReconMode::Supersample { spp } => {

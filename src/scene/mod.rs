@@ -55,6 +55,10 @@ pub enum ReconMode {
     Scattered,
     /// `spp` samples per output pixel from the column's pattern, combined by the pixel filter.
     Supersample { spp: usize },
+    /// The signal sampled on a uniform `grid`×`grid` lattice (the columns' patterns are not
+    /// used) and resampled to the output size with the filter scaled to the grid spacing — the
+    /// lecture's "sampled at 128×128 and reconstructed to 512×512 using windowed sinc".
+    Resample { grid: usize },
 }
 
 /// Spectrum settings.
@@ -306,6 +310,15 @@ impl Scene {
                 self.recon.size.to_string(),
                 "an integer in 16..=2048",
             ));
+        }
+        if let ReconMode::Resample { grid } = self.recon.mode {
+            if !(2..=4096).contains(&grid) {
+                return Err(invalid(
+                    "recon.mode.grid",
+                    grid.to_string(),
+                    "an integer in 2..=4096",
+                ));
+            }
         }
         if let ReconMode::Supersample { spp } = self.recon.mode {
             if !(1..=1024).contains(&spp) {
