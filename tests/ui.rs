@@ -1,6 +1,7 @@
 //! The real UI driven by its labels (egui_kittest, wgpu renderer on Mesa lavapipe/llvmpipe).
 //! These tests need a wgpu adapter; without one they fail (they never skip).
 
+use eframe::egui::accesskit::Role;
 use egui_kittest::kittest::Queryable;
 use egui_kittest::Harness;
 use samplescope::scene::graph::NodeKind;
@@ -51,7 +52,7 @@ fn default_scene_shows_four_panels_for_one_column() {
         let r = col.get(&kind).unwrap_or_else(|| panic!("{kind:?} missing"));
         assert!(r.value.is_ok(), "{kind:?}: {:?}", r.value.as_ref().err());
     }
-    h.get_by_label("Pattern");
+    h.get_by_role_and_label(Role::ComboBox, "Pattern");
     h.get_by_label("Add column");
 }
 
@@ -78,7 +79,8 @@ fn hiding_the_spectrum_panel_stops_spectrum_work() {
     assert!(!h.state().scene.panels.spectrum);
     let spectra = h.state().engine.evaluator().count(NodeKind::Spectrum);
     // Change N: points and reconstruction recompute, the hidden spectrum does not.
-    h.get_by_label("N").set_value_accesskit(1000.0);
+    h.get_by_role_and_label(Role::Slider, "N")
+        .set_value_accesskit(1000.0);
     settle(&mut h);
     let app = h.state();
     assert_eq!(app.scene.n, 1000);
@@ -89,7 +91,8 @@ fn hiding_the_spectrum_panel_stops_spectrum_work() {
 #[test]
 fn dragging_n_updates_every_panel() {
     let mut h = harness();
-    h.get_by_label("N").set_value_accesskit(256.0);
+    h.get_by_role_and_label(Role::Slider, "N")
+        .set_value_accesskit(256.0);
     settle(&mut h);
     let app = h.state();
     assert_eq!(app.scene.n, 256);
@@ -102,9 +105,10 @@ fn dragging_n_updates_every_panel() {
 #[test]
 fn changing_the_pattern_through_the_combo_box() {
     let mut h = harness();
-    h.get_by_label("Pattern").click();
+    h.get_by_role_and_label(Role::ComboBox, "Pattern").click();
     h.run_steps(2);
-    h.get_by_label("halton").click();
+    h.get_by_label("halton").click_accesskit();
+    h.run_steps(2);
     settle(&mut h);
     assert_eq!(h.state().scene.columns[0].pattern.name(), "halton");
     // The filter did not change: no new response evaluation.

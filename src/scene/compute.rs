@@ -590,7 +590,7 @@ fn spectrum(scene: &Scene, c: usize, cancel: &Cancel) -> Output {
         .collect();
     let accuracy = match (report.tolerance, report.error) {
         (Some(tol), Some(e)) => Some(format!(
-            "rel. ℓ2 error {:.1e} (asked {tol:.0e}, {} freq.)",
+            "rel. L2 error {:.1e} (asked {tol:.0e}, {} freq.)",
             e.relative_l2, e.frequencies
         )),
         (Some(tol), None) => Some(format!("asked {tol:.0e}")),

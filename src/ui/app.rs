@@ -247,21 +247,25 @@ impl SamplescopeApp {
         {
             self.scene.n = n.round().max(1.0) as usize;
         }
-        ui.collapsing("Panels", |ui| {
-            let p = &mut self.scene.panels;
-            ui.checkbox(&mut p.pattern, "Pattern");
-            ui.checkbox(&mut p.spectrum, "Spectrum (F2)");
-            ui.checkbox(&mut p.zoneplate, "Zone plate");
-            ui.checkbox(&mut p.filter, "Filter");
-            ui.checkbox(&mut p.cost, "Cost view (F4)");
-        });
-        ui.collapsing("Effects", |ui| {
-            let e = &mut self.scene.effects;
-            ui.checkbox(&mut e.reconstruction, "Reconstruction");
-            ui.checkbox(&mut e.error, "Reference and error");
-            ui.checkbox(&mut e.statistics, "Point statistics (overlays)");
-            ui.checkbox(&mut e.convergence, "Convergence curve");
-        });
+        egui::CollapsingHeader::new("Panels")
+            .default_open(true)
+            .show(ui, |ui| {
+                let p = &mut self.scene.panels;
+                ui.checkbox(&mut p.pattern, "Pattern");
+                ui.checkbox(&mut p.spectrum, "Spectrum (F2)");
+                ui.checkbox(&mut p.zoneplate, "Zone plate");
+                ui.checkbox(&mut p.filter, "Filter");
+                ui.checkbox(&mut p.cost, "Cost view (F4)");
+            });
+        egui::CollapsingHeader::new("Effects")
+            .default_open(true)
+            .show(ui, |ui| {
+                let e = &mut self.scene.effects;
+                ui.checkbox(&mut e.reconstruction, "Reconstruction");
+                ui.checkbox(&mut e.error, "Reference and error");
+                ui.checkbox(&mut e.statistics, "Point statistics (overlays)");
+                ui.checkbox(&mut e.convergence, "Convergence curve");
+            });
         ui.separator();
         let ncols = self.scene.columns.len();
         let mut remove = None;
@@ -410,8 +414,9 @@ pub fn pattern_ui(ui: &mut egui::Ui, column: &mut Column) {
     }
     let mut seed = column.seed;
     ui.horizontal(|ui| {
-        ui.label("seed");
-        ui.add(egui::DragValue::new(&mut seed));
+        let label = ui.label("seed");
+        ui.add(egui::DragValue::new(&mut seed))
+            .labelled_by(label.id);
     });
     column.seed = seed;
 }

@@ -122,11 +122,22 @@ pub fn columns_ui(
     ui.ctx()
         .data_mut(|d| d.insert_temp(egui::Id::NULL.with(SHOW_TIMINGS), show_timings));
     let ncols = scene.columns.len().max(1);
-    let visible = visible_panels(&scene.panels);
+    let visible = visible_panels(&scene.panels).max(1);
     let spacing = ui.spacing().item_spacing.x;
     let width = ((ui.available_width() - spacing * (ncols as f32 - 1.0)) / ncols as f32).max(120.0);
-    let height_budget = ui.available_height() / visible.max(1) as f32 - 60.0;
-    let side = width.min(height_budget.max(140.0)).max(100.0);
+    let height = ui.available_height() - 30.0;
+    // Panels of a column sit in a grid of `per_row` panels per row; pick the arrangement that
+    // gives the largest panels (each panel needs ~110 points below its image for its text and plots).
+    let (per_row, side) = [1usize, 2, 4]
+        .iter()
+        .filter(|&&k| k <= visible)
+        .map(|&k| {
+            let rows = visible.div_ceil(k) as f32;
+            let s = (width / k as f32 - 12.0).min(height / rows - 150.0);
+            (k, s)
+        })
+        .fold((1, 0.0f32), |best, c| if c.1 > best.1 { c } else { best });
+    let side = side.max(100.0);
     egui::ScrollArea::both().show(ui, |ui| {
         ui.horizontal_top(|ui| {
             for (ci, column) in scene.columns.iter().enumerate() {
@@ -140,17 +151,40 @@ pub fn columns_ui(
                                 scene.n,
                                 column.seed
                             ));
+                            let mut shown: Vec<u8> = Vec::new();
                             if scene.panels.pattern {
-                                pattern_panel(ui, ci, scene, col, view, gpu, side);
+                                shown.push(0);
                             }
                             if scene.panels.spectrum {
-                                spectrum_panel(ui, ci, scene, col, view, gpu, textures, side);
+                                shown.push(1);
                             }
                             if scene.panels.zoneplate {
-                                zoneplate_panel(ui, ci, scene, col, view, gpu, textures, side);
+                                shown.push(2);
                             }
                             if scene.panels.filter {
-                                filter_panel(ui, ci, col, view, gpu, textures, side);
+                                shown.push(3);
+                            }
+                            for row in shown.chunks(per_row) {
+                                ui.horizontal_top(|ui| {
+                                    for &panel in row {
+                                        ui.allocate_ui(Vec2::new(side + 8.0, 10.0), |ui| {
+                                            ui.vertical(|ui| match panel {
+                                                0 => pattern_panel(
+                                                    ui, ci, scene, col, view, gpu, side,
+                                                ),
+                                                1 => spectrum_panel(
+                                                    ui, ci, scene, col, view, gpu, textures, side,
+                                                ),
+                                                2 => zoneplate_panel(
+                                                    ui, ci, scene, col, view, gpu, textures, side,
+                                                ),
+                                                _ => filter_panel(
+                                                    ui, ci, col, view, gpu, textures, side,
+                                                ),
+                                            });
+                                        });
+                                    }
+                                });
                             }
                         });
                     });
@@ -176,7 +210,7 @@ fn pattern_panel(
     gpu: bool,
     side: f32,
 ) {
-    ui.label("Pattern");
+    ui.label("Sample pattern");
     let (rect, _) = ui.allocate_exact_size(Vec2::splat(side), egui::Sense::hover());
     let painter = ui.painter_at(rect);
     painter.rect_filled(rect, 0.0, Color32::WHITE);
@@ -323,7 +357,9 @@ fn pattern_panel(
             view.elementary_k = elem.then_some(view.elementary_k.unwrap_or(0));
         }
         if let Some(k) = &mut view.elementary_k {
-            ui.add(egui::DragValue::new(k).range(0..=24).prefix("k = "));
+            let label = ui.label("k");
+            ui.add(egui::DragValue::new(k).range(0..=24))
+                .labelled_by(label.id);
         }
     });
     if scene.columns[ci].pattern.is_progressive() {
@@ -464,7 +500,7 @@ fn spectrum_panel(
                 .join(" · "),
         );
     }
-    let h = (side * 0.45).max(80.0);
+    let h = (side * 0.3).max(60.0);
     Plot::new(("raps", ci))
         .height(h)
         .width(side)
@@ -626,7 +662,7 @@ fn filter_panel(
             return;
         }
     };
-    let h = (side * 0.45).max(80.0);
+    let h = (side * 0.3).max(60.0);
     Plot::new(("kernel", ci))
         .height(h)
         .width(side)
@@ -644,11 +680,11 @@ fn filter_panel(
         .iter()
         .map(|&[w, m]| [w, if db { 20.0 * m.max(1e-12).log10() } else { m }])
         .collect();
-    let ideal: Vec<[f64; 2]> = vec![
-        [0.0, if db { 0.0 } else { 1.0 }],
-        [0.5, if db { 0.0 } else { 1.0 }],
-        [0.5, if db { -120.0 } else { 0.0 }],
-        [d.omega_max, if db { -120.0 } else { 0.0 }],
+    let (one, zero) = if db { (0.0, -120.0) } else { (1.0, 0.0) };
+    let ideal_parts = [
+        vec![[0.0, one], [0.5, one]],
+        vec![[0.5, one], [0.5, zero]],
+        vec![[0.5, zero], [d.omega_max, zero]],
     ];
     Plot::new(("response", ci))
         .height(h)
@@ -659,7 +695,9 @@ fn filter_panel(
         .x_axis_label("ω (cycles/sample)")
         .y_axis_label(if db { "|H| dB" } else { "|H|" })
         .show(ui, |p| {
-            p.line(Line::new("ideal low-pass", ideal).color(Color32::GRAY));
+            for part in &ideal_parts {
+                p.line(Line::new("ideal low-pass", part.clone()).color(Color32::GRAY));
+            }
             p.line(Line::new("|H(ω)|", mag));
             p.vline(VLine::new("Nyquist", 0.5).color(Color32::from_rgb(200, 60, 60)));
         });
@@ -679,7 +717,7 @@ fn filter_panel(
         textures,
         side * 0.6,
     );
-    ui.small(format!("2D |H|, ω ∈ [−{0}, {0}]²", d.omega_max));
+    ui.small(format!("2D |H|, omega in [-{0}, {0}]²", d.omega_max));
     ui.small(
         d.metrics
             .iter()
@@ -804,9 +842,13 @@ pub fn signal_ui(ui: &mut egui::Ui, signal: &mut crate::core::signal::Signal) {
         }
         if let Some(mut v) = value.as_f64() {
             ui.horizontal(|ui| {
-                ui.label(key.as_str());
+                let label = ui.label(key.as_str());
                 let speed = (v.abs() * 0.01).max(0.001);
-                if ui.add(egui::DragValue::new(&mut v).speed(speed)).changed() {
+                if ui
+                    .add(egui::DragValue::new(&mut v).speed(speed))
+                    .labelled_by(label.id)
+                    .changed()
+                {
                     if let Some(n) = serde_json::Number::from_f64(v) {
                         *value = serde_json::Value::Number(n);
                         changed = true;
