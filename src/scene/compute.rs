@@ -263,7 +263,7 @@ pub fn column_nodes(scene: &Scene, c: usize) -> Vec<(NodeKey, Job)> {
     out
 }
 
-fn dep<'a>(done: &'a Done, kind: NodeKind) -> Result<&'a NodeValue, String> {
+fn dep(done: &Done, kind: NodeKind) -> Result<&NodeValue, String> {
     match done.get(&kind).map(|r| &r.value) {
         Some(Ok(v)) => Ok(v),
         Some(Err(e)) => Err(format!("{} failed: {e}", kind.name())),

@@ -81,7 +81,7 @@ pub fn screen_from_unit(rect: Rect, p: [f64; 2]) -> Pos2 {
     )
 }
 
-fn result_of<'a>(col: Option<&'a ColumnResults>, kind: NodeKind) -> Option<&'a Arc<NodeResult>> {
+fn result_of(col: Option<&ColumnResults>, kind: NodeKind) -> Option<&Arc<NodeResult>> {
     col.and_then(|c| c.get(&kind))
 }
 
@@ -728,6 +728,9 @@ fn filter_panel(
     time_label(ui, r);
 }
 
+/// A named convergence curve: (label, log-log RMSE vs spp, log-log RMSE vs ms).
+type Curve = (String, Vec<[f64; 2]>, Vec<[f64; 2]>);
+
 /// The cost view: every node's time and accuracy, and the convergence plot.
 pub fn cost_ui(ui: &mut egui::Ui, scene: &Scene, results: &[ColumnResults], eval: &Evaluator) {
     ui.horizontal_top(|ui| {
@@ -769,7 +772,7 @@ pub fn cost_ui(ui: &mut egui::Ui, scene: &Scene, results: &[ColumnResults], eval
             if !scene.effects.convergence {
                 ui.small("turn on the convergence effect to compute it");
             }
-            let curves: Vec<(String, Vec<[f64; 2]>, Vec<[f64; 2]>)> = results
+            let curves: Vec<Curve> = results
                 .iter()
                 .enumerate()
                 .filter_map(
