@@ -58,7 +58,7 @@ fn bad_input_exits_with_status_2_and_one_line_naming_the_field() {
     let cases: &[(&[&str], &str)] = &[
         (&["points", "nosuch", "-n", "4"], "unknown pattern 'nosuch'"),
         (&["points", "halton", "-n", "0"], "n = 0"),
-        (&["points", "halton", "-n", "-3"], "-n"),
+        (&["points", "halton", "-n", "-3"], "'-3'"),
         (
             &["points", "halton", "-n", "99999999999"],
             "n = 99999999999",

@@ -226,6 +226,38 @@ pub const BUILTIN: &[(&str, &str)] = &[
         "two-columns.ron",
         include_str!("../../assets/scenes/two-columns.ron"),
     ),
+    (
+        "best-candidate.ron",
+        include_str!("../../assets/scenes/best-candidate.ron"),
+    ),
+    (
+        "halton-vs-hammersley.ron",
+        include_str!("../../assets/scenes/halton-vs-hammersley.ron"),
+    ),
+    (
+        "hammersley-p1.ron",
+        include_str!("../../assets/scenes/hammersley-p1.ron"),
+    ),
+    (
+        "random-jitter-poisson.ron",
+        include_str!("../../assets/scenes/random-jitter-poisson.ron"),
+    ),
+    (
+        "ringing-at-a-step.ron",
+        include_str!("../../assets/scenes/ringing-at-a-step.ron"),
+    ),
+    (
+        "sobol-net.ron",
+        include_str!("../../assets/scenes/sobol-net.ron"),
+    ),
+    (
+        "uniform-vs-jittered-40x40.ron",
+        include_str!("../../assets/scenes/uniform-vs-jittered-40x40.ron"),
+    ),
+    (
+        "zone-plate-128-to-512.ron",
+        include_str!("../../assets/scenes/zone-plate-128-to-512.ron"),
+    ),
 ];
 
 impl Scene {
