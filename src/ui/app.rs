@@ -2,7 +2,6 @@
 
 use super::gpu::{self, Colormap};
 use super::panels::{self, ViewState};
-use crate::core::pattern::params::{ParamKind, ParamValue};
 use crate::core::pattern::Pattern;
 use crate::engine::Engine;
 use crate::scene::graph::{NodeKind, NodeResult};
@@ -379,33 +378,7 @@ pub fn pattern_ui(ui: &mut egui::Ui, column: &mut Column) {
         let Some(value) = column.pattern.get(spec.name) else {
             continue;
         };
-        let text = match (spec.kind.clone(), value) {
-            (ParamKind::Int { min, max, .. }, ParamValue::Int(mut v)) => {
-                let hi = max.min(min.saturating_add(100_000));
-                let r = ui
-                    .add(egui::Slider::new(&mut v, min..=hi).text(spec.name))
-                    .on_hover_text(spec.doc);
-                r.changed().then(|| v.to_string())
-            }
-            (ParamKind::Float { min, max, .. }, ParamValue::Float(mut v)) => {
-                let r = ui
-                    .add(egui::Slider::new(&mut v, min..=max).text(spec.name))
-                    .on_hover_text(spec.doc);
-                r.changed().then(|| format!("{v:?}"))
-            }
-            (ParamKind::Choice { options, .. }, ParamValue::Choice(current)) => {
-                let mut chosen = current;
-                egui::ComboBox::from_label(spec.name)
-                    .selected_text(current)
-                    .show_ui(ui, |ui| {
-                        for o in options {
-                            ui.selectable_value(&mut chosen, o, *o);
-                        }
-                    });
-                (chosen != current).then(|| chosen.to_string())
-            }
-            _ => None,
-        };
+        let text = panels::param_ui(ui, &spec, value);
         if let Some(t) = text {
             // The slider's range is the parameter's range, so this cannot fail; if it did, the
             // old value stays.

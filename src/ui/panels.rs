@@ -878,7 +878,6 @@ pub fn signal_ui(ui: &mut egui::Ui, signal: &mut crate::core::signal::Signal) {
 /// Mitchell–Netravali (B, C) picker.
 pub fn filter_ui(ui: &mut egui::Ui, f2: &mut crate::core::filter::Filter2D) {
     use crate::core::filter::{Filter, Mode2D};
-    use crate::core::pattern::params::{ParamKind, ParamValue};
     let mut name = f2.filter.name();
     egui::ComboBox::from_label("Kernel")
         .selected_text(name)
@@ -911,32 +910,7 @@ pub fn filter_ui(ui: &mut egui::Ui, f2: &mut crate::core::filter::Filter2D) {
         let Some(value) = f2.filter.get(spec.name) else {
             continue;
         };
-        let text = match (spec.kind.clone(), value) {
-            (ParamKind::Float { min, max, .. }, ParamValue::Float(mut v)) => {
-                let hi = max.min(64.0);
-                ui.add(egui::Slider::new(&mut v, min..=hi).text(spec.name))
-                    .on_hover_text(spec.doc)
-                    .changed()
-                    .then(|| format!("{v:?}"))
-            }
-            (ParamKind::Int { min, max, .. }, ParamValue::Int(mut v)) => ui
-                .add(egui::Slider::new(&mut v, min..=max.min(min + 1000)).text(spec.name))
-                .on_hover_text(spec.doc)
-                .changed()
-                .then(|| v.to_string()),
-            (ParamKind::Choice { options, .. }, ParamValue::Choice(current)) => {
-                let mut chosen = current;
-                egui::ComboBox::from_label(spec.name)
-                    .selected_text(current)
-                    .show_ui(ui, |ui| {
-                        for o in options {
-                            ui.selectable_value(&mut chosen, o, *o);
-                        }
-                    });
-                (chosen != current).then(|| chosen.to_string())
-            }
-            _ => None,
-        };
+        let text = param_ui(ui, &spec, value);
         if let Some(t) = text {
             let _ = f2.filter.set(spec.name, &t);
         }
@@ -979,4 +953,52 @@ fn bc_picker(ui: &mut egui::Ui, f2: &mut crate::core::filter::Filter2D, b: f64, 
         let _ = f2.filter.set("c", &format!("{nc:?}"));
     }
     ui.small(format!("B = {b:.3}, C = {c:.3} (line: B + 2C = 1)"));
+}
+
+/// One control for a parameter descriptor (slider over its allowed range, logarithmic when the
+/// range spans more than three decades; a combo box for choices). Returns the new value as
+/// text when the user changed it, for the owner's range-checked `set`.
+pub fn param_ui(
+    ui: &mut egui::Ui,
+    spec: &crate::core::pattern::params::ParamSpec,
+    value: crate::core::pattern::params::ParamValue,
+) -> Option<String> {
+    use crate::core::pattern::params::{ParamKind, ParamValue};
+    match (spec.kind.clone(), value) {
+        (ParamKind::Int { min, max, .. }, ParamValue::Int(mut v)) => {
+            let hi = max.min(min.saturating_add(100_000));
+            let log = min >= 1 && hi > 1000 * min;
+            ui.add(
+                egui::Slider::new(&mut v, min..=hi)
+                    .logarithmic(log)
+                    .text(spec.name),
+            )
+            .on_hover_text(spec.doc)
+            .changed()
+            .then(|| v.to_string())
+        }
+        (ParamKind::Float { min, max, .. }, ParamValue::Float(mut v)) => {
+            let log = min > 0.0 && max > 1000.0 * min;
+            ui.add(
+                egui::Slider::new(&mut v, min..=max)
+                    .logarithmic(log)
+                    .text(spec.name),
+            )
+            .on_hover_text(spec.doc)
+            .changed()
+            .then(|| format!("{v:?}"))
+        }
+        (ParamKind::Choice { options, .. }, ParamValue::Choice(current)) => {
+            let mut chosen = current;
+            egui::ComboBox::from_label(spec.name)
+                .selected_text(current)
+                .show_ui(ui, |ui| {
+                    for o in options {
+                        ui.selectable_value(&mut chosen, o, *o);
+                    }
+                });
+            (chosen != current).then(|| chosen.to_string())
+        }
+        _ => None,
+    }
 }

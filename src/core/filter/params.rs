@@ -97,34 +97,12 @@ pub fn parse_param(
     spec: &ParamSpec,
     text: &str,
 ) -> Result<ParamValue, FilterError> {
-    let bad = || FilterError::InvalidParam {
+    spec.parse(text).ok_or_else(|| FilterError::InvalidParam {
         filter,
         field: spec.name,
         value: text.to_string(),
         allowed: spec.allowed(),
-    };
-    let t = text.trim();
-    match &spec.kind {
-        ParamKind::Int { min, max, .. } => {
-            let v: i64 = t.parse().map_err(|_| bad())?;
-            if v < *min || v > *max {
-                return Err(bad());
-            }
-            Ok(ParamValue::Int(v))
-        }
-        ParamKind::Float { min, max, .. } => {
-            let v: f64 = t.parse().map_err(|_| bad())?;
-            if !v.is_finite() || v < *min || v > *max {
-                return Err(bad());
-            }
-            Ok(ParamValue::Float(v))
-        }
-        ParamKind::Choice { options, .. } => options
-            .iter()
-            .find(|o| o.eq_ignore_ascii_case(t))
-            .map(|o| ParamValue::Choice(o))
-            .ok_or_else(bad),
-    }
+    })
 }
 
 /// A float descriptor.

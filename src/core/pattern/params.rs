@@ -82,40 +82,40 @@ pub trait ChoiceParam: Copy + Sized {
     }
 }
 
+impl ParamSpec {
+    /// Parses `text` as a value of this parameter; `None` when it is malformed, not finite or
+    /// outside the allowed range. Callers wrap `None` in their own typed error.
+    pub fn parse(&self, text: &str) -> Option<ParamValue> {
+        let t = text.trim();
+        match &self.kind {
+            ParamKind::Int { min, max, .. } => {
+                let v: i64 = t.parse().ok()?;
+                (*min..=*max).contains(&v).then_some(ParamValue::Int(v))
+            }
+            ParamKind::Float { min, max, .. } => {
+                let v: f64 = t.parse().ok()?;
+                (v.is_finite() && v >= *min && v <= *max).then_some(ParamValue::Float(v))
+            }
+            ParamKind::Choice { options, .. } => options
+                .iter()
+                .find(|o| o.eq_ignore_ascii_case(t))
+                .map(|o| ParamValue::Choice(o)),
+        }
+    }
+}
+
 /// Parses `text` as the value of `spec`, checking the range. Errors name the pattern and field.
 pub fn parse_value(
     pattern: &'static str,
     spec: &ParamSpec,
     text: &str,
 ) -> Result<ParamValue, PatternError> {
-    let bad = || PatternError::InvalidParam {
+    spec.parse(text).ok_or_else(|| PatternError::InvalidParam {
         pattern,
         field: spec.name,
         value: text.to_string(),
         allowed: spec.allowed(),
-    };
-    let t = text.trim();
-    match &spec.kind {
-        ParamKind::Int { min, max, .. } => {
-            let v: i64 = t.parse().map_err(|_| bad())?;
-            if v < *min || v > *max {
-                return Err(bad());
-            }
-            Ok(ParamValue::Int(v))
-        }
-        ParamKind::Float { min, max, .. } => {
-            let v: f64 = t.parse().map_err(|_| bad())?;
-            if !v.is_finite() || v < *min || v > *max {
-                return Err(bad());
-            }
-            Ok(ParamValue::Float(v))
-        }
-        ParamKind::Choice { options, .. } => options
-            .iter()
-            .find(|o| o.eq_ignore_ascii_case(t))
-            .map(|o| ParamValue::Choice(o))
-            .ok_or_else(bad),
-    }
+    })
 }
 
 /// Checks a value (e.g. from a slider or a scene file) against `spec`.
