@@ -9,7 +9,7 @@ use samplescope::core::rng::derive_seed;
 use samplescope::core::spectrum::{
     average_periodogram, radial_average, DcMode, Method, SpectrumRequest,
 };
-use samplescope::export::{png_bytes, write_file, PngColormap};
+use samplescope::export::{flip_rows, png_bytes, write_file, PngColormap};
 use serde_json::json;
 use std::fmt::Write as _;
 use std::time::Instant;
@@ -142,10 +142,7 @@ pub fn run(args: &AnalyzeArgs) -> Result<(), CliError> {
         let m = spec.m;
         let log = spec.to_log_image(true);
         // Row 0 of the PNG is the highest ky.
-        let mut values = Vec::with_capacity(m * m);
-        for row in (0..m).rev() {
-            values.extend(log[row * m..(row + 1) * m].iter().map(|&v| v as f64));
-        }
+        let values: Vec<f64> = flip_rows(&log, m).into_iter().map(f64::from).collect();
         let mut sorted: Vec<f64> = values.clone();
         sorted.sort_by(|a, b| a.total_cmp(b));
         let lo = sorted[(sorted.len() - 1) * 2 / 100];

@@ -9,7 +9,7 @@ use samplescope::core::recon::{
     PatternProvider, ReferenceOptions,
 };
 use samplescope::core::signal::Signal;
-use samplescope::export::{png_bytes, write_file, PngColormap};
+use samplescope::export::{flip_rows, png_bytes, write_file, PngColormap};
 use std::time::Instant;
 
 /// Arguments of `samplescope recon`.
@@ -163,10 +163,7 @@ pub fn run(args: &ReconArgs) -> Result<(), CliError> {
     let report = error_report(&recon, &reference.pixels).map_err(|e| usage(&e))?;
     if let Some(path) = &args.out {
         let w = args.size;
-        let mut values = Vec::with_capacity(w * w);
-        for row in (0..w).rev() {
-            values.extend_from_slice(&recon.pixels[row * w..(row + 1) * w]);
-        }
+        let values = flip_rows(&recon.pixels, w);
         let text = [
             ("Software", "samplescope".to_string()),
             (

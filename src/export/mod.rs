@@ -89,6 +89,15 @@ pub fn png_bytes(
     Ok(out)
 }
 
+/// Reverses the row order of a `width`-wide row-major image: images stored with row 0 at the
+/// bottom (y up, as periodograms and reconstructions are) become row 0 at the top (as PNG is).
+pub fn flip_rows<T: Copy>(values: &[T], width: usize) -> Vec<T> {
+    if width == 0 {
+        return Vec::new();
+    }
+    values.chunks(width).rev().flatten().copied().collect()
+}
+
 /// Writes bytes to `path`.
 pub fn write_file(path: &str, bytes: &[u8]) -> Result<(), ExportError> {
     let mut f = std::fs::File::create(path).map_err(|source| ExportError::Io {
@@ -104,6 +113,12 @@ pub fn write_file(path: &str, bytes: &[u8]) -> Result<(), ExportError> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn flip_rows_reverses_row_order() {
+        assert_eq!(flip_rows(&[1, 2, 3, 4, 5, 6], 2), vec![5, 6, 3, 4, 1, 2]);
+        assert!(flip_rows::<u8>(&[], 0).is_empty());
+    }
 
     #[test]
     fn png_round_trips_size_metadata_and_end_colours() {

@@ -560,25 +560,15 @@ fn zoneplate_panel(
         }
         return;
     };
+    let grey = DisplayRange {
+        lo: 0.0,
+        hi: 1.0,
+        log: false,
+        colormap: Colormap::Greys,
+    };
     let (image, range) = match &r.value {
-        Ok(NodeValue::Reconstruction(d)) => (
-            d.image.clone(),
-            DisplayRange {
-                lo: 0.0,
-                hi: 1.0,
-                log: false,
-                colormap: Colormap::Greys,
-            },
-        ),
-        Ok(NodeValue::Reference(d)) => (
-            d.image.clone(),
-            DisplayRange {
-                lo: 0.0,
-                hi: 1.0,
-                log: false,
-                colormap: Colormap::Greys,
-            },
-        ),
+        Ok(NodeValue::Reconstruction(d)) => (d.image.clone(), grey),
+        Ok(NodeValue::Reference(d)) => (d.image.clone(), grey),
         Ok(NodeValue::Error(d)) => (
             d.image.clone(),
             DisplayRange {
