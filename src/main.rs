@@ -26,6 +26,8 @@ enum Command {
     Analyze(cli::analyze::AnalyzeArgs),
     /// Sample a test signal with a pattern, reconstruct it, and report RMSE, PSNR and time.
     Recon(cli::recon::ReconArgs),
+    /// Write every figure of a scene (PNG, SVG, CSV, composites) with no window and no GPU.
+    Render(cli::render::RenderArgs),
 }
 
 fn main() -> ExitCode {
@@ -42,6 +44,7 @@ fn main() -> ExitCode {
         Some(Command::Filter(args)) => cli::filter::run(&args),
         Some(Command::Analyze(args)) => cli::analyze::run(&args),
         Some(Command::Recon(args)) => cli::recon::run(&args),
+        Some(Command::Render(args)) => cli::render::run(&args),
         None => samplescope::ui::run_gui(cli.scene).map_err(cli::CliError::Gui),
     };
     match result {

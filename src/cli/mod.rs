@@ -5,6 +5,7 @@ pub mod analyze;
 pub mod filter;
 pub mod points;
 pub mod recon;
+pub mod render;
 
 use samplescope::core::filter::FilterError;
 use samplescope::core::pattern::{Pattern, PatternError};

@@ -1,4 +1,7 @@
-//! Figure and data writers: PNG images through a perceptual colour map, CSV.
+//! Figure and data writers: PNG images through a perceptual colour map, CSV, and the
+//! [`figure`]s for slides (axes, labels, colour bars; PNG, SVG, CSV and composites).
+
+pub mod figure;
 
 use std::io::Write;
 
@@ -17,6 +20,33 @@ pub enum ExportError {
         width: usize,
         height: usize,
         len: usize,
+    },
+    /// A numeric argument (e.g. the figure scale) is outside its documented range.
+    #[error("{field} = {value}: must be an integer in {min}..={max}")]
+    OutOfRange {
+        field: &'static str,
+        value: i64,
+        min: i64,
+        max: i64,
+    },
+    /// A figure has no data to draw (not computed, or empty).
+    #[error("{figure}: no data: {reason}")]
+    EmptyData {
+        figure: &'static str,
+        reason: String,
+    },
+    /// The plotting backend failed.
+    #[error("{figure}: drawing failed: {message}")]
+    Draw {
+        figure: &'static str,
+        message: String,
+    },
+    /// A composite would exceed the pixel limit.
+    #[error("composite of {width}×{height} pixels exceeds {max_pixels} pixels: use a smaller scale or fewer columns")]
+    TooLarge {
+        width: u64,
+        height: u64,
+        max_pixels: u64,
     },
 }
 

@@ -1,0 +1,200 @@
+//! `samplescope render`: every figure of a scene, headless (no window, no GPU).
+//!
+//! Loads the scene, evaluates its compute graph synchronously, and writes, for every column,
+//! each figure its visible panels show (PNG, SVG, CSV), the column composite, and the
+//! comparison of all columns, printing one line per file. The periodograms of all columns
+//! share one colour range (the union of their automatic ranges), as locked scales do in
+//! the GUI. Same scene → byte-identical files.
+
+use super::CliError;
+use samplescope::core::cancel::Cancel;
+use samplescope::export::figure::{
+    column_file_name, column_png, comparison_file_name, comparison_png, panel_csv, panel_file_name,
+    panel_png, panel_svg, ColumnData, FigureContext, PanelKind, SCALES,
+};
+use samplescope::export::{write_file, ExportError};
+use samplescope::scene::graph::{Evaluator, NodeKind, NodeResult};
+use samplescope::scene::{Scene, SceneError};
+use std::collections::HashMap;
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
+
+/// Arguments of `samplescope render`.
+#[derive(clap::Args, Debug)]
+pub struct RenderArgs {
+    /// Scene file (RON).
+    pub scene: PathBuf,
+    /// Output directory (created if missing).
+    #[arg(long, value_name = "DIR")]
+    pub out: PathBuf,
+    /// Figure scale, 1..=4: every figure is scale × its base size (text and lines too).
+    #[arg(long, default_value_t = 1)]
+    pub scale: u32,
+    /// Formats to write, comma-separated: png, svg, csv (composites are PNG only).
+    #[arg(long, value_delimiter = ',', default_value = "png,svg,csv")]
+    pub format: Vec<String>,
+}
+
+/// An output format.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Format {
+    Png,
+    Svg,
+    Csv,
+}
+
+fn parse_formats(list: &[String]) -> Result<Vec<Format>, CliError> {
+    let mut out = Vec::new();
+    for f in list {
+        let format = match f.trim().to_ascii_lowercase().as_str() {
+            "png" => Format::Png,
+            "svg" => Format::Svg,
+            "csv" => Format::Csv,
+            _ => {
+                return Err(CliError::Usage(format!(
+                    "--format {f}: must be a comma-separated list of png, svg, csv"
+                )))
+            }
+        };
+        if !out.contains(&format) {
+            out.push(format);
+        }
+    }
+    if out.is_empty() {
+        return Err(CliError::Usage(
+            "--format: must name at least one of png, svg, csv".into(),
+        ));
+    }
+    Ok(out)
+}
+
+fn export_err(e: ExportError) -> CliError {
+    match e {
+        ExportError::Io { path, source } => CliError::Io { path, source },
+        other => CliError::Usage(other.to_string()),
+    }
+}
+
+fn write(path: &Path, bytes: &[u8]) -> Result<(), CliError> {
+    write_file(&path.display().to_string(), bytes).map_err(export_err)?;
+    println!("{}", path.display());
+    Ok(())
+}
+
+/// Evaluates every node the scene needs; the first failed node (in evaluation order) of any
+/// column is an error naming the column and the node.
+fn evaluate(
+    scene: &Scene,
+    source: &str,
+) -> Result<Vec<HashMap<NodeKind, Arc<NodeResult>>>, CliError> {
+    let mut results: Vec<HashMap<NodeKind, Arc<NodeResult>>> =
+        vec![HashMap::new(); scene.columns.len()];
+    Evaluator::default().evaluate(scene, &Cancel::never(), &mut |c, kind, r| {
+        if let Some(col) = results.get_mut(c) {
+            col.insert(kind, r);
+        }
+    });
+    for (c, col) in results.iter().enumerate() {
+        for kind in NodeKind::ALL {
+            if let Some(Err(e)) = col.get(&kind).map(|r| &r.value) {
+                return Err(CliError::Usage(format!(
+                    "{source}: column {} ({}): {} node failed: {e}",
+                    c + 1,
+                    scene.columns[c].title(),
+                    kind.name()
+                )));
+            }
+        }
+    }
+    Ok(results)
+}
+
+/// Runs `samplescope render`.
+pub fn run(args: &RenderArgs) -> Result<(), CliError> {
+    if !SCALES.contains(&args.scale) {
+        return Err(CliError::Usage(format!(
+            "--scale = {}: must be an integer in {}..={}",
+            args.scale,
+            SCALES.start(),
+            SCALES.end()
+        )));
+    }
+    let formats = parse_formats(&args.format)?;
+    let source = args.scene.display().to_string();
+    let scene = Scene::load(&args.scene).map_err(|e| match e {
+        SceneError::Io { path, message } => CliError::Io {
+            path,
+            source: std::io::Error::other(message),
+        },
+        other => CliError::Usage(other.to_string()),
+    })?;
+    let stem = args
+        .scene
+        .file_stem()
+        .map(|s| s.to_string_lossy().into_owned())
+        .unwrap_or_default();
+    let results = evaluate(&scene, &source)?;
+
+    let mut columns: Vec<(FigureContext, ColumnData)> = Vec::new();
+    for (c, res) in results.iter().enumerate() {
+        let ctx = FigureContext::new(&scene, c, &stem).map_err(export_err)?;
+        columns.push((ctx, ColumnData::from_results(res)));
+    }
+    // One colour range for every periodogram: the union of the columns' automatic ranges.
+    let ranges: Vec<(f32, f32)> = columns
+        .iter()
+        .filter_map(|(_, d)| d.spectrum.as_ref().map(|s| s.auto_range))
+        .collect();
+    if let Some(first) = ranges.first() {
+        let shared = ranges
+            .iter()
+            .fold(*first, |(lo, hi), r| (lo.min(r.0), hi.max(r.1)));
+        for (ctx, _) in &mut columns {
+            ctx.spectrum_range = Some(shared);
+        }
+    }
+
+    std::fs::create_dir_all(&args.out).map_err(|source_err| CliError::Io {
+        path: args.out.display().to_string(),
+        source: source_err,
+    })?;
+    let kinds = PanelKind::available(&scene);
+    let composite = PanelKind::composite(&scene);
+    let s = args.scale;
+    for (ctx, data) in &columns {
+        for &kind in &kinds {
+            for &f in &formats {
+                let (name, bytes) = match f {
+                    Format::Png => (
+                        panel_file_name(kind, ctx, Some(s), "png"),
+                        panel_png(kind, ctx, data, s).map_err(export_err)?,
+                    ),
+                    Format::Svg => (
+                        panel_file_name(kind, ctx, Some(s), "svg"),
+                        panel_svg(kind, ctx, data, s)
+                            .map_err(export_err)?
+                            .into_bytes(),
+                    ),
+                    Format::Csv => (
+                        panel_file_name(kind, ctx, None, "csv"),
+                        panel_csv(kind, ctx, data).map_err(export_err)?.into_bytes(),
+                    ),
+                };
+                write(&args.out.join(name), &bytes)?;
+            }
+        }
+        if !composite.is_empty() && formats.contains(&Format::Png) {
+            let bytes = column_png(&composite, ctx, data, s).map_err(export_err)?;
+            write(&args.out.join(column_file_name(ctx, s)), &bytes)?;
+        }
+    }
+    if !composite.is_empty() && formats.contains(&Format::Png) {
+        let bytes = comparison_png(&composite, &columns, s).map_err(export_err)?;
+        let name = columns
+            .first()
+            .map(|(c, _)| comparison_file_name(&c.scene_name, scene.n, s))
+            .unwrap_or_else(|| comparison_file_name(&stem, scene.n, s));
+        write(&args.out.join(name), &bytes)?;
+    }
+    Ok(())
+}

@@ -1,0 +1,870 @@
+//! Drawing of each figure with plotters, onto a bitmap or into SVG text.
+//!
+//! Layout at scale 1 (every length is multiplied by the scale): a title band of
+//! [`TITLE_H`] pixels, then a chart with [`MARGIN`] on every side, [`Y_LABEL`] pixels for the
+//! y tick labels and description and [`X_LABEL`] pixels for the x ones. With the base sizes of
+//! [`PanelKind::base_size`] the plotting area of the pattern and image figures is a
+//! 400 × 400 square and that of the line plots 560 × 400.
+
+use super::{figure_title, ColumnData, FigureColormap, FigureContext, PanelKind, Rgb};
+use crate::export::ExportError;
+use crate::scene::graph::ImageData;
+use plotters::coord::types::RangedCoordf64;
+use plotters::coord::Shift;
+use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
+use std::ops::Range;
+use std::sync::OnceLock;
+
+/// The font family every text uses (registered from bytes, see [`ensure_font`]).
+const FONT: &str = "sans-serif";
+/// Height of the title band.
+const TITLE_H: u32 = 40;
+/// Margin around a chart.
+const MARGIN: u32 = 10;
+/// Width of the y label area.
+const Y_LABEL: u32 = 60;
+/// Height of the x label area.
+const X_LABEL: u32 = 50;
+/// Width of the colour-bar part of the periodogram and error figures.
+const BAR_PART: u32 = 110;
+/// Title, tick-label and axis-description font sizes.
+const TITLE_PX: f64 = 17.0;
+const TICK_PX: f64 = 13.0;
+const DESC_PX: f64 = 15.0;
+
+/// Line colour of the data (matplotlib's first colour).
+const DATA: RGBColor = RGBColor(31, 119, 180);
+/// Reference lines (white noise, ideal low-pass, zero).
+const GUIDE: RGBColor = RGBColor(150, 150, 150);
+/// The Nyquist line.
+const NYQUIST: RGBColor = RGBColor(200, 60, 60);
+/// The points of a pattern.
+const INK: RGBColor = RGBColor(20, 20, 30);
+
+/// An image placed in an SVG figure: `image` shown over the pixel rectangle (x, y, w, h).
+pub(crate) struct SvgImage {
+    pub x: i32,
+    pub y: i32,
+    pub width: u32,
+    pub height: u32,
+    pub image: Rgb,
+}
+
+/// Where images go: blitted into the bitmap, or collected for embedding in the SVG.
+enum Sink {
+    Bitmap,
+    Svg(Vec<SvgImage>),
+}
+
+/// Registers the built-in font with plotters once.
+pub(super) fn ensure_font() -> Result<(), ExportError> {
+    static REGISTERED: OnceLock<bool> = OnceLock::new();
+    let ok = *REGISTERED.get_or_init(|| {
+        plotters::style::register_font(FONT, FontStyle::Normal, epaint_default_fonts::UBUNTU_LIGHT)
+            .is_ok()
+    });
+    if ok {
+        Ok(())
+    } else {
+        Err(ExportError::Draw {
+            figure: "font",
+            message: "the built-in font could not be parsed".into(),
+        })
+    }
+}
+
+/// Scaled lengths and styles.
+#[derive(Clone, Copy)]
+struct Look {
+    s: u32,
+}
+
+impl Look {
+    fn u(self, v: u32) -> u32 {
+        v * self.s
+    }
+    fn i(self, v: u32) -> i32 {
+        (v * self.s) as i32
+    }
+    fn text(self, px: f64) -> TextStyle<'static> {
+        (FONT, px * self.s as f64).into_font().color(&BLACK)
+    }
+    fn line(self, color: RGBColor, width: u32) -> ShapeStyle {
+        color.stroke_width(width * self.s)
+    }
+}
+
+fn draw_err(kind: PanelKind, e: impl std::fmt::Display) -> ExportError {
+    ExportError::Draw {
+        figure: kind.name(),
+        message: e.to_string(),
+    }
+}
+
+fn missing(kind: PanelKind) -> ExportError {
+    ExportError::EmptyData {
+        figure: kind.name(),
+        reason: "not computed (panel hidden, effect off, still running, or its node failed)".into(),
+    }
+}
+
+fn empty(kind: PanelKind, what: &str) -> ExportError {
+    ExportError::EmptyData {
+        figure: kind.name(),
+        reason: what.into(),
+    }
+}
+
+/// Draws `kind` into an RGB bitmap of base size × `scale`.
+pub(crate) fn render_bitmap(
+    kind: PanelKind,
+    ctx: &FigureContext,
+    data: &ColumnData,
+    scale: u32,
+) -> Result<Rgb, ExportError> {
+    ensure_font()?;
+    check_data(kind, data)?;
+    let (bw, bh) = kind.base_size();
+    let (w, h) = (bw * scale, bh * scale);
+    let mut buf = vec![255u8; (w as usize) * (h as usize) * 3];
+    {
+        let root = BitMapBackend::with_buffer(&mut buf, (w, h)).into_drawing_area();
+        draw(&root, kind, ctx, data, Look { s: scale }, &mut Sink::Bitmap)?;
+        root.present().map_err(|e| draw_err(kind, e))?;
+    }
+    Ok(Rgb {
+        width: w,
+        height: h,
+        data: buf,
+    })
+}
+
+/// Draws `kind` as SVG text of base size × `scale`; the images to embed come back separately.
+pub(crate) fn render_svg(
+    kind: PanelKind,
+    ctx: &FigureContext,
+    data: &ColumnData,
+    scale: u32,
+) -> Result<(String, Vec<SvgImage>), ExportError> {
+    ensure_font()?;
+    check_data(kind, data)?;
+    let (bw, bh) = kind.base_size();
+    let mut text = String::new();
+    let mut sink = Sink::Svg(Vec::new());
+    {
+        let root = SVGBackend::with_string(&mut text, (bw * scale, bh * scale)).into_drawing_area();
+        draw(&root, kind, ctx, data, Look { s: scale }, &mut sink)?;
+        root.present().map_err(|e| draw_err(kind, e))?;
+    }
+    let images = match sink {
+        Sink::Svg(v) => v,
+        Sink::Bitmap => Vec::new(),
+    };
+    Ok((text, images))
+}
+
+/// Refuses missing or empty data before anything is drawn.
+fn check_data(kind: PanelKind, d: &ColumnData) -> Result<(), ExportError> {
+    let image_ok = |im: &ImageData| im.width > 0 && im.height > 0;
+    match kind {
+        PanelKind::Pattern => {
+            let p = d.points.as_ref().ok_or_else(|| missing(kind))?;
+            if p.points.is_empty() {
+                return Err(empty(kind, "the point set is empty"));
+            }
+        }
+        PanelKind::Spectrum => {
+            let s = d.spectrum.as_ref().ok_or_else(|| missing(kind))?;
+            if !image_ok(&s.image) {
+                return Err(empty(kind, "the periodogram image is empty"));
+            }
+        }
+        PanelKind::Raps => {
+            let s = d.spectrum.as_ref().ok_or_else(|| missing(kind))?;
+            if !s.raps.iter().any(|p| p[0].is_finite() && p[1].is_finite()) {
+                return Err(empty(kind, "the radial average has no finite bin"));
+            }
+        }
+        PanelKind::Reconstruction => {
+            let r = d.reconstruction.as_ref().ok_or_else(|| missing(kind))?;
+            if !image_ok(&r.image) {
+                return Err(empty(kind, "the image is empty"));
+            }
+        }
+        PanelKind::Reference => {
+            let r = d.reference.as_ref().ok_or_else(|| missing(kind))?;
+            if !image_ok(&r.image) {
+                return Err(empty(kind, "the image is empty"));
+            }
+        }
+        PanelKind::Error => {
+            let r = d.error.as_ref().ok_or_else(|| missing(kind))?;
+            if !image_ok(&r.image) {
+                return Err(empty(kind, "the image is empty"));
+            }
+        }
+        PanelKind::Kernel | PanelKind::Response => {
+            let r = d.response.as_ref().ok_or_else(|| missing(kind))?;
+            let curve = if kind == PanelKind::Kernel {
+                &r.kernel
+            } else {
+                &r.magnitude
+            };
+            if !curve.iter().any(|p| p[0].is_finite() && p[1].is_finite()) {
+                return Err(empty(kind, "the curve has no finite point"));
+            }
+        }
+        PanelKind::Convergence => {
+            let c = d.convergence.as_ref().ok_or_else(|| missing(kind))?;
+            if !c
+                .iter()
+                .any(|p| p.spp > 0 && p.rmse.is_finite() && p.rmse > 0.0)
+            {
+                return Err(empty(kind, "no point with spp > 0 and a positive RMSE"));
+            }
+        }
+    }
+    Ok(())
+}
+
+fn draw<DB: DrawingBackend>(
+    root: &DrawingArea<DB, Shift>,
+    kind: PanelKind,
+    ctx: &FigureContext,
+    data: &ColumnData,
+    look: Look,
+    sink: &mut Sink,
+) -> Result<(), ExportError> {
+    let de = |e: DrawingAreaErrorKind<DB::ErrorType>| draw_err(kind, e);
+    root.fill(&WHITE).map_err(de)?;
+    let (title_area, body) = root.split_vertically(look.u(TITLE_H));
+    title(&title_area, &figure_title(kind, ctx, data), look, kind)?;
+    // `check_data` has run: the unwraps below are on data it found present.
+    match kind {
+        PanelKind::Pattern => pattern(&body, data, look),
+        PanelKind::Spectrum => {
+            let s = data.spectrum.as_ref().ok_or_else(|| missing(kind))?;
+            let (lo, hi) = ordered_range(ctx.spectrum_range.unwrap_or(s.auto_range));
+            let m = s.image.width as f64;
+            let k0 = -((s.image.width / 2) as f64);
+            let ky0 = -((s.image.height / 2) as f64);
+            let kh = s.image.height as f64;
+            image_figure(
+                root,
+                &body,
+                kind,
+                look,
+                sink,
+                ImageSpec {
+                    image: &s.image,
+                    x: (k0 - 0.5)..(k0 + m - 0.5),
+                    y: (ky0 - 0.5)..(ky0 + kh - 0.5),
+                    x_desc: "kx (cycles per unit)",
+                    y_desc: "ky",
+                    integer_ticks: true,
+                    lo,
+                    hi,
+                    colormap: ctx.spectrum_colormap,
+                    bar: Some("log10 P"),
+                },
+            )
+        }
+        PanelKind::Reconstruction | PanelKind::Reference | PanelKind::Error => {
+            let (image, lo, hi, colormap, bar) = match kind {
+                PanelKind::Reconstruction => {
+                    let r = data.reconstruction.as_ref().ok_or_else(|| missing(kind))?;
+                    (&r.image, 0.0, 1.0, FigureColormap::Greys, None)
+                }
+                PanelKind::Reference => {
+                    let r = data.reference.as_ref().ok_or_else(|| missing(kind))?;
+                    (&r.image, 0.0, 1.0, FigureColormap::Greys, None)
+                }
+                _ => {
+                    let r = data.error.as_ref().ok_or_else(|| missing(kind))?;
+                    (
+                        &r.image,
+                        0.0,
+                        r.max_error.max(1e-6) as f64,
+                        FigureColormap::Inferno,
+                        Some("|reconstruction − reference|"),
+                    )
+                }
+            };
+            image_figure(
+                root,
+                &body,
+                kind,
+                look,
+                sink,
+                ImageSpec {
+                    image,
+                    x: 0.0..1.0,
+                    y: 0.0..1.0,
+                    x_desc: "x",
+                    y_desc: "y",
+                    integer_ticks: false,
+                    lo,
+                    hi,
+                    colormap,
+                    bar,
+                },
+            )
+        }
+        PanelKind::Raps => {
+            let s = data.spectrum.as_ref().ok_or_else(|| missing(kind))?;
+            raps(&body, &s.raps, look)
+        }
+        PanelKind::Kernel => {
+            let r = data.response.as_ref().ok_or_else(|| missing(kind))?;
+            kernel(&body, &r.kernel, ctx, look)
+        }
+        PanelKind::Response => {
+            let r = data.response.as_ref().ok_or_else(|| missing(kind))?;
+            response(&body, &r.magnitude, r.omega_max, ctx, look)
+        }
+        PanelKind::Convergence => {
+            let c = data.convergence.as_ref().ok_or_else(|| missing(kind))?;
+            let pts: Vec<(f64, f64)> = c
+                .iter()
+                .filter(|p| p.spp > 0 && p.rmse.is_finite() && p.rmse > 0.0)
+                .map(|p| (p.spp as f64, p.rmse))
+                .collect();
+            convergence(&body, &pts, look)
+        }
+    }
+}
+
+/// The title, centred in its band, its font shrunk until it fits the width.
+fn title<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    text: &str,
+    look: Look,
+    kind: PanelKind,
+) -> Result<(), ExportError> {
+    let (w, h) = area.dim_in_pixel();
+    let room = w.saturating_sub(2 * look.u(MARGIN));
+    let mut px = TITLE_PX;
+    let mut style = look.text(px);
+    while px > 8.0 {
+        let (tw, _) = area
+            .estimate_text_size(text, &style)
+            .map_err(|e| draw_err(kind, e))?;
+        if tw <= room {
+            break;
+        }
+        px -= 1.0;
+        style = look.text(px);
+    }
+    let style = style.pos(Pos::new(HPos::Center, VPos::Center));
+    area.draw_text(text, &style, ((w / 2) as i32, (h / 2) as i32))
+        .map_err(|e| draw_err(kind, e))
+}
+
+/// A chart with the standard margins and label areas on `area`.
+fn chart<'a, DB: DrawingBackend>(
+    area: &'a DrawingArea<DB, Shift>,
+    x: Range<f64>,
+    y: Range<f64>,
+    look: Look,
+    kind: PanelKind,
+) -> Result<ChartContext<'a, DB, Cartesian2d<RangedCoordf64, RangedCoordf64>>, ExportError> {
+    ChartBuilder::on(area)
+        .margin(look.u(MARGIN))
+        .x_label_area_size(look.u(X_LABEL))
+        .y_label_area_size(look.u(Y_LABEL))
+        .build_cartesian_2d(x, y)
+        .map_err(|e| draw_err(kind, e))
+}
+
+fn int_label(v: &f64) -> String {
+    format!("{v:.0}")
+}
+
+/// Axes with ticks, tick labels and descriptions; a light grid when `grid`.
+fn axes<DB: DrawingBackend>(
+    chart: &mut ChartContext<'_, DB, Cartesian2d<RangedCoordf64, RangedCoordf64>>,
+    x_desc: &str,
+    y_desc: &str,
+    grid: bool,
+    integer_ticks: bool,
+    look: Look,
+    kind: PanelKind,
+) -> Result<(), ExportError> {
+    let mut mesh = chart.configure_mesh();
+    mesh.x_desc(x_desc)
+        .y_desc(y_desc)
+        .label_style(look.text(TICK_PX))
+        .axis_desc_style(look.text(DESC_PX))
+        .axis_style(look.line(BLACK, 1))
+        .set_all_tick_mark_size(look.i(5))
+        .x_labels(7)
+        .y_labels(7)
+        .max_light_lines(0)
+        .bold_line_style(look.line(RGBColor(225, 225, 225), 1));
+    if integer_ticks {
+        mesh.x_label_formatter(&int_label)
+            .y_label_formatter(&int_label);
+    }
+    if !grid {
+        mesh.disable_mesh();
+    }
+    mesh.draw().map_err(|e| draw_err(kind, e))
+}
+
+fn pattern<DB: DrawingBackend>(
+    body: &DrawingArea<DB, Shift>,
+    data: &ColumnData,
+    look: Look,
+) -> Result<(), ExportError> {
+    let kind = PanelKind::Pattern;
+    let de = |e| draw_err(kind, e);
+    let pts = &data.points.as_ref().ok_or_else(|| missing(kind))?.points;
+    let mut ch = chart(body, 0.0..1.0, 0.0..1.0, look, kind)?;
+    axes(&mut ch, "x", "y", false, false, look, kind)?;
+    let (xr, _) = ch.plotting_area().get_pixel_range();
+    let side = (xr.end - xr.start) as f64;
+    let radius = (side / (pts.len() as f64).sqrt() * 0.18)
+        .clamp(1.0, 4.0 * look.s as f64)
+        .round() as u32;
+    ch.draw_series(
+        pts.iter()
+            .map(|p| Circle::new((p.x, p.y), radius, INK.filled())),
+    )
+    .map_err(de)?;
+    ch.plotting_area()
+        .draw(&Rectangle::new(
+            [(0.0, 0.0), (1.0, 1.0)],
+            look.line(BLACK, 1),
+        ))
+        .map_err(de)?;
+    Ok(())
+}
+
+/// What an image figure shows.
+struct ImageSpec<'a> {
+    image: &'a ImageData,
+    x: Range<f64>,
+    y: Range<f64>,
+    x_desc: &'a str,
+    y_desc: &'a str,
+    integer_ticks: bool,
+    lo: f64,
+    hi: f64,
+    colormap: FigureColormap,
+    /// Description of the colour bar, if one is drawn.
+    bar: Option<&'a str>,
+}
+
+fn ordered_range((lo, hi): (f32, f32)) -> (f64, f64) {
+    let (lo, hi) = (lo as f64, hi as f64);
+    if !(lo.is_finite() && hi.is_finite()) {
+        return (0.0, 1.0);
+    }
+    if hi > lo {
+        (lo, hi)
+    } else {
+        (lo, lo + 1e-3)
+    }
+}
+
+/// The image through the colour map, [lo, hi] → [0, 1].
+fn colorize(image: &ImageData, lo: f64, hi: f64, cmap: FigureColormap) -> Rgb {
+    let span = if hi > lo { hi - lo } else { 1.0 };
+    let mut data = Vec::with_capacity(image.values.len() * 3);
+    for &v in image.values.iter() {
+        data.extend_from_slice(&cmap.eval((v as f64 - lo) / span));
+    }
+    Rgb {
+        width: image.width as u32,
+        height: image.height as u32,
+        data,
+    }
+}
+
+/// Nearest-neighbour resampling of `img` to `w`×`h` (pixel centres map to pixel centres).
+fn resample(img: &Rgb, w: u32, h: u32) -> Vec<u8> {
+    let (sw, sh) = (img.width as u64, img.height as u64);
+    let cols: Vec<usize> = (0..w as u64)
+        .map(|x| (((2 * x + 1) * sw) / (2 * w as u64)) as usize)
+        .collect();
+    let mut out = Vec::with_capacity(w as usize * h as usize * 3);
+    for y in 0..h as u64 {
+        let sy = (((2 * y + 1) * sh) / (2 * h as u64)) as usize;
+        let row = &img.data[sy * sw as usize * 3..(sy + 1) * sw as usize * 3];
+        for &sx in &cols {
+            out.extend_from_slice(&row[sx * 3..sx * 3 + 3]);
+        }
+    }
+    out
+}
+
+/// Puts `img` over the pixel rectangle `range` (absolute pixels of `root`).
+fn paint<DB: DrawingBackend>(
+    root: &DrawingArea<DB, Shift>,
+    range: (Range<i32>, Range<i32>),
+    img: Rgb,
+    sink: &mut Sink,
+    kind: PanelKind,
+) -> Result<(), ExportError> {
+    let (xr, yr) = range;
+    let w = (xr.end - xr.start).max(1) as u32;
+    let h = (yr.end - yr.start).max(1) as u32;
+    match sink {
+        Sink::Bitmap => {
+            let buf = resample(&img, w, h);
+            let elem = BitMapElement::with_owned_buffer((xr.start, yr.start), (w, h), buf)
+                .ok_or_else(|| draw_err(kind, "image buffer size"))?;
+            root.draw(&elem).map_err(|e| draw_err(kind, e))
+        }
+        Sink::Svg(images) => {
+            images.push(SvgImage {
+                x: xr.start,
+                y: yr.start,
+                width: w,
+                height: h,
+                image: img,
+            });
+            Ok(())
+        }
+    }
+}
+
+fn image_figure<DB: DrawingBackend>(
+    root: &DrawingArea<DB, Shift>,
+    body: &DrawingArea<DB, Shift>,
+    kind: PanelKind,
+    look: Look,
+    sink: &mut Sink,
+    spec: ImageSpec<'_>,
+) -> Result<(), ExportError> {
+    let (main, bar_area) = if spec.bar.is_some() {
+        let (w, _) = body.dim_in_pixel();
+        body.split_horizontally(w - look.u(BAR_PART))
+    } else {
+        (body.clone(), body.clone())
+    };
+    let mut ch = chart(&main, spec.x.clone(), spec.y.clone(), look, kind)?;
+    let rgb = colorize(spec.image, spec.lo, spec.hi, spec.colormap);
+    paint(root, ch.plotting_area().get_pixel_range(), rgb, sink, kind)?;
+    axes(
+        &mut ch,
+        spec.x_desc,
+        spec.y_desc,
+        false,
+        spec.integer_ticks,
+        look,
+        kind,
+    )?;
+    if let Some(desc) = spec.bar {
+        let mut bar = ChartBuilder::on(&bar_area)
+            .margin_top(look.u(MARGIN))
+            .margin_bottom(look.u(MARGIN))
+            .margin_left(look.u(14))
+            .margin_right(look.u(4))
+            .x_label_area_size(look.u(X_LABEL))
+            .right_y_label_area_size(look.u(68))
+            .build_cartesian_2d(0.0..1.0, spec.lo..spec.hi)
+            .map_err(|e| draw_err(kind, e))?;
+        let steps = 256u32;
+        let mut data = Vec::with_capacity(steps as usize * 3);
+        for r in 0..steps {
+            let t = 1.0 - (r as f64 + 0.5) / steps as f64;
+            data.extend_from_slice(&spec.colormap.eval(t));
+        }
+        let gradient = Rgb {
+            width: 1,
+            height: steps,
+            data,
+        };
+        paint(
+            root,
+            bar.plotting_area().get_pixel_range(),
+            gradient,
+            sink,
+            kind,
+        )?;
+        bar.configure_mesh()
+            .disable_mesh()
+            .disable_x_axis()
+            .x_labels(0)
+            .y_labels(6)
+            .y_desc(desc)
+            .label_style(look.text(TICK_PX))
+            .axis_desc_style(look.text(DESC_PX))
+            .axis_style(look.line(BLACK, 1))
+            .set_all_tick_mark_size(look.i(5))
+            .draw()
+            .map_err(|e| draw_err(kind, e))?;
+    }
+    Ok(())
+}
+
+/// A range around the finite values of `v`, padded by 5 % (and never empty).
+fn padded(v: impl Iterator<Item = f64>, include: &[f64]) -> Range<f64> {
+    let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
+    for x in v.chain(include.iter().copied()).filter(|x| x.is_finite()) {
+        lo = lo.min(x);
+        hi = hi.max(x);
+    }
+    if !(lo.is_finite() && hi.is_finite()) {
+        return 0.0..1.0;
+    }
+    if hi - lo < 1e-12 {
+        return (lo - 0.5)..(hi + 0.5);
+    }
+    let pad = 0.05 * (hi - lo);
+    (lo - pad)..(hi + pad)
+}
+
+fn legend_box<'a, DB: DrawingBackend + 'a>(
+    ch: &mut ChartContext<'a, DB, Cartesian2d<RangedCoordf64, RangedCoordf64>>,
+    look: Look,
+    kind: PanelKind,
+) -> Result<(), ExportError> {
+    ch.configure_series_labels()
+        .position(SeriesLabelPosition::UpperRight)
+        .margin(look.i(8))
+        .legend_area_size(look.i(26))
+        .label_font(look.text(TICK_PX))
+        .border_style(look.line(GUIDE, 1))
+        .background_style(WHITE.filled())
+        .draw()
+        .map_err(|e| draw_err(kind, e))
+}
+
+fn finite(curve: &[[f64; 2]]) -> Vec<(f64, f64)> {
+    curve
+        .iter()
+        .filter(|p| p[0].is_finite() && p[1].is_finite())
+        .map(|p| (p[0], p[1]))
+        .collect()
+}
+
+fn raps<DB: DrawingBackend>(
+    body: &DrawingArea<DB, Shift>,
+    raps: &[[f64; 2]],
+    look: Look,
+) -> Result<(), ExportError> {
+    let kind = PanelKind::Raps;
+    let de = |e| draw_err(kind, e);
+    let pts = finite(raps);
+    let x_hi = pts.iter().map(|p| p.0).fold(0.0f64, f64::max).max(1.0);
+    let y = padded(pts.iter().map(|p| p.1), &[0.0, 1.0]);
+    let mut ch = chart(body, 0.0..x_hi, y.start.max(0.0)..y.end, look, kind)?;
+    axes(
+        &mut ch,
+        "|k| (cycles per unit)",
+        "RAPS  P",
+        true,
+        false,
+        look,
+        kind,
+    )?;
+    let guide = look.line(GUIDE, 1);
+    ch.draw_series(LineSeries::new([(0.0, 1.0), (x_hi, 1.0)], guide))
+        .map_err(de)?
+        .label("white noise, P = 1")
+        .legend(move |(x, y)| PathElement::new([(x, y), (x + look.i(20), y)], guide));
+    let line = look.line(DATA, 2);
+    ch.draw_series(LineSeries::new(pts, line))
+        .map_err(de)?
+        .label("RAPS")
+        .legend(move |(x, y)| PathElement::new([(x, y), (x + look.i(20), y)], line));
+    legend_box(&mut ch, look, kind)
+}
+
+fn kernel<DB: DrawingBackend>(
+    body: &DrawingArea<DB, Shift>,
+    curve: &[[f64; 2]],
+    ctx: &FigureContext,
+    look: Look,
+) -> Result<(), ExportError> {
+    let kind = PanelKind::Kernel;
+    let de = |e| draw_err(kind, e);
+    let pts = finite(curve);
+    let x0 = pts.iter().map(|p| p.0).fold(f64::INFINITY, f64::min);
+    let x1 = pts.iter().map(|p| p.0).fold(f64::NEG_INFINITY, f64::max);
+    let x = if x1 > x0 {
+        x0..x1
+    } else {
+        (x0 - 1.0)..(x0 + 1.0)
+    };
+    let y = padded(pts.iter().map(|p| p.1), &[0.0]);
+    let mut ch = chart(body, x.clone(), y, look, kind)?;
+    axes(
+        &mut ch,
+        "x (sample spacings)",
+        "h(x)",
+        true,
+        false,
+        look,
+        kind,
+    )?;
+    ch.draw_series(LineSeries::new(
+        [(x.start, 0.0), (x.end, 0.0)],
+        look.line(GUIDE, 1),
+    ))
+    .map_err(de)?;
+    let line = look.line(DATA, 2);
+    let name = filter_name(ctx);
+    ch.draw_series(LineSeries::new(pts, line))
+        .map_err(de)?
+        .label(name)
+        .legend(move |(x, y)| PathElement::new([(x, y), (x + look.i(20), y)], line));
+    legend_box(&mut ch, look, kind)
+}
+
+/// The filter's name as the legend shows it (the `kind` tag of its RON text).
+fn filter_name(ctx: &FigureContext) -> String {
+    ctx.filter
+        .split("kind:\"")
+        .nth(1)
+        .and_then(|s| s.split('"').next())
+        .unwrap_or("h")
+        .to_string()
+}
+
+fn response<DB: DrawingBackend>(
+    body: &DrawingArea<DB, Shift>,
+    magnitude: &[[f64; 2]],
+    omega_max: f64,
+    ctx: &FigureContext,
+    look: Look,
+) -> Result<(), ExportError> {
+    let kind = PanelKind::Response;
+    let de = |e| draw_err(kind, e);
+    let db = ctx.response_db;
+    let floor_db = -120.0;
+    let value = |m: f64| {
+        if db {
+            (20.0 * m.abs().max(1e-12).log10()).max(floor_db)
+        } else {
+            m
+        }
+    };
+    let pts: Vec<(f64, f64)> = finite(magnitude)
+        .into_iter()
+        .map(|(w, m)| (w, value(m)))
+        .collect();
+    let w_hi = if omega_max.is_finite() && omega_max > 0.0 {
+        omega_max
+    } else {
+        pts.iter().map(|p| p.0).fold(0.5, f64::max)
+    };
+    let (one, zero) = if db { (0.0, floor_db) } else { (1.0, 0.0) };
+    let y = padded(pts.iter().map(|p| p.1), &[one, zero]);
+    let mut ch = chart(body, 0.0..w_hi, y.clone(), look, kind)?;
+    axes(
+        &mut ch,
+        "ω (cycles per sample)",
+        if db {
+            "|H(ω)|  dB"
+        } else {
+            "|H(ω)| / |H(0)|"
+        },
+        true,
+        false,
+        look,
+        kind,
+    )?;
+    let guide = look.line(GUIDE, 1);
+    ch.draw_series(LineSeries::new(
+        [(0.0, one), (0.5, one), (0.5, zero), (w_hi, zero)],
+        guide,
+    ))
+    .map_err(de)?
+    .label("ideal low-pass")
+    .legend(move |(x, y)| PathElement::new([(x, y), (x + look.i(20), y)], guide));
+    let red = look.line(NYQUIST, 1);
+    ch.draw_series(LineSeries::new([(0.5, y.start), (0.5, y.end)], red))
+        .map_err(de)?
+        .label("Nyquist, ω = 0.5")
+        .legend(move |(x, y)| PathElement::new([(x, y), (x + look.i(20), y)], red));
+    let line = look.line(DATA, 2);
+    ch.draw_series(LineSeries::new(pts, line))
+        .map_err(de)?
+        .label(format!("{}, |H(ω)|", filter_name(ctx)))
+        .legend(move |(x, y)| PathElement::new([(x, y), (x + look.i(20), y)], line));
+    legend_box(&mut ch, look, kind)
+}
+
+fn convergence<DB: DrawingBackend>(
+    body: &DrawingArea<DB, Shift>,
+    pts: &[(f64, f64)],
+    look: Look,
+) -> Result<(), ExportError> {
+    let kind = PanelKind::Convergence;
+    let de = |e| draw_err(kind, e);
+    let (mut x0, mut x1) = (f64::INFINITY, f64::NEG_INFINITY);
+    let (mut y0, mut y1) = (f64::INFINITY, f64::NEG_INFINITY);
+    for &(x, y) in pts {
+        x0 = x0.min(x);
+        x1 = x1.max(x);
+        y0 = y0.min(y);
+        y1 = y1.max(y);
+    }
+    let (x0, x1) = (x0 / 1.5, x1 * 1.5);
+    let (y0, y1) = (y0 / 1.5, y1 * 1.5);
+    let mut ch = ChartBuilder::on(body)
+        .margin(look.u(MARGIN))
+        .x_label_area_size(look.u(X_LABEL))
+        .y_label_area_size(look.u(Y_LABEL))
+        .build_cartesian_2d((x0..x1).log_scale(), (y0..y1).log_scale())
+        .map_err(de)?;
+    ch.configure_mesh()
+        .x_desc("samples per pixel")
+        .y_desc("RMSE")
+        .label_style(look.text(TICK_PX))
+        .axis_desc_style(look.text(DESC_PX))
+        .axis_style(look.line(BLACK, 1))
+        .set_all_tick_mark_size(look.i(5))
+        .max_light_lines(0)
+        .bold_line_style(look.line(RGBColor(225, 225, 225), 1))
+        .x_label_formatter(&|v: &f64| format!("{v}"))
+        .y_label_formatter(&|v: &f64| format!("{v:.0e}"))
+        .draw()
+        .map_err(de)?;
+    ch.draw_series(LineSeries::new(pts.iter().copied(), look.line(DATA, 2)))
+        .map_err(de)?;
+    ch.draw_series(
+        pts.iter()
+            .map(|&p| Circle::new(p, look.u(3), DATA.filled())),
+    )
+    .map_err(de)?;
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn resample_maps_pixel_centres() {
+        let img = Rgb {
+            width: 2,
+            height: 1,
+            data: vec![0, 0, 0, 255, 255, 255],
+        };
+        let out = resample(&img, 4, 2);
+        assert_eq!(out.len(), 4 * 2 * 3);
+        let firsts: Vec<u8> = out.chunks(3).map(|p| p[0]).collect();
+        assert_eq!(firsts, vec![0, 0, 255, 255, 0, 0, 255, 255]);
+    }
+
+    #[test]
+    fn padded_range_covers_data_and_guides() {
+        let r = padded([2.0, 4.0, f64::NAN].into_iter(), &[0.0]);
+        assert!(r.start < 0.0 && r.end > 4.0);
+        let flat = padded([3.0].into_iter(), &[]);
+        assert!(flat.start < 3.0 && flat.end > 3.0);
+        assert_eq!(padded(std::iter::empty(), &[]), 0.0..1.0);
+    }
+
+    #[test]
+    fn degenerate_colour_ranges_are_widened() {
+        assert_eq!(ordered_range((1.0, 1.0)), (1.0, 1.0 + 1e-3));
+        assert_eq!(ordered_range((f32::NAN, 1.0)), (0.0, 1.0));
+        assert_eq!(ordered_range((-1.0, 2.0)), (-1.0, 2.0));
+    }
+}

@@ -1,0 +1,241 @@
+//! `samplescope render`: figures from a scene with no window; byte-identical reruns; errors.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+const SCENE: &str = r#"// A small two-column scene for the render tests.
+(
+    title: "Render test",
+    columns: [
+        (pattern: (kind: "jitter", cols: 0, amount: 1.0), seed: 1),
+        (pattern: (kind: "halton", base_x: 2, base_y: 3, skip: 0), seed: 0, label: "Halton"),
+    ],
+    n: 256,
+    signal: (kind: "zone-plate", k: 32.0, cx: 0.5, cy: 0.5),
+    filter: (filter: (kind: "gaussian", sigma: 0.5, radius: 2.0, subtract_edge: true), mode: separable),
+    recon: (mode: scattered, size: 64),
+    spectrum: (size: 64, tolerance: 1e-6, exact: false, realizations: 1, mask_dc: true),
+    panels: (pattern: true, spectrum: true, zoneplate: true, filter: true, cost: false),
+    effects: (reconstruction: true, error: true, convergence: false, statistics: false),
+)
+"#;
+
+/// A fresh directory under the target's temporary directory.
+fn temp_dir(name: &str) -> PathBuf {
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR"))
+        .join(format!("render_cli-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+fn render(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_samplescope"))
+        .arg("render")
+        .args(args)
+        .output()
+        .expect("run samplescope")
+}
+
+fn files(dir: &Path) -> Vec<String> {
+    let mut names: Vec<String> = std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    names.sort();
+    names
+}
+
+fn stderr(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stderr).into_owned()
+}
+
+#[test]
+fn render_twice_gives_byte_identical_files() {
+    let dir = temp_dir("twice");
+    let scene = dir.join("small.ron");
+    std::fs::write(&scene, SCENE).unwrap();
+    let (a, b) = (dir.join("a"), dir.join("b"));
+    for out in [&a, &b] {
+        let o = render(&[
+            scene.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+            "--scale",
+            "1",
+        ]);
+        assert!(o.status.success(), "{}", stderr(&o));
+        // One printed line per written file.
+        let printed = String::from_utf8(o.stdout).unwrap();
+        assert_eq!(printed.lines().count(), files(out).len());
+        for line in printed.lines() {
+            assert!(Path::new(line).is_file(), "{line}");
+        }
+    }
+    let names = files(&a);
+    assert_eq!(names, files(&b));
+    // 2 columns × 8 figures (pattern, spectrum, raps, reconstruction, reference, error,
+    // kernel, response) × (png, svg, csv) + 2 column composites + 1 comparison.
+    assert_eq!(names.len(), 2 * 8 * 3 + 2 + 1, "{names:#?}");
+    for want in [
+        "small_jitter_n256_seed1_pattern@1x.png",
+        "small_jitter_n256_seed1_spectrum@1x.svg",
+        "small_jitter_n256_seed1_raps.csv",
+        "small_halton_n256_seed0_response@1x.png",
+        "small_jitter_n256_seed1_column@1x.png",
+        "small_n256_comparison@1x.png",
+    ] {
+        assert!(
+            names.iter().any(|n| n == want),
+            "{want} missing from {names:#?}"
+        );
+    }
+    for n in &names {
+        let (x, y) = (
+            std::fs::read(a.join(n)).unwrap(),
+            std::fs::read(b.join(n)).unwrap(),
+        );
+        assert!(!x.is_empty(), "{n} is empty");
+        assert!(x == y, "{n} differs between two renders");
+    }
+}
+
+#[test]
+fn scale_two_doubles_the_figures_and_format_selects_files() {
+    let dir = temp_dir("scale2");
+    let scene = dir.join("small.ron");
+    std::fs::write(&scene, SCENE).unwrap();
+    let out = dir.join("out");
+    let o = render(&[
+        scene.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+        "--scale",
+        "2",
+        "--format",
+        "csv",
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let names = files(&out);
+    assert_eq!(names.len(), 2 * 8, "{names:#?}");
+    assert!(names.iter().all(|n| n.ends_with(".csv")));
+
+    let o = render(&[
+        scene.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+        "--scale",
+        "2",
+        "--format",
+        "png",
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let png = std::fs::read(out.join("small_jitter_n256_seed1_pattern@2x.png")).unwrap();
+    let reader = png::Decoder::new(std::io::Cursor::new(png))
+        .read_info()
+        .unwrap();
+    assert_eq!((reader.info().width, reader.info().height), (960, 1020));
+}
+
+#[test]
+fn malformed_scene_exits_2_naming_line_and_column() {
+    let dir = temp_dir("malformed");
+    let scene = dir.join("bad.ron");
+    std::fs::write(&scene, "(\n    title: \"x\",\n    n: twelve,\n)\n").unwrap();
+    let o = render(&[
+        scene.to_str().unwrap(),
+        "--out",
+        dir.join("o").to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    let e = stderr(&o);
+    assert!(e.contains("bad.ron:3:"), "{e}");
+    assert_eq!(e.trim().lines().count(), 1, "one line: {e}");
+    assert!(
+        !dir.join("o").exists(),
+        "nothing is written for a bad scene"
+    );
+}
+
+#[test]
+fn missing_scene_exits_1_naming_the_path() {
+    let dir = temp_dir("missing");
+    let missing = dir.join("nope.ron");
+    let o = render(&[
+        missing.to_str().unwrap(),
+        "--out",
+        dir.join("o").to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+    assert!(stderr(&o).contains("nope.ron"), "{}", stderr(&o));
+}
+
+#[test]
+fn scale_out_of_range_exits_2_naming_scale_and_range() {
+    let dir = temp_dir("scale");
+    let scene = dir.join("small.ron");
+    std::fs::write(&scene, SCENE).unwrap();
+    for bad in ["0", "9"] {
+        let o = render(&[
+            scene.to_str().unwrap(),
+            "--out",
+            dir.join("o").to_str().unwrap(),
+            "--scale",
+            bad,
+        ]);
+        assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+        let e = stderr(&o);
+        assert!(
+            e.contains(&format!("--scale = {bad}")) && e.contains("1..=4"),
+            "{e}"
+        );
+        assert_eq!(e.trim().lines().count(), 1, "one line: {e}");
+    }
+    let o = render(&[
+        scene.to_str().unwrap(),
+        "--out",
+        dir.join("o").to_str().unwrap(),
+        "--format",
+        "png,jpeg",
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("--format jpeg"), "{}", stderr(&o));
+}
+
+#[test]
+fn unwritable_output_exits_1_naming_the_path() {
+    let dir = temp_dir("unwritable");
+    let scene = dir.join("small.ron");
+    std::fs::write(&scene, SCENE).unwrap();
+    // A regular file where the output directory should be.
+    let blocker = dir.join("file");
+    std::fs::write(&blocker, "not a directory").unwrap();
+    let out = blocker.join("out");
+    let o = render(&[scene.to_str().unwrap(), "--out", out.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+    assert!(stderr(&o).contains(out.to_str().unwrap()), "{}", stderr(&o));
+}
+
+#[test]
+fn failing_node_exits_2_naming_column_and_node() {
+    let dir = temp_dir("node");
+    let scene = dir.join("poisson.ron");
+    // Dart throwing with a radius no 256 points can keep.
+    let text = SCENE.replace(
+        r#"(pattern: (kind: "halton", base_x: 2, base_y: 3, skip: 0), seed: 0, label: "Halton")"#,
+        r#"(pattern: (kind: "poisson-dart", radius: 0.4, max_misses: 1000), seed: 0, label: "too sparse")"#,
+    );
+    assert_ne!(text, SCENE);
+    std::fs::write(&scene, text).unwrap();
+    let o = render(&[
+        scene.to_str().unwrap(),
+        "--out",
+        dir.join("o").to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    let e = stderr(&o);
+    assert!(
+        e.contains("column 2 (too sparse)") && e.contains("points node failed"),
+        "{e}"
+    );
+}
