@@ -145,6 +145,8 @@ pub enum NodeValue {
     Error(Arc<ErrorData>),
     Response(Arc<ResponseData>),
     Convergence(Arc<Vec<ConvergencePoint>>),
+    /// The 1D sampling-theorem view.
+    Theorem(Arc<crate::core::signal::theorem::TheoremView>),
 }
 
 /// What a node computes.
@@ -159,6 +161,7 @@ pub enum Job {
     Error,
     Response,
     Convergence,
+    Theorem,
 }
 
 type Output = Result<(NodeValue, Option<String>), String>;
@@ -260,7 +263,24 @@ pub fn column_nodes(scene: &Scene, c: usize) -> Vec<(NodeKey, Job)> {
             Job::Convergence,
         ));
     }
+    // Column-independent: keyed by its settings alone, listed for column 0 only.
+    if panels.theorem && c == 0 {
+        out.push((
+            key_of(NodeKind::Theorem, &scene.theorem, &[]),
+            Job::Theorem,
+        ));
+    }
     out
+}
+
+fn theorem(scene: &Scene) -> Output {
+    let v = crate::core::signal::theorem::compute_view(&scene.theorem).map_err(|e| e.to_string())?;
+    let e = &v.errors;
+    let accuracy = Some(format!(
+        "band ±{:.3} cycles/unit, tail ≤ {:.1e}",
+        e.band, e.tail_bound
+    ));
+    Ok((NodeValue::Theorem(Arc::new(v)), accuracy))
 }
 
 fn dep(done: &Done, kind: NodeKind) -> Result<&NodeValue, String> {
@@ -295,6 +315,7 @@ impl Job {
             Job::Error => error(done),
             Job::Response => response(scene),
             Job::Convergence => convergence(scene, c, cancel),
+            Job::Theorem => theorem(scene),
         }
     }
 }

@@ -40,11 +40,13 @@ pub enum NodeKind {
     Error,
     Response,
     Convergence,
+    /// The 1D sampling-theorem view (column-independent: computed for column 0 only).
+    Theorem,
 }
 
 impl NodeKind {
     /// Every kind, in evaluation order.
-    pub const ALL: [NodeKind; 9] = [
+    pub const ALL: [NodeKind; 10] = [
         NodeKind::Points,
         NodeKind::Statistics,
         NodeKind::Spectrum,
@@ -54,6 +56,7 @@ impl NodeKind {
         NodeKind::Error,
         NodeKind::Response,
         NodeKind::Convergence,
+        NodeKind::Theorem,
     ];
 
     /// Display name.
@@ -68,6 +71,7 @@ impl NodeKind {
             NodeKind::Error => "error",
             NodeKind::Response => "filter response",
             NodeKind::Convergence => "convergence",
+            NodeKind::Theorem => "sampling theorem",
         }
     }
 }
@@ -123,7 +127,7 @@ pub fn plan(scene: &Scene) -> Vec<ColumnPlan> {
 #[derive(Default)]
 pub struct Evaluator {
     cache: Mutex<HashMap<NodeKey, (Arc<NodeResult>, u64)>>,
-    counts: [AtomicUsize; 9],
+    counts: [AtomicUsize; NodeKind::ALL.len()],
     tick: AtomicUsize,
 }
 

@@ -10,6 +10,7 @@ pub mod graph;
 
 use crate::core::filter::Filter2D;
 use crate::core::pattern::Pattern;
+use crate::core::signal::theorem::{TheoremError, TheoremSettings};
 use crate::core::signal::Signal;
 use serde::{Deserialize, Serialize};
 
@@ -118,6 +119,8 @@ pub struct Panels {
     pub filter: bool,
     /// The cost view (every node's time and error, and the convergence plot).
     pub cost: bool,
+    /// The 1D sampling-theorem view (signal, replicas, filter, pre-/post-aliasing).
+    pub theorem: bool,
 }
 
 impl Default for Panels {
@@ -128,6 +131,7 @@ impl Default for Panels {
             zoneplate: true,
             filter: true,
             cost: false,
+            theorem: false,
         }
     }
 }
@@ -173,6 +177,8 @@ pub struct Scene {
     pub spectrum: SpectrumSettings,
     pub panels: Panels,
     pub effects: Effects,
+    /// The 1D sampling-theorem view's settings (used only while `panels.theorem` is on).
+    pub theorem: TheoremSettings,
 }
 
 impl Default for Scene {
@@ -188,6 +194,7 @@ impl Default for Scene {
             spectrum: SpectrumSettings::default(),
             panels: Panels::default(),
             effects: Effects::default(),
+            theorem: TheoremSettings::default(),
         }
     }
 }
@@ -225,6 +232,14 @@ pub const BUILTIN: &[(&str, &str)] = &[
     (
         "two-columns.ron",
         include_str!("../../assets/scenes/two-columns.ron"),
+    ),
+    (
+        "sampling-theorem.ron",
+        include_str!("../../assets/scenes/sampling-theorem.ron"),
+    ),
+    (
+        "pre-aliasing-vs-post-aliasing.ron",
+        include_str!("../../assets/scenes/pre-aliasing-vs-post-aliasing.ron"),
     ),
     (
         "best-candidate.ron",
@@ -360,6 +375,21 @@ impl Scene {
                     "an integer in 1..=1024",
                 ));
             }
+        }
+        match self.theorem.validate() {
+            Err(TheoremError::InvalidParam {
+                field,
+                value,
+                allowed,
+            }) => return Err(invalid(&format!("theorem.{field}"), value, &allowed)),
+            Err(TheoremError::Filter(e)) => {
+                return Err(invalid(
+                    "theorem.filter",
+                    self.theorem.filter.name().to_string(),
+                    &e.to_string(),
+                ))
+            }
+            Ok(()) => {}
         }
         Ok(())
     }

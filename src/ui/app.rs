@@ -36,6 +36,7 @@ pub struct SamplescopeApp {
     frame_time: Duration,
     last_frame: Option<Instant>,
     textures: panels::TextureCache,
+    theorem_panel: super::theorem::TheoremPanel,
 }
 
 /// Keys under which eframe persists the window's state.
@@ -71,6 +72,7 @@ impl SamplescopeApp {
             frame_time: Duration::ZERO,
             last_frame: None,
             textures: panels::TextureCache::default(),
+            theorem_panel: Default::default(),
         };
         if let Some(storage) = cc.storage {
             if scene_path.is_none() {
@@ -255,6 +257,7 @@ impl SamplescopeApp {
                 ui.checkbox(&mut p.zoneplate, "Zone plate");
                 ui.checkbox(&mut p.filter, "Filter");
                 ui.checkbox(&mut p.cost, "Cost view (F4)");
+                ui.checkbox(&mut p.theorem, "Sampling theorem (1D)");
             });
         egui::CollapsingHeader::new("Effects")
             .default_open(true)
@@ -417,6 +420,20 @@ impl eframe::App for SamplescopeApp {
                 .default_size(220.0)
                 .show(ui, |ui| {
                     panels::cost_ui(ui, &self.scene, &self.results, self.engine.evaluator())
+                });
+        }
+        if self.scene.panels.theorem {
+            // Column-independent: its node is computed for column 0 only.
+            let result = self
+                .results
+                .first()
+                .and_then(|c| c.get(&NodeKind::Theorem));
+            egui::Panel::bottom("samplescope-theorem")
+                .resizable(true)
+                .default_size(460.0)
+                .show(ui, |ui| {
+                    self.theorem_panel
+                        .ui(ui, &mut self.scene.theorem, result)
                 });
         }
         egui::CentralPanel::default().show(ui, |ui| {

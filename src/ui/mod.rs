@@ -4,6 +4,7 @@
 pub mod app;
 pub mod gpu;
 pub mod panels;
+pub mod theorem;
 
 pub use app::SamplescopeApp;
 

@@ -30,6 +30,7 @@ pub mod checkerboard;
 pub mod exact;
 pub mod oned;
 pub mod shapes;
+pub mod theorem;
 pub mod zone_plate;
 
 pub use checkerboard::Checkerboard;

@@ -1,0 +1,400 @@
+//! The 1D sampling-theorem panel: draws a [`TheoremView`] computed by the engine and edits the
+//! scene's [`TheoremSettings`] (the engine recomputes the node when they change). No maths here.
+
+use crate::core::filter::Filter;
+use crate::core::signal::theorem::{
+    AliasingErrors, PairKind, Reconstructor, Signal1D, TheoremSettings, TheoremView,
+    PAIR_SCALE_RANGE, PAIR_SHIFT_RANGE,
+};
+use crate::scene::graph::{NodeResult, NodeValue};
+use eframe::egui::{self, Color32};
+use egui_plot::{Legend, Line, Plot, Points, VLine};
+use std::sync::Arc;
+
+/// Colours of the replicas k = −3..=3 (k = 0, the original, is drawn in the text colour).
+const REPLICA_COLOURS: [Color32; 7] = [
+    Color32::from_rgb(148, 103, 189),
+    Color32::from_rgb(44, 160, 44),
+    Color32::from_rgb(255, 127, 14),
+    Color32::from_rgb(31, 119, 180),
+    Color32::from_rgb(214, 39, 40),
+    Color32::from_rgb(23, 190, 207),
+    Color32::from_rgb(188, 189, 34),
+];
+const NYQUIST: Color32 = Color32::from_rgb(200, 60, 60);
+const RECON: Color32 = Color32::from_rgb(230, 120, 20);
+
+fn replica_colour(k: i64) -> Color32 {
+    REPLICA_COLOURS[(k + 3).clamp(0, 6) as usize]
+}
+
+/// The panel's own display state.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct TheoremPanel {
+    /// Show Re/Im of the pair's transform instead of |P|.
+    pub pair_re_im: bool,
+}
+
+impl TheoremPanel {
+    /// Draws the controls (editing `settings`) and the plots of `result`.
+    pub fn ui(
+        &mut self,
+        ui: &mut egui::Ui,
+        settings: &mut TheoremSettings,
+        result: Option<&Arc<NodeResult>>,
+    ) {
+        ui.horizontal_top(|ui| {
+            ui.vertical(|ui| {
+                ui.set_width(270.0);
+                egui::ScrollArea::vertical()
+                    .id_salt("theorem-controls")
+                    .show(ui, |ui| controls_ui(ui, settings));
+            });
+            ui.separator();
+            let view = match result.map(|r| &r.value) {
+                Some(Ok(NodeValue::Theorem(v))) => v.clone(),
+                Some(Err(e)) => {
+                    ui.colored_label(NYQUIST, format!("sampling theorem: {e}"));
+                    return;
+                }
+                _ => {
+                    ui.spinner();
+                    return;
+                }
+            };
+            egui::ScrollArea::vertical()
+                .id_salt("theorem-plots")
+                .show(ui, |ui| self.plots_ui(ui, &view));
+        });
+    }
+
+    fn plots_ui(&mut self, ui: &mut egui::Ui, v: &TheoremView) {
+        let width = (ui.available_width() / 3.0 - 8.0).max(160.0);
+        let height = 170.0;
+        ui.horizontal_top(|ui| {
+            ui.vertical(|ui| {
+                ui.strong("Signal f, samples f(nT), reconstruction f_r");
+                signal_plot_ui(ui, v, width, height);
+            });
+            ui.vertical(|ui| {
+                ui.strong("Spectrum: |F|, replicas F(ω − k·f_s), |G|");
+                spectrum_plot_ui(ui, v, width, height);
+            });
+            ui.vertical(|ui| {
+                ui.strong("Reconstructed spectrum |G·T·F_s|");
+                recon_spectrum_plot_ui(ui, v, width, height);
+            });
+        });
+        errors_ui(ui, &v.errors, v.settings.rate);
+        ui.separator();
+        ui.horizontal_top(|ui| {
+            ui.vertical(|ui| {
+                ui.strong(format!(
+                    "Transform pair {} (a = {:.3}, s = {:.3})",
+                    v.settings.pair.kind.name(),
+                    v.settings.pair.scale,
+                    v.settings.pair.shift
+                ));
+                ui.checkbox(&mut self.pair_re_im, "Show Re/Im of the transform");
+                pair_plots_ui(ui, v, self.pair_re_im, width, height);
+            });
+            ui.vertical(|ui| {
+                ui.strong("van der Corput (base 2)");
+                vdc_table_ui(ui, v);
+            });
+        });
+    }
+}
+
+fn controls_ui(ui: &mut egui::Ui, s: &mut TheoremSettings) {
+    ui.heading("Sampling theorem (1D)");
+    let mut name = s.signal.name();
+    egui::ComboBox::new("theorem-signal", "Signal")
+        .selected_text(name)
+        .show_ui(ui, |ui| {
+            for sig in Signal1D::all() {
+                ui.selectable_value(&mut name, sig.name(), sig.name());
+            }
+        });
+    if name != s.signal.name() {
+        if let Some(sig) = Signal1D::all().into_iter().find(|g| g.name() == name) {
+            s.signal = sig;
+        }
+    }
+    for (pname, value, (lo, hi)) in s.signal.params() {
+        let mut x = value;
+        let slider = egui::Slider::new(&mut x, lo..=hi)
+            .logarithmic(hi / lo > 100.0)
+            .text(format!("signal {pname}"));
+        if ui.add(slider).changed() {
+            s.signal.set(pname, x);
+        }
+    }
+    ui.add(
+        egui::Slider::new(&mut s.rate, 0.1..=100.0)
+            .logarithmic(true)
+            .text("sampling rate f_s"),
+    );
+    if let Some(b) = s.signal.bandwidth() {
+        ui.label(format!("Nyquist rate 2B = {:.3}", 2.0 * b));
+    } else {
+        ui.label("not band-limited: no rate avoids pre-aliasing");
+    }
+    let mut fname = s.filter.name();
+    egui::ComboBox::new("theorem-filter", "Reconstruction filter")
+        .selected_text(fname)
+        .show_ui(ui, |ui| {
+            for f in Filter::all()
+                .into_iter()
+                .filter(|f| Reconstructor::new(*f, 1.0, 1.0).is_ok())
+            {
+                ui.selectable_value(&mut fname, f.name(), f.name())
+                    .on_hover_text(f.summary());
+            }
+        });
+    if fname != s.filter.name() {
+        if let Ok(f) = Filter::from_name(fname) {
+            s.filter = f;
+        }
+    }
+    for spec in s.filter.specs() {
+        let Some(value) = s.filter.get(spec.name) else {
+            continue;
+        };
+        if let Some(t) = super::panels::param_ui(ui, &spec, value) {
+            let _ = s.filter.set(spec.name, &t);
+        }
+    }
+    ui.add(
+        egui::Slider::new(&mut s.extent, 0.5..=50.0)
+            .logarithmic(true)
+            .text("plot half-width (units)"),
+    );
+    ui.separator();
+    ui.strong("Transform pair");
+    egui::ComboBox::new("theorem-pair", "Pair")
+        .selected_text(s.pair.kind.name())
+        .show_ui(ui, |ui| {
+            for k in PairKind::ALL {
+                ui.selectable_value(&mut s.pair.kind, k, k.name());
+            }
+        });
+    ui.add(
+        egui::Slider::new(&mut s.pair.scale, PAIR_SCALE_RANGE.0..=PAIR_SCALE_RANGE.1)
+            .logarithmic(true)
+            .text("scale a"),
+    );
+    ui.add(
+        egui::Slider::new(&mut s.pair.shift, PAIR_SHIFT_RANGE.0..=PAIR_SHIFT_RANGE.1)
+            .text("shift s"),
+    );
+    ui.separator();
+    ui.add(egui::Slider::new(&mut s.vdc_rows, 1..=64).text("van der Corput rows n"));
+}
+
+fn signal_plot_ui(ui: &mut egui::Ui, v: &TheoremView, width: f32, height: f32) {
+    Plot::new("theorem-signal-plot")
+        .width(width)
+        .height(height)
+        .legend(Legend::default())
+        .x_axis_label("x (units)")
+        .show(ui, |p| {
+            p.line(Line::new("f(x)", v.signal.clone()).color(Color32::GRAY));
+            p.points(
+                Points::new("samples f(nT)", v.samples.clone())
+                    .stems(0.0)
+                    .radius(2.5)
+                    .color(Color32::from_rgb(31, 119, 180)),
+            );
+            p.line(Line::new("f_r(x)", v.reconstruction.clone()).color(RECON));
+        });
+}
+
+fn nyquist_lines(p: &mut egui_plot::PlotUi<'_>, rate: f64) {
+    p.vline(VLine::new("±f_s/2", 0.5 * rate).color(NYQUIST));
+    p.vline(VLine::new("±f_s/2", -0.5 * rate).color(NYQUIST));
+}
+
+fn spectrum_plot_ui(ui: &mut egui::Ui, v: &TheoremView, width: f32, height: f32) {
+    let sp = &v.spectrum;
+    let text = ui.visuals().text_color();
+    Plot::new("theorem-spectrum-plot")
+        .width(width)
+        .height(height)
+        .legend(Legend::default())
+        .x_axis_label("ω (cycles/unit)")
+        .show(ui, |p| {
+            for (k, curve) in &sp.replicas {
+                p.line(
+                    Line::new(format!("replica k = {k}"), curve.clone()).color(replica_colour(*k)),
+                );
+            }
+            for (k, lines) in &sp.lines {
+                let name = if *k == 0 {
+                    "|F| (lines)".to_string()
+                } else {
+                    format!("replica k = {k}")
+                };
+                let colour = if *k == 0 { text } else { replica_colour(*k) };
+                p.points(
+                    Points::new(name, lines.clone())
+                        .stems(0.0)
+                        .radius(3.0)
+                        .color(colour),
+                );
+            }
+            if !sp.original.is_empty() {
+                p.line(Line::new("|F(ω)|", sp.original.clone()).width(2.0));
+            }
+            p.line(Line::new("|G(ω)| (filter)", sp.gain.clone()).color(Color32::GRAY));
+            nyquist_lines(p, v.settings.rate);
+        });
+}
+
+fn recon_spectrum_plot_ui(ui: &mut egui::Ui, v: &TheoremView, width: f32, height: f32) {
+    let sp = &v.spectrum;
+    Plot::new("theorem-recon-spectrum-plot")
+        .width(width)
+        .height(height)
+        .legend(Legend::default())
+        .x_axis_label("ω (cycles/unit)")
+        .show(ui, |p| {
+            if !sp.original.is_empty() {
+                p.line(Line::new("|F(ω)|", sp.original.clone()).color(Color32::GRAY));
+                p.line(Line::new("|F_r(ω)|", sp.reconstructed.clone()).color(RECON));
+            }
+            if let Some((_, orig)) = sp.lines.iter().find(|(k, _)| *k == 0) {
+                p.points(
+                    Points::new("|F| (lines)", orig.clone())
+                        .radius(4.0)
+                        .color(Color32::GRAY),
+                );
+            }
+            if !sp.reconstructed_lines.is_empty() {
+                p.points(
+                    Points::new("|F_r| (lines)", sp.reconstructed_lines.clone())
+                        .stems(0.0)
+                        .radius(2.5)
+                        .color(RECON),
+                );
+            }
+            nyquist_lines(p, v.settings.rate);
+        });
+}
+
+fn errors_ui(ui: &mut egui::Ui, e: &AliasingErrors, rate: f64) {
+    let unit = if e.periodic { "power" } else { "energy" };
+    ui.horizontal_wrapped(|ui| {
+        let terms = [
+            (
+                "pre-aliasing",
+                e.pre_aliasing,
+                "replicas folded into |ω| < f_s/2 by sampling",
+            ),
+            (
+                "post-aliasing",
+                e.post_aliasing,
+                "replicas the filter passes beyond f_s/2",
+            ),
+            ("smoothing", e.smoothing, "pass-band attenuation"),
+            (
+                "lost above Nyquist",
+                e.lost,
+                "signal content above f_s/2 not reproduced",
+            ),
+            (
+                "total ∫|f_r − f|²",
+                e.total,
+                "the whole reconstruction error",
+            ),
+        ];
+        for (name, value, hover) in terms {
+            ui.group(|ui| {
+                ui.vertical(|ui| {
+                    ui.label(egui::RichText::new(name).strong())
+                        .on_hover_text(hover);
+                    ui.label(format!("{value:.3e}"));
+                    ui.label(format!("{:.3} % of {unit}", 100.0 * e.relative(value)));
+                });
+            });
+        }
+    });
+    ui.label(format!(
+        "{unit} of f = {:.4}; f_s = {rate:.3}, Nyquist f_s/2 = {:.3}; integrated over |ω| ≤ {:.1}, tail ≤ {:.1e}",
+        e.signal_energy,
+        0.5 * rate,
+        e.band,
+        e.tail_bound
+    ));
+}
+
+fn pair_plots_ui(ui: &mut egui::Ui, v: &TheoremView, re_im: bool, width: f32, height: f32) {
+    let pp = &v.pair;
+    let shah = v.settings.pair.kind == PairKind::Shah;
+    ui.horizontal_top(|ui| {
+        Plot::new("theorem-pair-spatial")
+            .width(width)
+            .height(height)
+            .legend(Legend::default())
+            .x_axis_label("x")
+            .include_x(-pp.x_max)
+            .include_x(pp.x_max)
+            .show(ui, |p| {
+                if shah {
+                    p.points(
+                        Points::new("impulses (weight 1/|a|)", pp.impulses_x.clone())
+                            .stems(0.0)
+                            .radius(3.0),
+                    );
+                } else {
+                    p.line(Line::new("f(a(x − s))", pp.spatial.clone()));
+                }
+            });
+        Plot::new("theorem-pair-frequency")
+            .width(width)
+            .height(height)
+            .legend(Legend::default())
+            .x_axis_label("ω")
+            .include_x(-pp.omega_max)
+            .include_x(pp.omega_max)
+            .show(ui, |p| {
+                if shah {
+                    let re: Vec<[f64; 2]> =
+                        pp.impulses_omega.iter().map(|i| [i[0], i[1]]).collect();
+                    let im: Vec<[f64; 2]> =
+                        pp.impulses_omega.iter().map(|i| [i[0], i[2]]).collect();
+                    p.points(Points::new("Re", re).stems(0.0).radius(3.0));
+                    p.points(Points::new("Im", im).stems(0.0).radius(2.0).color(RECON));
+                } else if re_im {
+                    p.line(Line::new("Re F", pp.re.clone()));
+                    p.line(Line::new("Im F", pp.im.clone()).color(RECON));
+                } else {
+                    p.line(Line::new("|F(ω)|", pp.magnitude.clone()));
+                }
+            });
+    });
+}
+
+fn vdc_table_ui(ui: &mut egui::Ui, v: &TheoremView) {
+    egui::ScrollArea::vertical()
+        .id_salt("theorem-vdc")
+        .max_height(200.0)
+        .show(ui, |ui| {
+            egui::Grid::new("theorem-vdc-grid")
+                .striped(true)
+                .num_columns(4)
+                .show(ui, |ui| {
+                    for h in ["i", "binary", "reversed", "Φ₂(i)"] {
+                        ui.strong(h);
+                    }
+                    ui.end_row();
+                    for row in &v.vdc {
+                        ui.label(row.i.to_string());
+                        ui.monospace(row.digits_string());
+                        ui.monospace(row.reversed_string());
+                        ui.label(format!("{}", row.value));
+                        ui.end_row();
+                    }
+                });
+        });
+}
