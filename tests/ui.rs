@@ -120,3 +120,40 @@ fn snapshot_default_scene() {
     let mut h = harness();
     h.snapshot("default_scene");
 }
+
+#[test]
+fn lecture_mode_switches_theme_and_zoom_without_recomputing() {
+    let mut h = harness();
+    let before = h.state().engine.evaluator().counts();
+    assert!(!h.state().view.lecture);
+    h.get_by_label("Lecture mode").click();
+    h.run_steps(3);
+    let app = h.state();
+    assert!(app.view.lecture);
+    assert_eq!(
+        h.ctx.theme(),
+        eframe::egui::Theme::Light,
+        "lecture mode uses the light theme"
+    );
+    assert!(!h.ctx.global_style().visuals.dark_mode);
+    let zoom = h.ctx.zoom_factor();
+    assert!(
+        (zoom - app.view.lecture_scale).abs() < 1e-6,
+        "zoom {zoom} vs scale {}",
+        app.view.lecture_scale
+    );
+    // Presentation only: no node was evaluated again.
+    assert_eq!(app.engine.evaluator().counts(), before);
+    // The controls can be hidden and shown again.
+    h.get_by_label("Hide controls").click();
+    h.run_steps(2);
+    assert!(h.state().view.controls_hidden);
+    assert!(h.query_by_role_and_label(Role::Slider, "N").is_none());
+    h.get_by_label("Show controls").click();
+    h.run_steps(2);
+    assert!(h.query_by_role_and_label(Role::Slider, "N").is_some());
+    // Leaving lecture mode restores zoom 1.
+    h.get_by_label("Lecture mode").click();
+    h.run_steps(3);
+    assert!((h.ctx.zoom_factor() - 1.0).abs() < 1e-6);
+}

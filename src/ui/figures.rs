@@ -1,0 +1,453 @@
+//! Saving figures from the GUI: any panel, a whole column or the whole comparison, as PNG at
+//! 1×, 2× or 3×, as SVG or as CSV, or copied to the clipboard.
+//!
+//! The figures are the ones `samplescope render` writes (same renderer, [`crate::export::figure`]),
+//! drawn on the CPU from the data the panels show, so a saved figure never depends on the
+//! window's size, theme or GPU. Panels and menus only *request* a figure (the request is
+//! queued in egui's temporary data); the app renders requests on a background thread and
+//! reports each file written, or the error, in the top bar.
+
+use crate::export::figure::{self, ColumnData, FigureColormap, FigureContext, PanelKind};
+use crate::scene::Scene;
+use eframe::egui;
+use std::path::{Path, PathBuf};
+use std::sync::mpsc::{channel, Receiver, Sender};
+
+/// What a figure request covers.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Target {
+    /// One figure of one column.
+    Panel { column: usize, kind: PanelKind },
+    /// A column's visible panels side by side.
+    Column { column: usize },
+    /// Every column, one row each.
+    Comparison,
+}
+
+/// What to produce.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Output {
+    Png { scale: u32 },
+    Svg { scale: u32 },
+    Csv,
+    Clipboard { scale: u32 },
+}
+
+/// A queued figure request.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Request {
+    pub target: Target,
+    pub output: Output,
+}
+
+/// A panel's screen rectangle this frame, for the keyboard shortcuts (Ctrl+S saves the panel
+/// under the pointer).
+#[derive(Debug, Clone, Copy)]
+struct PanelRect {
+    rect: egui::Rect,
+    column: usize,
+    kind: PanelKind,
+}
+
+fn queue_id() -> egui::Id {
+    egui::Id::unique("samplescope.figure-requests")
+}
+
+fn rects_id() -> egui::Id {
+    egui::Id::unique("samplescope.figure-panel-rects")
+}
+
+/// Queues a request (called from panels and menus).
+pub fn request(ctx: &egui::Context, r: Request) {
+    ctx.data_mut(|d| {
+        d.get_temp_mut_or_default::<Vec<Request>>(queue_id())
+            .push(r)
+    });
+}
+
+/// Takes every queued request.
+pub fn take_requests(ctx: &egui::Context) -> Vec<Request> {
+    ctx.data_mut(|d| std::mem::take(d.get_temp_mut_or_default::<Vec<Request>>(queue_id())))
+}
+
+/// Records where a panel of figure `kind` was drawn this frame.
+pub fn register_panel(ctx: &egui::Context, rect: egui::Rect, column: usize, kind: PanelKind) {
+    ctx.data_mut(|d| {
+        d.get_temp_mut_or_default::<Vec<PanelRect>>(rects_id())
+            .push(PanelRect { rect, column, kind })
+    });
+}
+
+/// The panel under `pos` among those registered this frame; clears the list for the next frame.
+fn panel_at(ctx: &egui::Context, pos: Option<egui::Pos2>) -> Option<(usize, PanelKind)> {
+    let rects =
+        ctx.data_mut(|d| std::mem::take(d.get_temp_mut_or_default::<Vec<PanelRect>>(rects_id())));
+    let pos = pos?;
+    rects
+        .iter()
+        .find(|r| r.rect.contains(pos))
+        .map(|r| (r.column, r.kind))
+}
+
+/// A small "Save" menu for the figures of one panel: PNG 1×/2×/3×, SVG, CSV, clipboard.
+pub fn panel_menu_ui(ui: &mut egui::Ui, column: usize, kinds: &[PanelKind]) {
+    ui.menu_button("Save", |ui| {
+        for &kind in kinds {
+            if kinds.len() > 1 {
+                ui.label(egui::RichText::new(kind.name()).strong());
+            }
+            let target = Target::Panel { column, kind };
+            outputs_ui(ui, target, true);
+        }
+    })
+    .response
+    .on_hover_text("Save this panel (Ctrl+S over it: PNG at the figure scale; Ctrl+Shift+C: copy)");
+}
+
+/// A "Save column" menu.
+pub fn column_menu_ui(ui: &mut egui::Ui, column: usize) {
+    ui.menu_button("Save column", |ui| {
+        outputs_ui(ui, Target::Column { column }, false);
+    });
+}
+
+/// A "Save comparison" menu.
+pub fn comparison_menu_ui(ui: &mut egui::Ui) {
+    ui.menu_button("Save comparison", |ui| {
+        outputs_ui(ui, Target::Comparison, false);
+    })
+    .response
+    .on_hover_text("Every column as one figure (Ctrl+Shift+S)");
+}
+
+fn outputs_ui(ui: &mut egui::Ui, target: Target, vector: bool) {
+    let ctx = ui.ctx().clone();
+    let pick = |ui: &mut egui::Ui, text: &str, output: Output| {
+        if ui.button(text).clicked() {
+            request(&ctx, Request { target, output });
+            ui.close();
+        }
+    };
+    for scale in 1..=3 {
+        pick(ui, &format!("PNG {scale}×"), Output::Png { scale });
+    }
+    if vector {
+        pick(ui, "SVG", Output::Svg { scale: 1 });
+        pick(ui, "CSV (data)", Output::Csv);
+    }
+    pick(ui, "Copy to clipboard", Output::Clipboard { scale: 1 });
+}
+
+/// Keyboard shortcuts: Ctrl+S saves the panel under the pointer as PNG at `scale` (the whole
+/// comparison when the pointer is over no panel), Ctrl+Shift+S saves the comparison,
+/// Ctrl+Shift+C copies the panel under the pointer. Call once per frame after the panels
+/// were drawn.
+pub fn shortcuts(ctx: &egui::Context, scale: u32) {
+    use egui::{Key, KeyboardShortcut, Modifiers};
+    let save_all = KeyboardShortcut::new(Modifiers::COMMAND | Modifiers::SHIFT, Key::S);
+    let copy = KeyboardShortcut::new(Modifiers::COMMAND | Modifiers::SHIFT, Key::C);
+    let save = KeyboardShortcut::new(Modifiers::COMMAND, Key::S);
+    let (all, copy, save, pos) = ctx.input_mut(|i| {
+        (
+            i.consume_shortcut(&save_all),
+            i.consume_shortcut(&copy),
+            i.consume_shortcut(&save),
+            i.pointer.hover_pos(),
+        )
+    });
+    let under = panel_at(ctx, pos);
+    let png = Output::Png { scale };
+    if all {
+        request(
+            ctx,
+            Request {
+                target: Target::Comparison,
+                output: png,
+            },
+        );
+    }
+    if let Some((column, kind)) = under {
+        let target = Target::Panel { column, kind };
+        if save {
+            request(
+                ctx,
+                Request {
+                    target,
+                    output: png,
+                },
+            );
+        }
+        if copy {
+            request(
+                ctx,
+                Request {
+                    target,
+                    output: Output::Clipboard { scale },
+                },
+            );
+        }
+    } else if save {
+        request(
+            ctx,
+            Request {
+                target: Target::Comparison,
+                output: png,
+            },
+        );
+    }
+}
+
+/// What finished: a file written, an image for the clipboard, or an error.
+pub enum Done {
+    Written(PathBuf),
+    Clipboard(egui::ColorImage, String),
+    Failed(String),
+}
+
+/// Everything a background job needs to draw a figure: the scene, its name and each column's
+/// data, plus the display choices of the GUI.
+#[derive(Clone)]
+pub struct Snapshot {
+    pub scene: Scene,
+    pub scene_name: String,
+    pub columns: Vec<ColumnData>,
+    pub spectrum_range: Option<(f32, f32)>,
+    pub colormap: FigureColormap,
+    pub response_db: bool,
+}
+
+impl Snapshot {
+    fn context(&self, column: usize) -> Result<FigureContext, String> {
+        let mut ctx =
+            FigureContext::new(&self.scene, column, &self.scene_name).map_err(|e| e.to_string())?;
+        ctx.spectrum_range = self.spectrum_range;
+        ctx.spectrum_colormap = self.colormap;
+        ctx.response_db = self.response_db;
+        Ok(ctx)
+    }
+
+    fn data(&self, column: usize) -> Result<&ColumnData, String> {
+        self.columns
+            .get(column)
+            .ok_or_else(|| format!("column {} has no results yet", column + 1))
+    }
+
+    /// Renders `req` and writes it into `dir` (or returns the clipboard image).
+    pub fn run(&self, req: Request, dir: &Path) -> Done {
+        match self.try_run(req, dir) {
+            Ok(d) => d,
+            Err(e) => Done::Failed(e),
+        }
+    }
+
+    fn try_run(&self, req: Request, dir: &Path) -> Result<Done, String> {
+        let kinds = PanelKind::composite(&self.scene);
+        // (file name, bytes) or clipboard image.
+        enum Made {
+            File(String, Vec<u8>),
+            Image(u32, u32, Vec<u8>, String),
+        }
+        let err = |e: crate::export::ExportError| e.to_string();
+        let made = match (req.target, req.output) {
+            (Target::Panel { column, kind }, out) => {
+                let ctx = self.context(column)?;
+                let data = self.data(column)?;
+                if !data.has(kind) {
+                    return Err(format!(
+                        "{}: no data yet for column {}",
+                        kind.name(),
+                        column + 1
+                    ));
+                }
+                match out {
+                    Output::Png { scale } => Made::File(
+                        figure::panel_file_name(kind, &ctx, Some(scale), "png"),
+                        figure::panel_png(kind, &ctx, data, scale).map_err(err)?,
+                    ),
+                    Output::Svg { scale } => Made::File(
+                        figure::panel_file_name(kind, &ctx, Some(scale), "svg"),
+                        figure::panel_svg(kind, &ctx, data, scale)
+                            .map_err(err)?
+                            .into_bytes(),
+                    ),
+                    Output::Csv => Made::File(
+                        figure::panel_file_name(kind, &ctx, None, "csv"),
+                        figure::panel_csv(kind, &ctx, data)
+                            .map_err(err)?
+                            .into_bytes(),
+                    ),
+                    Output::Clipboard { scale } => {
+                        let (w, h, rgba) =
+                            figure::panel_rgba(kind, &ctx, data, scale).map_err(err)?;
+                        Made::Image(w, h, rgba, figure::panel_file_name(kind, &ctx, None, ""))
+                    }
+                }
+            }
+            (Target::Column { column }, out) => {
+                let ctx = self.context(column)?;
+                let data = self.data(column)?;
+                match out {
+                    Output::Clipboard { scale } => {
+                        let (w, h, rgba) =
+                            figure::column_rgba(&kinds, &ctx, data, scale).map_err(err)?;
+                        Made::Image(w, h, rgba, figure::column_file_name(&ctx, scale))
+                    }
+                    Output::Png { scale } => Made::File(
+                        figure::column_file_name(&ctx, scale),
+                        figure::column_png(&kinds, &ctx, data, scale).map_err(err)?,
+                    ),
+                    Output::Svg { .. } | Output::Csv => {
+                        return Err("SVG and CSV are written per panel".into())
+                    }
+                }
+            }
+            (Target::Comparison, out) => {
+                let mut cols = Vec::with_capacity(self.scene.columns.len());
+                for c in 0..self.scene.columns.len() {
+                    cols.push((self.context(c)?, self.data(c)?.clone()));
+                }
+                let name = |s| figure::comparison_file_name(&self.scene_name, self.scene.n, s);
+                match out {
+                    Output::Clipboard { scale } => {
+                        let (w, h, rgba) =
+                            figure::comparison_rgba(&kinds, &cols, scale).map_err(err)?;
+                        Made::Image(w, h, rgba, name(scale))
+                    }
+                    Output::Png { scale } => Made::File(
+                        name(scale),
+                        figure::comparison_png(&kinds, &cols, scale).map_err(err)?,
+                    ),
+                    Output::Svg { .. } | Output::Csv => {
+                        return Err("SVG and CSV are written per panel".into())
+                    }
+                }
+            }
+        };
+        match made {
+            Made::File(name, bytes) => {
+                std::fs::create_dir_all(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
+                let path = dir.join(name);
+                std::fs::write(&path, bytes).map_err(|e| format!("{}: {e}", path.display()))?;
+                Ok(Done::Written(path))
+            }
+            Made::Image(w, h, rgba, what) => Ok(Done::Clipboard(
+                egui::ColorImage::from_rgba_unmultiplied([w as usize, h as usize], &rgba),
+                what,
+            )),
+        }
+    }
+}
+
+/// Runs figure requests off the UI thread and collects what they produced.
+pub struct Saver {
+    tx: Sender<Done>,
+    rx: Receiver<Done>,
+    pending: usize,
+    /// The last outcome, shown in the top bar.
+    pub status: Option<String>,
+}
+
+impl Default for Saver {
+    fn default() -> Self {
+        let (tx, rx) = channel();
+        Saver {
+            tx,
+            rx,
+            pending: 0,
+            status: None,
+        }
+    }
+}
+
+impl Saver {
+    /// Starts `requests` on a background thread with `snapshot`'s data.
+    pub fn start(
+        &mut self,
+        ctx: &egui::Context,
+        snapshot: Snapshot,
+        requests: Vec<Request>,
+        dir: PathBuf,
+    ) {
+        if requests.is_empty() {
+            return;
+        }
+        self.pending += requests.len();
+        self.status = Some("saving figure…".into());
+        let tx = self.tx.clone();
+        let repaint = ctx.clone();
+        let spawned = std::thread::Builder::new()
+            .name("samplescope-figures".into())
+            .spawn(move || {
+                for r in requests {
+                    let _ = tx.send(snapshot.run(r, &dir));
+                    repaint.request_repaint();
+                }
+            });
+        if let Err(e) = spawned {
+            self.pending = 0;
+            self.status = Some(format!("cannot start the figure thread: {e}"));
+        }
+    }
+
+    /// Whether figures are still being drawn.
+    pub fn busy(&self) -> bool {
+        self.pending > 0
+    }
+
+    /// Takes finished results: writes the status line and copies clipboard images.
+    pub fn poll(&mut self, ctx: &egui::Context) {
+        while let Ok(done) = self.rx.try_recv() {
+            self.pending = self.pending.saturating_sub(1);
+            self.status = Some(match done {
+                Done::Written(p) => format!("saved {}", p.display()),
+                Done::Clipboard(img, what) => {
+                    ctx.copy_image(img);
+                    format!("copied {what} to the clipboard")
+                }
+                Done::Failed(e) => format!("figure not saved: {e}"),
+            });
+        }
+    }
+}
+
+/// The figure colour map matching the GUI's.
+pub fn figure_colormap(c: super::gpu::Colormap) -> FigureColormap {
+    match c {
+        super::gpu::Colormap::Viridis => FigureColormap::Viridis,
+        super::gpu::Colormap::Inferno => FigureColormap::Inferno,
+        super::gpu::Colormap::Greys => FigureColormap::Greys,
+    }
+}
+
+/// The short scene name used in file names: the file stem of a path or built-in name.
+pub fn scene_stem(name: &str) -> String {
+    Path::new(name)
+        .file_stem()
+        .map(|s| s.to_string_lossy().into_owned())
+        .unwrap_or_else(|| name.to_string())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn scene_stem_strips_folders_and_extension() {
+        assert_eq!(scene_stem("assets/scenes/default.ron"), "default");
+        assert_eq!(scene_stem("two-columns.ron"), "two-columns");
+        assert_eq!(scene_stem("restored"), "restored");
+    }
+
+    #[test]
+    fn requests_queue_and_drain() {
+        let ctx = egui::Context::default();
+        let r = Request {
+            target: Target::Comparison,
+            output: Output::Png { scale: 2 },
+        };
+        request(&ctx, r);
+        request(&ctx, r);
+        assert_eq!(take_requests(&ctx), vec![r, r]);
+        assert!(take_requests(&ctx).is_empty());
+    }
+}
