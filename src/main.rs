@@ -12,6 +12,14 @@ struct Cli {
     /// Scene file (RON) to open in the GUI (default: the built-in default scene).
     #[arg(long, global = false)]
     scene: Option<std::path::PathBuf>,
+    /// Point file (CSV `x,y` with or without header, or PSA-style `x y` text with an optional
+    /// count line) shown in column 1 instead of its pattern.
+    #[arg(long, global = false)]
+    points: Option<std::path::PathBuf>,
+    /// With --points: map the points' bounding box onto [0,1)² (aspect kept) instead of
+    /// rejecting points outside.
+    #[arg(long, global = false, requires = "points")]
+    normalize: bool,
     #[command(subcommand)]
     command: Option<Command>,
 }
@@ -45,7 +53,10 @@ fn main() -> ExitCode {
         Some(Command::Analyze(args)) => cli::analyze::run(&args),
         Some(Command::Recon(args)) => cli::recon::run(&args),
         Some(Command::Render(args)) => cli::render::run(&args),
-        None => samplescope::ui::run_gui(cli.scene).map_err(cli::CliError::Gui),
+        None => {
+            samplescope::ui::run_gui_with_points(cli.scene, cli.points.map(|p| (p, cli.normalize)))
+                .map_err(cli::CliError::Gui)
+        }
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -66,6 +66,7 @@ fn band_limited_grating_survives_lanczos_resampling() {
     let sig = Signal::Grating(Grating {
         frequency: 5.0,
         angle: 20.0,
+        phase: 0.0,
     });
     let (g, w) = (32, 128);
     let r = resample_grid(&sig, g, w, &LanczosKernel { a: 3.0 }, &Cancel::never()).unwrap();

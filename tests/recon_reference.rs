@@ -197,6 +197,7 @@ fn grating_exact_integral_matches_supersampled_and_estimate_is_conservative() {
     let g = Signal::Grating(Grating {
         frequency: 9.0,
         angle: 28.0,
+        phase: 0.0,
     });
     let w = 24;
     let exact = reference_image(&g, w).unwrap();

@@ -70,6 +70,7 @@ fn grating_phase_exact_against_integer_arithmetic() {
         let g = Signal::Grating(Grating {
             frequency: f as f64,
             angle: 0.0,
+            phase: 0.0,
         });
         let mut worst: f64 = 0.0;
         for _ in 0..5000 {
@@ -90,6 +91,7 @@ fn grating_axis_angles_are_exact() {
     let g = Grating {
         frequency: 4.0,
         angle: 90.0,
+        phase: 0.0,
     };
     assert_eq!(g.eval(DVec2::new(0.3, 1.0 / 16.0)), 1.0);
     assert_eq!(g.eval(DVec2::new(0.9, 1.0 / 16.0)), 1.0);

@@ -40,6 +40,44 @@ pub enum PointsFileError {
     Empty,
     #[error("too many points: {found} (at most {max})")]
     TooMany { found: usize, max: usize },
+    /// The file could not be read.
+    #[error("{path}: {message}")]
+    Io { path: String, message: String },
+}
+
+/// Reads and parses a point file (see [`parse_points`]).
+pub fn read_points_file(
+    path: &std::path::Path,
+    out_of_range: OutOfRange,
+) -> Result<Vec<DVec2>, PointsFileError> {
+    let text = std::fs::read_to_string(path).map_err(|e| PointsFileError::Io {
+        path: path.display().to_string(),
+        message: e.to_string(),
+    })?;
+    parse_points(&text, out_of_range)
+}
+
+/// Maps the bounding box of `points` onto [0,1)², keeping the aspect ratio: every axis is
+/// scaled by 1/(the larger extent) after subtracting the lower corner, then clamped to at most
+/// 1 − 2⁻⁵³. A single point (zero extent) maps to the origin. Points must be finite.
+pub fn normalize_to_bounding_box(raw: &[DVec2]) -> Vec<DVec2> {
+    let lo = raw
+        .iter()
+        .fold(DVec2::splat(f64::INFINITY), |a, p| a.min(*p));
+    let hi = raw
+        .iter()
+        .fold(DVec2::splat(f64::NEG_INFINITY), |a, p| a.max(*p));
+    let extent = (hi - lo).max_element();
+    let scale = if extent > 0.0 { 1.0 / extent } else { 1.0 };
+    raw.iter()
+        .map(|p| {
+            let q = (*p - lo) * scale;
+            DVec2::new(
+                q.x.clamp(0.0, ONE_MINUS_EPSILON),
+                q.y.clamp(0.0, ONE_MINUS_EPSILON),
+            )
+        })
+        .collect()
 }
 
 /// Parses a point file (see the module docs for the formats).
@@ -143,21 +181,8 @@ pub fn parse_points(text: &str, out_of_range: OutOfRange) -> Result<Vec<DVec2>, 
             }
         }
         OutOfRange::NormalizeToBoundingBox => {
-            let lo = raw
-                .iter()
-                .fold(DVec2::splat(f64::INFINITY), |a, (_, p)| a.min(*p));
-            let hi = raw
-                .iter()
-                .fold(DVec2::splat(f64::NEG_INFINITY), |a, (_, p)| a.max(*p));
-            let extent = (hi - lo).max_element();
-            let scale = if extent > 0.0 { 1.0 / extent } else { 1.0 };
-            for (_, p) in &raw {
-                let q = (*p - lo) * scale;
-                points.push(DVec2::new(
-                    q.x.clamp(0.0, ONE_MINUS_EPSILON),
-                    q.y.clamp(0.0, ONE_MINUS_EPSILON),
-                ));
-            }
+            let xy: Vec<DVec2> = raw.iter().map(|(_, p)| *p).collect();
+            points = normalize_to_bounding_box(&xy);
         }
     }
     Ok(points)

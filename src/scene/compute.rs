@@ -174,7 +174,12 @@ pub fn column_nodes(scene: &Scene, c: usize) -> Vec<(NodeKey, Job)> {
     let panels = scene.panels;
     let fx = scene.effects;
     let recon_on = panels.zoneplate && fx.reconstruction;
-    let points = key_of(NodeKind::Points, &(&col.pattern, scene.n, col.seed), &[]);
+    // Imported points are keyed by a hash of their bits; a pattern by its parameters, N, seed.
+    let imported = col.points.as_ref().map(|p| p.content_hash());
+    let points = match imported {
+        Some(h) => key_of(NodeKind::Points, &("imported", h), &[]),
+        None => key_of(NodeKind::Points, &(&col.pattern, scene.n, col.seed), &[]),
+    };
     let recon_uses_points = recon_on && scene.recon.mode == ReconMode::Scattered;
     let needs_points = panels.pattern || recon_uses_points;
     if needs_points {
@@ -189,14 +194,23 @@ pub fn column_nodes(scene: &Scene, c: usize) -> Vec<(NodeKey, Job)> {
     if panels.spectrum {
         // The spectrum regenerates realizations r > 0 itself, so it depends on the pattern's
         // parameters rather than on the points node.
-        out.push((
-            key_of(
+        let key = match imported {
+            // One realization of a file: K does not matter (see `scene::import`).
+            Some(_) => {
+                let s = scene.spectrum;
+                key_of(
+                    NodeKind::Spectrum,
+                    &(s.size, s.tolerance, s.exact, s.mask_dc),
+                    &[points],
+                )
+            }
+            None => key_of(
                 NodeKind::Spectrum,
                 &(&col.pattern, scene.n, col.seed, &scene.spectrum),
                 &[],
             ),
-            Job::Spectrum,
-        ));
+        };
+        out.push((key, Job::Spectrum));
     }
     if recon_on {
         let (recon, samples) = match scene.recon.mode {
@@ -322,6 +336,19 @@ impl Job {
 
 fn points(scene: &Scene, c: usize, cancel: &Cancel) -> Output {
     let col = &scene.columns[c];
+    if let Some(imp) = &col.points {
+        let points = imp.to_dvec();
+        let gpu = points.iter().map(|p| [p.x as f32, p.y as f32]).collect();
+        return Ok((
+            NodeValue::Points(Arc::new(PointsData {
+                points,
+                gpu: Arc::new(gpu),
+                version: next_version(),
+                note: None,
+            })),
+            Some(format!("imported from {}", imp.label())),
+        ));
+    }
     let g = col
         .pattern
         .generate_with(scene.n, col.seed, cancel)
@@ -385,6 +412,9 @@ fn reconstruction(scene: &Scene, c: usize, done: &Done, cancel: &Cancel) -> Outp
         }
         ReconMode::Supersample { spp } => {
             let col = &scene.columns[c];
+            if col.points.is_some() {
+                return Err(imported_needs_pattern(c, "supersampling"));
+            }
             let provider = crate::core::recon::PatternProvider {
                 pattern: col.pattern,
                 seed: col.seed,
@@ -525,8 +555,20 @@ pub const CONVERGENCE_SPP: [usize; 5] = [1, 4, 16, 64, 256];
 /// Image size of the convergence curve (small: 256 spp per pixel).
 pub const CONVERGENCE_SIZE: usize = 64;
 
+/// The error of a node that needs a generating pattern on a column with imported points.
+fn imported_needs_pattern(c: usize, what: &str) -> String {
+    format!(
+        "column {} shows imported points: {what} needs a pattern that generates new samples \
+         for every pixel; use scattered reconstruction, or a pattern in this column",
+        c + 1
+    )
+}
+
 fn convergence(scene: &Scene, c: usize, cancel: &Cancel) -> Output {
     let col = &scene.columns[c];
+    if col.points.is_some() {
+        return Err(imported_needs_pattern(c, "the convergence curve"));
+    }
     let provider = crate::core::recon::PatternProvider {
         pattern: col.pattern,
         seed: col.seed,
@@ -557,7 +599,13 @@ fn spectrum(scene: &Scene, c: usize, cancel: &Cancel) -> Output {
         average_periodogram, radial_average, DcMode, Method, SpectrumRequest,
     };
     let col = &scene.columns[c];
-    let s = &scene.spectrum;
+    let mut s = scene.spectrum;
+    let imported = col.points.as_ref().map(|p| Arc::new(p.to_dvec()));
+    let n_points = imported.as_ref().map_or(scene.n, |p| p.len());
+    let asked_k = s.realizations;
+    if imported.is_some() {
+        s.realizations = 1;
+    }
     let req = SpectrumRequest {
         size: s.size,
         method: if s.exact {
@@ -574,17 +622,25 @@ fn spectrum(scene: &Scene, c: usize, cancel: &Cancel) -> Output {
             DcMode::Show
         },
         // Two rows of the exact DFT: a measured error at ~2·N·M multiply-adds.
-        error_check_budget: 2 * (scene.n as u64) * (s.size as u64),
+        error_check_budget: 2 * (n_points as u64) * (s.size as u64),
     };
     // Realization 0 is the point set the pattern panel shows (the column's own seed).
     let first = crate::core::rng::derive_seed(col.seed, 0);
     let (pattern, n, seed) = (col.pattern, scene.n, col.seed);
-    let (spec, report) = average_periodogram(
-        &req,
-        seed,
-        move |sd| pattern.generate(n, if sd == first { seed } else { sd }),
-        cancel,
-    )
+    let (spec, report) = match &imported {
+        Some(pts) => average_periodogram(
+            &req,
+            seed,
+            |_| Ok::<_, crate::core::pattern::PatternError>(pts.as_ref().clone()),
+            cancel,
+        ),
+        None => average_periodogram(
+            &req,
+            seed,
+            move |sd| pattern.generate(n, if sd == first { seed } else { sd }),
+            cancel,
+        ),
+    }
     .map_err(|e| e.to_string())?;
     let m = spec.m;
     let log = spec.to_display_image();
@@ -616,6 +672,14 @@ fn spectrum(scene: &Scene, c: usize, cancel: &Cancel) -> Output {
         )),
         (Some(tol), None) => Some(format!("asked {tol:.0e}")),
         (None, _) => Some("exact DFT".into()),
+    };
+    let accuracy = if imported.is_some() && asked_k > 1 {
+        Some(format!(
+            "imported points: one realization (K = 1, scene asks {asked_k}); {}",
+            accuracy.unwrap_or_default()
+        ))
+    } else {
+        accuracy
     };
     Ok((
         NodeValue::Spectrum(Arc::new(SpectrumData {

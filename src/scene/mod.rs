@@ -7,6 +7,11 @@
 
 pub mod compute;
 pub mod graph;
+pub mod import;
+pub mod motion;
+
+pub use import::ImportedPoints;
+pub use motion::Motion;
 
 use crate::core::filter::Filter2D;
 use crate::core::pattern::Pattern;
@@ -24,6 +29,8 @@ pub struct Column {
     pub seed: u64,
     /// Optional label shown above the column (default: the pattern's name).
     pub label: String,
+    /// Points imported from a file (or inline) used instead of the pattern; see [`import`].
+    pub points: Option<ImportedPoints>,
 }
 
 impl Default for Column {
@@ -32,6 +39,7 @@ impl Default for Column {
             pattern: Pattern::default(),
             seed: 1,
             label: String::new(),
+            points: None,
         }
     }
 }
@@ -40,7 +48,10 @@ impl Column {
     /// The label shown above the column.
     pub fn title(&self) -> String {
         if self.label.is_empty() {
-            self.pattern.name().to_string()
+            match &self.points {
+                Some(p) => format!("{} ({} points)", p.label(), p.points.len()),
+                None => self.pattern.name().to_string(),
+            }
         } else {
             self.label.clone()
         }
@@ -177,6 +188,8 @@ pub struct Scene {
     pub spectrum: SpectrumSettings,
     pub panels: Panels,
     pub effects: Effects,
+    /// How the signal moves over time; `None` (the default) computes nothing per frame.
+    pub motion: Option<Motion>,
     /// The 1D sampling-theorem view's settings (used only while `panels.theorem` is on).
     pub theorem: TheoremSettings,
 }
@@ -194,6 +207,7 @@ impl Default for Scene {
             spectrum: SpectrumSettings::default(),
             panels: Panels::default(),
             effects: Effects::default(),
+            motion: None,
             theorem: TheoremSettings::default(),
         }
     }
@@ -221,6 +235,14 @@ pub enum SceneError {
     /// The file could not be read.
     #[error("{path}: {message}")]
     Io { path: String, message: String },
+    /// A column's point file could not be read or holds a bad point (the error names the line).
+    #[error("{source_name}: columns[{column}].points: {path}: {error}")]
+    Points {
+        source_name: String,
+        column: usize,
+        path: String,
+        error: crate::core::pointset::PointsFileError,
+    },
 }
 
 /// Scenes shipped with the app: (file name, RON text).
@@ -273,19 +295,171 @@ pub const BUILTIN: &[(&str, &str)] = &[
         "zone-plate-128-to-512.ron",
         include_str!("../../assets/scenes/zone-plate-128-to-512.ron"),
     ),
+    (
+        "motion-zone-plate-drift.ron",
+        include_str!("../../assets/scenes/motion-zone-plate-drift.ron"),
+    ),
+    (
+        "motion-zone-plate-rotate.ron",
+        include_str!("../../assets/scenes/motion-zone-plate-rotate.ron"),
+    ),
+    (
+        "motion-grating-strobe.ron",
+        include_str!("../../assets/scenes/motion-grating-strobe.ron"),
+    ),
+    (
+        "checkerboard-point-sampled.ron",
+        include_str!("../../assets/scenes/checkerboard-point-sampled.ron"),
+    ),
+    (
+        "checkerboard-supersampled-4x4.ron",
+        include_str!("../../assets/scenes/checkerboard-supersampled-4x4.ron"),
+    ),
+    (
+        "texture-1spp.ron",
+        include_str!("../../assets/scenes/texture-1spp.ron"),
+    ),
+    (
+        "texture-4spp.ron",
+        include_str!("../../assets/scenes/texture-4spp.ron"),
+    ),
+    (
+        "texture-256spp.ron",
+        include_str!("../../assets/scenes/texture-256spp.ron"),
+    ),
+    (
+        "random-vs-jittered.ron",
+        include_str!("../../assets/scenes/random-vs-jittered.ron"),
+    ),
+    (
+        "net-0-4-2-elementary-intervals.ron",
+        include_str!("../../assets/scenes/net-0-4-2-elementary-intervals.ron"),
+    ),
+    (
+        "nrooks-and-lhs.ron",
+        include_str!("../../assets/scenes/nrooks-and-lhs.ron"),
+    ),
+    (
+        "dart-throwing-step-by-step.ron",
+        include_str!("../../assets/scenes/dart-throwing-step-by-step.ron"),
+    ),
+    (
+        "kernel-box.ron",
+        include_str!("../../assets/scenes/kernel-box.ron"),
+    ),
+    (
+        "kernel-tent.ron",
+        include_str!("../../assets/scenes/kernel-tent.ron"),
+    ),
+    (
+        "kernel-gaussian.ron",
+        include_str!("../../assets/scenes/kernel-gaussian.ron"),
+    ),
+    (
+        "kernel-mitchell.ron",
+        include_str!("../../assets/scenes/kernel-mitchell.ron"),
+    ),
+    (
+        "kernel-lanczos.ron",
+        include_str!("../../assets/scenes/kernel-lanczos.ron"),
+    ),
+    (
+        "low-pass.ron",
+        include_str!("../../assets/scenes/low-pass.ron"),
+    ),
+    (
+        "band-pass.ron",
+        include_str!("../../assets/scenes/band-pass.ron"),
+    ),
+    (
+        "high-pass.ron",
+        include_str!("../../assets/scenes/high-pass.ron"),
+    ),
+    (
+        "derivative-cosc.ron",
+        include_str!("../../assets/scenes/derivative-cosc.ron"),
+    ),
+    (
+        "pre-aliasing.ron",
+        include_str!("../../assets/scenes/pre-aliasing.ron"),
+    ),
+    (
+        "post-aliasing.ron",
+        include_str!("../../assets/scenes/post-aliasing.ron"),
+    ),
 ];
 
 impl Scene {
-    /// Parses and validates a scene from RON text; `source_name` appears in errors.
+    /// Parses and validates a scene from RON text; `source_name` appears in errors. Point
+    /// files named by columns are read relative to the current directory.
     pub fn from_ron(text: &str, source_name: &str) -> Result<Scene, SceneError> {
-        let scene: Scene = ron::from_str(text).map_err(|e| SceneError::Parse {
+        Scene::from_ron_in(text, source_name, None)
+    }
+
+    /// As [`Scene::from_ron`], reading the columns' point files relative to `base_dir`.
+    pub fn from_ron_in(
+        text: &str,
+        source_name: &str,
+        base_dir: Option<&std::path::Path>,
+    ) -> Result<Scene, SceneError> {
+        let mut scene: Scene = ron::from_str(text).map_err(|e| SceneError::Parse {
             source_name: source_name.to_string(),
             line: e.span.start.line,
             column: e.span.start.col,
             message: e.code.to_string(),
         })?;
+        scene.resolve_points(source_name, base_dir)?;
         scene.validate(source_name)?;
         Ok(scene)
+    }
+
+    /// Reads every column's point file that is not loaded yet (see [`ImportedPoints::resolve`]).
+    pub fn resolve_points(
+        &mut self,
+        source_name: &str,
+        base_dir: Option<&std::path::Path>,
+    ) -> Result<(), SceneError> {
+        for (ci, col) in self.columns.iter_mut().enumerate() {
+            if let Some(imp) = &mut col.points {
+                imp.resolve(base_dir).map_err(|error| SceneError::Points {
+                    source_name: source_name.to_string(),
+                    column: ci,
+                    path: imp.path.clone(),
+                    error,
+                })?;
+            }
+        }
+        Ok(())
+    }
+
+    /// The scene at time `t` seconds: the signal moved by [`Scene::motion`] (see [`motion`]),
+    /// everything else unchanged (the points and their spectrum do not depend on the signal,
+    /// so the compute graph reuses them). A scene without motion, or t = 0, is returned as is.
+    pub fn at_time(&self, t: f64) -> Result<Scene, SceneError> {
+        let mut out = self.clone();
+        if let Some(m) = &self.motion {
+            out.signal = motion::signal_at(&self.signal, m, t).map_err(|e| {
+                let (field, value, allowed) = match &e {
+                    motion::MotionError::InvalidParam {
+                        field,
+                        value,
+                        allowed,
+                    } => (field.to_string(), value.to_string(), allowed.clone()),
+                    motion::MotionError::Unsupported { signal } => (
+                        "motion".to_string(),
+                        signal.to_string(),
+                        "used with a zone-plate, grating or step-edge signal".to_string(),
+                    ),
+                };
+                SceneError::Invalid {
+                    source_name: self.title.clone(),
+                    field,
+                    value,
+                    allowed,
+                }
+            })?;
+        }
+        Ok(out)
     }
 
     /// Reads a scene file.
@@ -294,7 +468,7 @@ impl Scene {
             path: path.display().to_string(),
             message: e.to_string(),
         })?;
-        Scene::from_ron(&text, &path.display().to_string())
+        Scene::from_ron_in(&text, &path.display().to_string(), path.parent())
     }
 
     /// The built-in default scene.
@@ -390,6 +564,59 @@ impl Scene {
                 ))
             }
             Ok(()) => {}
+        }
+        if let Some(m) = &self.motion {
+            match m.validate() {
+                Err(motion::MotionError::InvalidParam {
+                    field,
+                    value,
+                    allowed,
+                }) => return Err(invalid(field, value.to_string(), &allowed)),
+                Err(motion::MotionError::Unsupported { signal }) => {
+                    return Err(invalid(
+                        "motion",
+                        signal.to_string(),
+                        "used with a zone-plate, grating or step-edge signal",
+                    ))
+                }
+                Ok(()) => {}
+            }
+            if let Err(motion::MotionError::Unsupported { signal }) =
+                Motion::check_signal(&self.signal)
+            {
+                return Err(invalid(
+                    "motion",
+                    format!("Some(..) with a {signal} signal"),
+                    "None, or a zone-plate, grating or step-edge signal",
+                ));
+            }
+        }
+        for (ci, col) in self.columns.iter().enumerate() {
+            if let Some(imp) = &col.points {
+                let field = format!("columns[{ci}].points.points");
+                if imp.points.is_empty() {
+                    return Err(invalid(
+                        &field,
+                        "no points".into(),
+                        "at least one point (or a `path` to a point file)",
+                    ));
+                }
+                if imp.points.len() > MAX_SCENE_N {
+                    return Err(invalid(
+                        &field,
+                        format!("{} points", imp.points.len()),
+                        &format!("at most {MAX_SCENE_N} points"),
+                    ));
+                }
+                if let Some(j) = imp.first_outside() {
+                    let [x, y] = imp.points[j];
+                    return Err(invalid(
+                        &format!("{field}[{j}]"),
+                        format!("({x}, {y})"),
+                        "inside [0,1)² (or set `normalize: true`)",
+                    ));
+                }
+            }
         }
         Ok(())
     }

@@ -36,6 +36,10 @@ pub struct SamplescopeApp {
     frame_time: Duration,
     last_frame: Option<Instant>,
     textures: panels::TextureCache,
+    /// Playback of a scene with motion (frame shown, playing or not).
+    pub(crate) motion_clock: super::playback::MotionClock,
+    /// The last point file that could not be imported (shown with a retry button).
+    pub(crate) import_failure: Option<super::dropped::ImportFailure>,
     theorem_panel: super::theorem::TheoremPanel,
 }
 
@@ -72,6 +76,8 @@ impl SamplescopeApp {
             frame_time: Duration::ZERO,
             last_frame: None,
             textures: panels::TextureCache::default(),
+            motion_clock: Default::default(),
+            import_failure: None,
             theorem_panel: Default::default(),
         };
         if let Some(storage) = cc.storage {
@@ -109,6 +115,7 @@ impl SamplescopeApp {
         self.scene_name = name;
         self.scene_error = None;
         self.results.clear();
+        self.motion_clock.reset();
     }
 
     /// Adds a column (a copy of the last one with the next seed).
@@ -122,9 +129,12 @@ impl SamplescopeApp {
 
     /// Submits the scene to the engine if it changed, and takes results that arrived.
     pub fn sync_engine(&mut self) {
-        if self.submitted.as_ref() != Some(&self.scene) {
-            self.engine.submit(&self.scene);
-            self.submitted = Some(self.scene.clone());
+        // A scene with motion is submitted as it is at the frame shown.
+        let moved = self.moved_scene();
+        let shown = moved.as_ref().unwrap_or(&self.scene);
+        if self.submitted.as_ref() != Some(shown) {
+            self.engine.submit(shown);
+            self.submitted = Some(shown.clone());
             self.results
                 .resize_with(self.scene.columns.len(), HashMap::new);
             self.results.truncate(self.scene.columns.len());
@@ -229,6 +239,8 @@ impl SamplescopeApp {
         if !self.scene.notes.is_empty() {
             ui.label(&self.scene.notes);
         }
+        self.transport_ui(ui);
+        self.import_failure_ui(ui);
         if let Some(e) = &self.scene_error {
             ui.colored_label(egui::Color32::from_rgb(200, 40, 40), e);
         }
@@ -413,6 +425,8 @@ impl eframe::App for SamplescopeApp {
             .show(ui, |ui| {
                 egui::ScrollArea::vertical().show(ui, |ui| self.controls(ui));
             });
+        self.advance_motion(&ctx);
+        self.handle_file_drops(&ctx, ui.available_rect_before_wrap());
         self.sync_engine();
         if self.scene.panels.cost {
             egui::Panel::bottom("samplescope-cost")

@@ -2,8 +2,10 @@
 //! view, and the controls. Panels only draw plain data computed by the engine; no maths here.
 
 pub mod app;
+pub mod dropped;
 pub mod gpu;
 pub mod panels;
+pub mod playback;
 pub mod theorem;
 
 pub use app::SamplescopeApp;
@@ -13,17 +15,33 @@ pub const APP_NAME: &str = "samplescope";
 
 /// Opens the GUI window (blocking until it closes).
 pub fn run_gui(scene_path: Option<std::path::PathBuf>) -> Result<(), String> {
+    run_gui_with_points(scene_path, None)
+}
+
+/// Opens the GUI window with column 1 showing the points of a file: `points` = (file,
+/// normalise to the bounding box). A file that cannot be used is reported in the window.
+pub fn run_gui_with_points(
+    scene_path: Option<std::path::PathBuf>,
+    points: Option<(std::path::PathBuf, bool)>,
+) -> Result<(), String> {
     let options = eframe::NativeOptions {
         viewport: eframe::egui::ViewportBuilder::default()
             .with_inner_size([1500.0, 950.0])
-            .with_title(APP_NAME),
+            .with_title(APP_NAME)
+            .with_drag_and_drop(true),
         renderer: eframe::Renderer::Wgpu,
         ..Default::default()
     };
     eframe::run_native(
         APP_NAME,
         options,
-        Box::new(move |cc| Ok(Box::new(SamplescopeApp::new(cc, scene_path.as_deref())))),
+        Box::new(move |cc| {
+            let mut app = SamplescopeApp::new(cc, scene_path.as_deref());
+            if let Some((path, normalize)) = &points {
+                app.import_points(0, path, *normalize);
+            }
+            Ok(Box::new(app))
+        }),
     )
     .map_err(|e| e.to_string())
 }

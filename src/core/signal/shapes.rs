@@ -19,7 +19,7 @@ pub fn direction(angle_deg: f64) -> DVec2 {
     DVec2::new(cos_pi(a), sin_pi(a))
 }
 
-/// A sinusoidal grating g(p) = ½(1 + sin(2π f (n·p))), n = (cos θ, sin θ).
+/// A sinusoidal grating g(p) = ½(1 + sin(2π (f (n·p) + φ))), n = (cos θ, sin θ), phase φ in cycles.
 ///
 /// Its spectrum is a pair of impulses at ±f·n (cycles per unit): it aliases on a W×W grid as
 /// soon as f·max(|nₓ|, |n_y|) > W/2. n·p is formed in double-double and the phase is reduced
@@ -31,6 +31,9 @@ pub struct Grating {
     pub frequency: f64,
     /// Direction θ of the wave vector, degrees, in [−360, 360].
     pub angle: f64,
+    /// Phase φ in cycles, in [−1, 1]: g(p) = ½(1 + sin(2π(f (n·p) + φ))). Default 0; a moving
+    /// grating (scene motion) drifts through it.
+    pub phase: f64,
 }
 
 impl Default for Grating {
@@ -38,6 +41,7 @@ impl Default for Grating {
         Grating {
             frequency: 16.0,
             angle: 30.0,
+            phase: 0.0,
         }
     }
 }
@@ -58,18 +62,20 @@ impl Grating {
             Self::MAX_FREQUENCY,
         )?;
         check_range(Self::NAME, "angle", self.angle, -360.0, 360.0)?;
+        check_range(Self::NAME, "phase", self.phase, -1.0, 1.0)?;
         Ok(())
     }
 
-    /// 2 f (n·p) modulo 2, in [−1, 1]: the phase in units of π.
+    /// 2 (f (n·p) + φ) modulo 2, in [−1, 1]: the phase in units of π (2φ is exact, and the sum
+    /// is formed in double-double before the exact reduction).
     #[inline]
     pub fn phase_over_pi(&self, p: DVec2) -> f64 {
         let n = direction(self.angle);
         let proj = DoubleDouble::prod(p.x, n.x) + DoubleDouble::prod(p.y, n.y);
-        rem2(proj.mul_f64(2.0 * self.frequency))
+        rem2(proj.mul_f64(2.0 * self.frequency) + DoubleDouble::from_f64(2.0 * self.phase))
     }
 
-    /// g(p) = ½(1 + sin(2π f (n·p))) ∈ [0, 1].
+    /// g(p) = ½(1 + sin(2π (f (n·p) + φ))) ∈ [0, 1].
     #[inline]
     pub fn eval(&self, p: DVec2) -> f64 {
         (0.5 * (1.0 + sin_pi(self.phase_over_pi(p)))).clamp(0.0, 1.0)
