@@ -610,8 +610,10 @@ mod tests {
 
     #[test]
     fn column_slugs_are_unique_within_a_scene() {
-        let mut scene = Scene::default();
-        scene.columns = vec![Default::default(), Default::default()];
+        let mut scene = Scene {
+            columns: vec![Default::default(), Default::default()],
+            ..Default::default()
+        };
         scene.columns[1].label = "jitter".into();
         assert_eq!(column_slugs(&scene), vec!["jitter-c1", "jitter-c2"]);
         scene.columns[1].label = "p1 = 3".into();
