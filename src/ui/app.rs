@@ -1,6 +1,8 @@
 //! The application: scene, engine, controls, and the column layout.
 
+use super::figures;
 use super::gpu::{self, Colormap};
+use super::lecture;
 use super::panels::{self, ViewState};
 use crate::core::pattern::Pattern;
 use crate::engine::Engine;
@@ -36,11 +38,14 @@ pub struct SamplescopeApp {
     frame_time: Duration,
     last_frame: Option<Instant>,
     textures: panels::TextureCache,
+    theorem_panel: super::theorem::TheoremPanel,
     /// Playback of a scene with motion (frame shown, playing or not).
     pub(crate) motion_clock: super::playback::MotionClock,
     /// The last point file that could not be imported (shown with a retry button).
     pub(crate) import_failure: Option<super::dropped::ImportFailure>,
-    theorem_panel: super::theorem::TheoremPanel,
+    applied_style: Option<lecture::AppliedStyle>,
+    /// Renders and writes requested figures off the UI thread.
+    pub saver: figures::Saver,
 }
 
 /// Keys under which eframe persists the window's state.
@@ -76,9 +81,11 @@ impl SamplescopeApp {
             frame_time: Duration::ZERO,
             last_frame: None,
             textures: panels::TextureCache::default(),
+            theorem_panel: Default::default(),
+            applied_style: None,
+            saver: figures::Saver::default(),
             motion_clock: Default::default(),
             import_failure: None,
-            theorem_panel: Default::default(),
         };
         if let Some(storage) = cc.storage {
             if scene_path.is_none() {
@@ -148,6 +155,23 @@ impl SamplescopeApp {
 
     fn shortcuts(&mut self, ctx: &egui::Context) {
         use egui::{Key, Modifiers};
+        let (lecture, controls, fullscreen) = ctx.input_mut(|i| {
+            (
+                i.consume_key(Modifiers::NONE, Key::F5),
+                i.consume_key(Modifiers::NONE, Key::F9),
+                i.consume_key(Modifiers::NONE, Key::F11),
+            )
+        });
+        if lecture {
+            self.view.lecture = !self.view.lecture;
+        }
+        if controls {
+            self.view.controls_hidden = !self.view.controls_hidden;
+        }
+        if fullscreen {
+            let is_full = ctx.input(|i| i.viewport().fullscreen.unwrap_or(false));
+            ctx.send_viewport_cmd(egui::ViewportCommand::Fullscreen(!is_full));
+        }
         let (add, dup, remove, toggle_spec, toggle_cost, reseed, lock) = ctx.input_mut(|i| {
             (
                 i.consume_key(Modifiers::CTRL, Key::N),
@@ -220,6 +244,10 @@ impl SamplescopeApp {
             ui.checkbox(&mut self.view.lock_scales, "Lock scales")
                 .on_hover_text("Same display range in every column (Ctrl+L)");
             ui.separator();
+            self.presentation_ui(ui);
+            ui.separator();
+            self.figures_ui(ui);
+            ui.separator();
             if self.view.show_timings {
                 ui.label(format!(
                     "frame {:.1} ms · update {}",
@@ -243,6 +271,84 @@ impl SamplescopeApp {
         self.import_failure_ui(ui);
         if let Some(e) = &self.scene_error {
             ui.colored_label(egui::Color32::from_rgb(200, 40, 40), e);
+        }
+    }
+
+    /// What the figure writer needs: the scene, its name, every column's data and the
+    /// display choices of the panels.
+    pub fn figure_snapshot(&self) -> figures::Snapshot {
+        figures::Snapshot {
+            scene: self.scene.clone(),
+            scene_name: figures::scene_stem(&self.scene_name),
+            columns: self
+                .results
+                .iter()
+                .map(crate::export::figure::ColumnData::from_results)
+                .collect(),
+            spectrum_range: self
+                .view
+                .lock_scales
+                .then_some((self.view.spectrum_lo, self.view.spectrum_hi)),
+            colormap: figures::figure_colormap(self.view.colormap),
+            response_db: self.view.response_db,
+        }
+    }
+
+    /// The comparison's save menu, the figure folder and scale, and the last save's outcome.
+    fn figures_ui(&mut self, ui: &mut egui::Ui) {
+        figures::comparison_menu_ui(ui);
+        let label = ui.label("into");
+        ui.add(
+            egui::TextEdit::singleline(&mut self.view.figure_dir)
+                .desired_width(90.0)
+                .hint_text("folder"),
+        )
+        .labelled_by(label.id)
+        .on_hover_text("Folder for saved figures (created when needed)");
+        egui::ComboBox::from_label("Ctrl+S scale")
+            .selected_text(format!("{}×", self.view.figure_scale))
+            .show_ui(ui, |ui| {
+                for s in 1..=3 {
+                    ui.selectable_value(&mut self.view.figure_scale, s, format!("{s}×"));
+                }
+            });
+        if self.saver.busy() {
+            ui.spinner();
+        }
+        if let Some(status) = &self.saver.status {
+            ui.small(status);
+        }
+    }
+
+    /// Lecture mode, its scale, and the controls and full-screen toggles.
+    fn presentation_ui(&mut self, ui: &mut egui::Ui) {
+        ui.checkbox(&mut self.view.lecture, "Lecture mode")
+            .on_hover_text("Light projector theme, large fonts, panels sized for 16:9 (F5)");
+        if self.view.lecture {
+            let mut scale = lecture::clamp_scale(self.view.lecture_scale);
+            // Applied when the drag ends: changing the zoom mid-drag would move the slider
+            // under the pointer.
+            let r = ui.add(
+                egui::Slider::new(&mut scale, panels::LECTURE_SCALE_RANGE)
+                    .step_by(0.1)
+                    .text("font scale"),
+            );
+            if r.drag_stopped() || (r.changed() && !r.dragged()) {
+                self.view.lecture_scale = scale;
+            }
+        }
+        let label = if self.view.controls_hidden {
+            "Show controls"
+        } else {
+            "Hide controls"
+        };
+        if ui.button(label).on_hover_text("F9").clicked() {
+            self.view.controls_hidden = !self.view.controls_hidden;
+        }
+        if ui.button("Full screen").on_hover_text("F11").clicked() {
+            let is_full = ui.ctx().input(|i| i.viewport().fullscreen.unwrap_or(false));
+            ui.ctx()
+                .send_viewport_cmd(egui::ViewportCommand::Fullscreen(!is_full));
         }
     }
 
@@ -418,13 +524,16 @@ impl eframe::App for SamplescopeApp {
         self.last_frame = Some(now);
         let ctx = ui.ctx().clone();
         self.shortcuts(&ctx);
+        lecture::apply_style(&ctx, &self.view, &mut self.applied_style);
         egui::Panel::top("samplescope-top").show(ui, |ui| self.top_bar(ui));
-        egui::Panel::left("samplescope-controls")
-            .resizable(true)
-            .default_size(300.0)
-            .show(ui, |ui| {
-                egui::ScrollArea::vertical().show(ui, |ui| self.controls(ui));
-            });
+        if !self.view.controls_hidden {
+            egui::Panel::left("samplescope-controls")
+                .resizable(true)
+                .default_size(300.0)
+                .show(ui, |ui| {
+                    egui::ScrollArea::vertical().show(ui, |ui| self.controls(ui));
+                });
+        }
         self.advance_motion(&ctx);
         self.handle_file_drops(&ctx, ui.available_rect_before_wrap());
         self.sync_engine();
@@ -438,28 +547,46 @@ impl eframe::App for SamplescopeApp {
         }
         if self.scene.panels.theorem {
             // Column-independent: its node is computed for column 0 only.
-            let result = self
-                .results
-                .first()
-                .and_then(|c| c.get(&NodeKind::Theorem));
+            let result = self.results.first().and_then(|c| c.get(&NodeKind::Theorem));
             egui::Panel::bottom("samplescope-theorem")
                 .resizable(true)
                 .default_size(460.0)
                 .show(ui, |ui| {
-                    self.theorem_panel
-                        .ui(ui, &mut self.scene.theorem, result)
+                    self.theorem_panel.ui(ui, &mut self.scene.theorem, result)
                 });
         }
         egui::CentralPanel::default().show(ui, |ui| {
-            panels::columns_ui(
-                ui,
-                &self.scene,
-                &self.results,
-                &mut self.view,
-                self.gpu,
-                &mut self.textures,
-            );
+            if self.view.lecture {
+                // Panels sized for a 16:9 projector frame, centred.
+                let frame = lecture::letterbox_16_9(ui.available_rect_before_wrap());
+                let mut child = ui.new_child(egui::UiBuilder::new().max_rect(frame));
+                panels::columns_ui(
+                    &mut child,
+                    &self.scene,
+                    &self.results,
+                    &mut self.view,
+                    self.gpu,
+                    &mut self.textures,
+                );
+            } else {
+                panels::columns_ui(
+                    ui,
+                    &self.scene,
+                    &self.results,
+                    &mut self.view,
+                    self.gpu,
+                    &mut self.textures,
+                );
+            }
         });
+        figures::shortcuts(&ctx, self.view.figure_scale);
+        let requests = figures::take_requests(&ctx);
+        if !requests.is_empty() {
+            let snapshot = self.figure_snapshot();
+            let dir = std::path::PathBuf::from(self.view.figure_dir.trim());
+            self.saver.start(&ctx, snapshot, requests, dir);
+        }
+        self.saver.poll(&ctx);
         if !self.engine.is_idle() {
             ctx.request_repaint_after(Duration::from_millis(30));
         }

@@ -75,7 +75,8 @@ pub fn clamp_scale(scale: f32) -> f32 {
     scale.clamp(*LECTURE_SCALE_RANGE.start(), *LECTURE_SCALE_RANGE.end())
 }
 
-/// The largest rectangle of aspect 16:9 centred in `rect`.
+/// The largest rectangle of aspect 16:9 in `rect`, centred horizontally and at the top (so the
+/// panels stay under the top bar rather than floating mid-screen).
 pub fn letterbox_16_9(rect: Rect) -> Rect {
     const ASPECT: f32 = 16.0 / 9.0;
     let (w, h) = (rect.width().max(0.0), rect.height().max(0.0));
@@ -84,7 +85,10 @@ pub fn letterbox_16_9(rect: Rect) -> Rect {
     } else {
         Vec2::new(w, w / ASPECT)
     };
-    Rect::from_center_size(rect.center(), size)
+    Rect::from_min_size(
+        egui::Pos2::new(rect.center().x - size.x / 2.0, rect.top()),
+        size,
+    )
 }
 
 #[cfg(test)]

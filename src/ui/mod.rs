@@ -3,7 +3,9 @@
 
 pub mod app;
 pub mod dropped;
+pub mod figures;
 pub mod gpu;
+pub mod lecture;
 pub mod panels;
 pub mod playback;
 pub mod theorem;

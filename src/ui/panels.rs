@@ -1,7 +1,9 @@
 //! The panels of a column. Each takes plain data computed by the engine and draws it.
 
 use super::app::ColumnResults;
+use super::figures;
 use super::gpu::{self, Colormap, DisplayRange, FloatImage};
+use crate::export::figure::PanelKind;
 use crate::scene::graph::{Evaluator, ImageData, NodeKind, NodeResult, NodeValue};
 use crate::scene::{Panels, Scene};
 use eframe::egui::{self, Color32, Pos2, Rect, Stroke, Vec2};
@@ -45,6 +47,16 @@ pub struct ViewState {
     pub prefix: Option<usize>,
     /// Show wall times next to the panels (off for reproducible figures and snapshots).
     pub show_timings: bool,
+    /// Lecture mode: light projector theme, large fonts, content letterboxed to 16:9.
+    pub lecture: bool,
+    /// Zoom factor of everything in lecture mode (fonts, widgets, plots).
+    pub lecture_scale: f32,
+    /// The controls side panel is hidden (F9).
+    pub controls_hidden: bool,
+    /// Folder the figures are saved into.
+    pub figure_dir: String,
+    /// Scale of PNG figures saved by Ctrl+S (1..=3).
+    pub figure_scale: u32,
 }
 
 impl Default for ViewState {
@@ -63,9 +75,19 @@ impl Default for ViewState {
             elementary_k: None,
             prefix: None,
             show_timings: true,
+            lecture: false,
+            lecture_scale: LECTURE_SCALE_DEFAULT,
+            controls_hidden: false,
+            figure_dir: "figures".into(),
+            figure_scale: 2,
         }
     }
 }
+
+/// Default zoom factor of lecture mode.
+pub const LECTURE_SCALE_DEFAULT: f32 = 1.6;
+/// Range of the lecture-mode zoom factor.
+pub const LECTURE_SCALE_RANGE: std::ops::RangeInclusive<f32> = 1.0..=3.0;
 
 /// CPU textures for the fallback path, keyed per panel.
 #[derive(Default)]
@@ -145,12 +167,15 @@ pub fn columns_ui(
                 ui.push_id(ci, |ui| {
                     ui.allocate_ui(Vec2::new(width, ui.available_height()), |ui| {
                         ui.vertical(|ui| {
-                            ui.strong(format!(
-                                "{} · N = {} · seed {}",
-                                column.title(),
-                                scene.n,
-                                column.seed
-                            ));
+                            ui.horizontal(|ui| {
+                                ui.strong(format!(
+                                    "{} · N = {} · seed {}",
+                                    column.title(),
+                                    scene.n,
+                                    column.seed
+                                ));
+                                figures::column_menu_ui(ui, ci);
+                            });
                             let mut shown: Vec<u8> = Vec::new();
                             if scene.panels.pattern {
                                 shown.push(0);
@@ -167,22 +192,43 @@ pub fn columns_ui(
                             for row in shown.chunks(per_row) {
                                 ui.horizontal_top(|ui| {
                                     for &panel in row {
-                                        ui.allocate_ui(Vec2::new(side + 8.0, 10.0), |ui| {
-                                            ui.vertical(|ui| match panel {
-                                                0 => pattern_panel(
-                                                    ui, ci, scene, col, view, gpu, side,
-                                                ),
-                                                1 => spectrum_panel(
-                                                    ui, ci, scene, col, view, gpu, textures, side,
-                                                ),
-                                                2 => zoneplate_panel(
-                                                    ui, ci, scene, col, view, gpu, textures, side,
-                                                ),
-                                                _ => filter_panel(
-                                                    ui, ci, col, view, gpu, textures, side,
-                                                ),
+                                        let kind = match panel {
+                                            0 => PanelKind::Pattern,
+                                            1 => PanelKind::Spectrum,
+                                            2 => match view.zone_image {
+                                                ZoneImage::Reconstruction => {
+                                                    PanelKind::Reconstruction
+                                                }
+                                                ZoneImage::Reference => PanelKind::Reference,
+                                                ZoneImage::Error => PanelKind::Error,
+                                            },
+                                            _ => PanelKind::Response,
+                                        };
+                                        let shown =
+                                            ui.allocate_ui(Vec2::new(side + 8.0, 10.0), |ui| {
+                                                ui.vertical(|ui| match panel {
+                                                    0 => pattern_panel(
+                                                        ui, ci, scene, col, view, gpu, side,
+                                                    ),
+                                                    1 => spectrum_panel(
+                                                        ui, ci, scene, col, view, gpu, textures,
+                                                        side,
+                                                    ),
+                                                    2 => zoneplate_panel(
+                                                        ui, ci, scene, col, view, gpu, textures,
+                                                        side,
+                                                    ),
+                                                    _ => filter_panel(
+                                                        ui, ci, col, view, gpu, textures, side,
+                                                    ),
+                                                });
                                             });
-                                        });
+                                        figures::register_panel(
+                                            ui.ctx(),
+                                            shown.response.rect,
+                                            ci,
+                                            kind,
+                                        );
                                     }
                                 });
                             }
@@ -210,7 +256,10 @@ fn pattern_panel(
     gpu: bool,
     side: f32,
 ) {
-    ui.label("Sample pattern");
+    ui.horizontal_wrapped(|ui| {
+        ui.label("Sample pattern");
+        figures::panel_menu_ui(ui, ci, &[PanelKind::Pattern]);
+    });
     let (rect, _) = ui.allocate_exact_size(Vec2::splat(side), egui::Sense::hover());
     let painter = ui.painter_at(rect);
     painter.rect_filled(rect, 0.0, Color32::WHITE);
@@ -453,10 +502,13 @@ fn spectrum_panel(
     textures: &mut TextureCache,
     side: f32,
 ) {
-    ui.label(format!(
-        "Periodogram {}² (log10 P, centred)",
-        scene.spectrum.size
-    ));
+    ui.horizontal_wrapped(|ui| {
+        ui.label(format!(
+            "Periodogram {}² (log10 P, centred)",
+            scene.spectrum.size
+        ));
+        figures::panel_menu_ui(ui, ci, &[PanelKind::Spectrum, PanelKind::Raps]);
+    });
     let Some(r) = result_of(col, NodeKind::Spectrum) else {
         ui.spinner();
         return;
@@ -500,7 +552,7 @@ fn spectrum_panel(
                 .join(" · "),
         );
     }
-    let h = (side * 0.3).max(60.0);
+    let h = (side * 0.3).max(80.0);
     Plot::new(("raps", ci))
         .height(h)
         .width(side)
@@ -514,13 +566,13 @@ fn spectrum_panel(
             p.hline(egui_plot::HLine::new("white noise", 1.0).color(Color32::GRAY));
         });
     Plot::new(("aniso", ci))
-        .height(h * 0.7)
+        .height((h * 0.7).max(70.0))
         .width(side)
         .allow_drag(false)
         .allow_zoom(false)
         .allow_scroll(false)
         .x_axis_label("|k|")
-        .y_axis_label("anisotropy dB")
+        .y_axis_label("aniso. dB")
         .show(ui, |p| {
             p.line(Line::new("anisotropy", d.anisotropy.clone()));
         });
@@ -537,11 +589,20 @@ fn zoneplate_panel(
     textures: &mut TextureCache,
     side: f32,
 ) {
-    ui.horizontal(|ui| {
+    ui.horizontal_wrapped(|ui| {
         ui.label(format!("{} {}²", scene.signal.name(), scene.recon.size));
         ui.selectable_value(&mut view.zone_image, ZoneImage::Reconstruction, "recon");
         ui.selectable_value(&mut view.zone_image, ZoneImage::Reference, "reference");
         ui.selectable_value(&mut view.zone_image, ZoneImage::Error, "error");
+        figures::panel_menu_ui(
+            ui,
+            ci,
+            &[
+                PanelKind::Reconstruction,
+                PanelKind::Reference,
+                PanelKind::Error,
+            ],
+        );
     });
     if !scene.effects.reconstruction {
         ui.small("reconstruction effect is off");
@@ -636,9 +697,10 @@ fn filter_panel(
     textures: &mut TextureCache,
     side: f32,
 ) {
-    ui.horizontal(|ui| {
+    ui.horizontal_wrapped(|ui| {
         ui.label("Filter");
         ui.checkbox(&mut view.response_db, "dB");
+        figures::panel_menu_ui(ui, ci, &[PanelKind::Kernel, PanelKind::Response]);
     });
     let Some(r) = result_of(col, NodeKind::Response) else {
         ui.spinner();
