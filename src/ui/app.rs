@@ -51,6 +51,7 @@ pub struct SamplescopeApp {
 /// Keys under which eframe persists the window's state.
 const STORAGE_SCENE: &str = "samplescope.scene";
 const STORAGE_VIEW: &str = "samplescope.view";
+const STORAGE_SCENE_NAME: &str = "samplescope.scene_name";
 
 impl SamplescopeApp {
     /// Creates the app; installs the wgpu pipelines when a wgpu renderer is present. Opens
@@ -92,7 +93,9 @@ impl SamplescopeApp {
                 if let Some(scene) = eframe::get_value::<Scene>(storage, STORAGE_SCENE) {
                     if scene.validate("saved state").is_ok() {
                         app.scene = scene;
-                        app.scene_name = "restored".into();
+                        // The name the scene had when it was saved (figure file names use it).
+                        app.scene_name = eframe::get_value::<String>(storage, STORAGE_SCENE_NAME)
+                            .unwrap_or_else(|| "restored".into());
                     }
                 }
             }
@@ -595,5 +598,6 @@ impl eframe::App for SamplescopeApp {
     fn save(&mut self, storage: &mut dyn eframe::Storage) {
         eframe::set_value(storage, STORAGE_SCENE, &self.scene);
         eframe::set_value(storage, STORAGE_VIEW, &self.view);
+        eframe::set_value(storage, STORAGE_SCENE_NAME, &self.scene_name);
     }
 }
