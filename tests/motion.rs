@@ -10,23 +10,25 @@ use samplescope::scene::{Motion, ReconMode, Scene, SceneError};
 
 /// A small scene with every panel on and a drifting zone plate.
 fn moving_scene() -> Scene {
-    let mut s = Scene::default();
-    s.n = 1024;
+    let mut s = Scene {
+        n: 1024,
+        signal: Signal::ZonePlate(ZonePlate {
+            k: 200.0,
+            ..ZonePlate::default()
+        }),
+        motion: Some(Motion {
+            velocity_x: 0.02,
+            velocity_y: 0.01,
+            angular_velocity: 5.0,
+            frame_rate: 24.0,
+            ..Motion::default()
+        }),
+        ..Scene::default()
+    };
     s.recon.size = 64;
     s.recon.mode = ReconMode::Scattered;
     s.spectrum.size = 32;
     s.effects.error = false;
-    s.signal = Signal::ZonePlate(ZonePlate {
-        k: 200.0,
-        ..ZonePlate::default()
-    });
-    s.motion = Some(Motion {
-        velocity_x: 0.02,
-        velocity_y: 0.01,
-        angular_velocity: 5.0,
-        frame_rate: 24.0,
-        ..Motion::default()
-    });
     s
 }
 
