@@ -331,13 +331,11 @@ fn ideal_sinc_reconstruction_recovers_band_limited_signal_above_nyquist() {
                 "{} x={x}: error {err:e} > bound {bound:e}",
                 filter.name()
             );
-            // The ideal low-pass: truncation only; the truncated sinc also carries its DC gain.
-            let tol = if matches!(filter, Filter::LowPass(_)) {
-                1e-4
-            } else {
-                1e-3
-            };
-            assert!(err < tol, "{} x={x}: {err:e}", filter.name());
+            // The ideal low-pass (H(0) = 1): truncation only, below 1e-4 here. The truncated
+            // sinc's own DC gain H(0) ≈ 0.998 dominates its bound (≈ 2e-3 near x = 0).
+            if matches!(filter, Filter::LowPass(_)) {
+                assert!(err < 1e-4, "{} x={x}: {err:e}", filter.name());
+            }
         }
     }
 }
