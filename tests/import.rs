@@ -225,3 +225,71 @@ fn bad_points_in_scenes_name_column_and_line() {
         Err(SceneError::Invalid { .. })
     ));
 }
+
+mod ui {
+    //! Import in the real app (egui_kittest, no rendering: no GPU needed): an error names the
+    //! line and offers the normalisation, which retries the same file.
+
+    use super::data;
+    use egui_kittest::kittest::Queryable;
+    use egui_kittest::Harness;
+    use samplescope::ui::SamplescopeApp;
+
+    fn harness() -> Harness<'static, SamplescopeApp> {
+        let mut h = Harness::builder()
+            .with_size(eframe::egui::Vec2::new(1400.0, 1000.0))
+            .build_eframe(|cc| {
+                let mut app = SamplescopeApp::new(cc, None);
+                app.view.show_timings = false;
+                app
+            });
+        h.step();
+        h
+    }
+
+    #[test]
+    fn out_of_range_file_shows_the_line_and_normalise_retries() {
+        let mut h = harness();
+        h.state_mut()
+            .import_points(0, &data("outside-line-5.txt"), false);
+        h.step();
+        h.get_by_label_contains("line 5");
+        assert!(h.state().scene.columns[0].points.is_none());
+        h.get_by_label("Normalise to bounding box").click();
+        h.step();
+        h.step();
+        let imp = h.state().scene.columns[0].points.clone().expect("imported");
+        assert_eq!(imp.points.len(), 5);
+        assert!(imp.normalize);
+        assert!(h.query_by_label("Normalise to bounding box").is_none());
+        h.get_by_label_contains("outside-line-5.txt (5 points)");
+    }
+
+    #[test]
+    fn malformed_file_has_no_normalise_button() {
+        let mut h = harness();
+        h.state_mut()
+            .import_points(0, &data("malformed-line-4.csv"), false);
+        h.step();
+        h.get_by_label_contains("line 4");
+        assert!(h.query_by_label("Normalise to bounding box").is_none());
+    }
+
+    #[test]
+    fn drop_target_is_the_column_under_the_pointer() {
+        let mut h = harness();
+        h.state_mut().add_column();
+        h.state_mut().add_column();
+        let app = h.state();
+        let central = eframe::egui::Rect::from_min_size(
+            eframe::egui::pos2(300.0, 50.0),
+            eframe::egui::vec2(900.0, 800.0),
+        );
+        assert_eq!(app.column_at(central, 310.0), 0);
+        assert_eq!(app.column_at(central, 899.0), 1);
+        assert_eq!(app.column_at(central, 1199.0), 2);
+        // Outside the columns: the nearest one.
+        assert_eq!(app.column_at(central, 10.0), 0);
+        assert_eq!(app.column_at(central, 1500.0), 2);
+    }
+}

@@ -303,3 +303,110 @@ fn shipped_motion_scenes_animate() {
     }
     assert!(found >= 1, "no shipped scene has motion");
 }
+
+mod ui {
+    //! The transport controls in the real app (egui_kittest, no rendering: no GPU needed).
+
+    use egui_kittest::kittest::Queryable;
+    use egui_kittest::Harness;
+    use samplescope::scene::graph::NodeKind;
+    use samplescope::scene::{Scene, BUILTIN};
+    use samplescope::ui::SamplescopeApp;
+    use std::time::{Duration, Instant};
+
+    fn harness_with(name: &str) -> Harness<'static, SamplescopeApp> {
+        let (_, text) = BUILTIN.iter().find(|(n, _)| *n == name).unwrap();
+        let mut scene = Scene::from_ron(text, name).unwrap();
+        scene.recon.size = scene.recon.size.min(128);
+        scene.spectrum.size = scene.spectrum.size.min(64);
+        let mut h = Harness::builder()
+            .with_size(eframe::egui::Vec2::new(1400.0, 1000.0))
+            .build_eframe(move |cc| {
+                let mut app = SamplescopeApp::new(cc, None);
+                app.view.show_timings = false;
+                app.set_scene(scene.clone(), name.to_string());
+                app
+            });
+        settle(&mut h);
+        h
+    }
+
+    fn settle(h: &mut Harness<'static, SamplescopeApp>) {
+        let deadline = Instant::now() + Duration::from_secs(120);
+        loop {
+            h.step();
+            let app = h.state();
+            if app.engine.is_idle() && app.results.len() == app.scene.columns.len() {
+                break;
+            }
+            assert!(Instant::now() < deadline, "engine did not finish");
+            std::thread::sleep(Duration::from_millis(5));
+        }
+        h.step();
+    }
+
+    fn count(h: &Harness<'static, SamplescopeApp>, kind: NodeKind) -> usize {
+        h.state().engine.evaluator().count(kind)
+    }
+
+    #[test]
+    fn still_scene_has_no_transport_and_computes_nothing_per_frame() {
+        let mut h = harness_with("default.ron");
+        assert!(h.query_by_label("Play").is_none());
+        assert!(h.query_by_label("Step forward").is_none());
+        let before = h.state().engine.evaluator().counts();
+        for _ in 0..30 {
+            h.step();
+        }
+        assert_eq!(h.state().engine.evaluator().counts(), before);
+    }
+
+    #[test]
+    fn step_forward_recomputes_samples_but_not_points() {
+        let mut h = harness_with("motion-zone-plate-drift.ron");
+        let cols = h.state().scene.columns.len();
+        h.get_by_label("Play");
+        h.get_by_label("Step back");
+        let points = count(&h, NodeKind::Points);
+        let samples = count(&h, NodeKind::Samples);
+        // Paused: nothing per frame.
+        for _ in 0..10 {
+            h.step();
+        }
+        assert_eq!(count(&h, NodeKind::Samples), samples);
+        h.get_by_label("Step forward").click();
+        h.step();
+        settle(&mut h);
+        assert_eq!(h.state().motion_frame(), 1);
+        h.get_by_label_contains("t = 0.042 s · frame 1 at 24 fps");
+        assert_eq!(count(&h, NodeKind::Points), points);
+        assert_eq!(count(&h, NodeKind::Samples), samples + cols);
+        assert_eq!(count(&h, NodeKind::Reconstruction), samples + cols);
+        // Back to frame 0: every node is cached.
+        h.get_by_label("Step back").click();
+        h.step();
+        settle(&mut h);
+        assert_eq!(h.state().motion_frame(), 0);
+        assert_eq!(count(&h, NodeKind::Samples), samples + cols);
+    }
+
+    #[test]
+    fn play_advances_frames_until_paused() {
+        let mut h = harness_with("motion-grating-strobe.ron");
+        h.get_by_label("Play").click();
+        let deadline = Instant::now() + Duration::from_secs(60);
+        while h.state().motion_frame() < 3 {
+            h.step();
+            std::thread::sleep(Duration::from_millis(10));
+            assert!(Instant::now() < deadline, "playback did not advance");
+        }
+        h.get_by_label("Pause").click();
+        h.step();
+        let frame = h.state().motion_frame();
+        for _ in 0..20 {
+            h.step();
+            std::thread::sleep(Duration::from_millis(5));
+        }
+        assert_eq!(h.state().motion_frame(), frame);
+    }
+}

@@ -34,6 +34,11 @@ impl MotionClock {
 }
 
 impl SamplescopeApp {
+    /// The frame shown (0 for a scene without motion).
+    pub fn motion_frame(&self) -> i64 {
+        self.motion_clock.frame
+    }
+
     /// The scene of the frame shown, when the scene moves and the frame is not the first
     /// (`None`: the scene itself is shown).
     pub fn moved_scene(&self) -> Option<Scene> {
