@@ -263,6 +263,11 @@ mod ui {
         assert!(imp.normalize);
         assert!(h.query_by_label("Normalise to bounding box").is_none());
         h.get_by_label_contains("outside-line-5.txt (5 points)");
+        // Back to the pattern.
+        h.get_by_label("Use the pattern").click();
+        h.step();
+        h.step();
+        assert!(h.state().scene.columns[0].points.is_none());
     }
 
     #[test]

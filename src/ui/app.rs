@@ -404,6 +404,7 @@ impl SamplescopeApp {
                         remove = Some(ci);
                     }
                 });
+                super::dropped::imported_column_ui(ui, column);
                 pattern_ui(ui, column);
             });
             ui.separator();

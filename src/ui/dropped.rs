@@ -133,3 +133,27 @@ impl SamplescopeApp {
         });
     }
 }
+
+/// For a column showing imported points: where they come from, and a button that goes back to
+/// the column's pattern (drawn above the pattern controls, which apply again after it).
+pub fn imported_column_ui(ui: &mut egui::Ui, column: &mut crate::scene::Column) {
+    let Some(imp) = &column.points else {
+        return;
+    };
+    let text = format!(
+        "Imported: {} ({} points{})",
+        imp.label(),
+        imp.points.len(),
+        if imp.normalize { ", normalised" } else { "" }
+    );
+    ui.horizontal_wrapped(|ui| {
+        ui.label(text);
+        if ui
+            .small_button("Use the pattern")
+            .on_hover_text("Drop the imported points and show the pattern below")
+            .clicked()
+        {
+            column.points = None;
+        }
+    });
+}
