@@ -25,6 +25,7 @@ mod composite;
 mod csv;
 mod draw;
 mod svg;
+mod text;
 
 use super::ExportError;
 use crate::scene::graph::{

@@ -47,7 +47,7 @@ fn caption(
         figure: "composite",
         message: e.to_string(),
     };
-    let root = BitMapBackend::with_buffer(buf, (width, height)).into_drawing_area();
+    let root = super::draw::crisp_bitmap(buf, (width, height))?.into_drawing_area();
     let style = ("sans-serif", px)
         .into_font()
         .color(&BLACK)

@@ -6,6 +6,7 @@
 //! [`PanelKind::base_size`] the plotting area of the pattern and image figures is a
 //! 400 × 400 square and that of the line plots 560 × 400.
 
+use super::text::CrispText;
 use super::{figure_title, ColumnData, FigureColormap, FigureContext, PanelKind, Rgb};
 use crate::export::ExportError;
 use crate::scene::graph::ImageData;
@@ -74,6 +75,21 @@ pub(super) fn ensure_font() -> Result<(), ExportError> {
     }
 }
 
+/// A bitmap backend over an RGB buffer whose text is drawn by [`CrispText`].
+pub(super) fn crisp_bitmap(
+    buf: &mut [u8],
+    size: (u32, u32),
+) -> Result<CrispText<BitMapBackend<'_>>, ExportError> {
+    CrispText::new(
+        BitMapBackend::with_buffer(buf, size),
+        epaint_default_fonts::UBUNTU_LIGHT,
+    )
+    .ok_or_else(|| ExportError::Draw {
+        figure: "font",
+        message: "the built-in font could not be parsed".into(),
+    })
+}
+
 /// Scaled lengths and styles.
 #[derive(Clone, Copy)]
 struct Look {
@@ -129,7 +145,7 @@ pub(crate) fn render_bitmap(
     let (w, h) = (bw * scale, bh * scale);
     let mut buf = vec![255u8; (w as usize) * (h as usize) * 3];
     {
-        let root = BitMapBackend::with_buffer(&mut buf, (w, h)).into_drawing_area();
+        let root = crisp_bitmap(&mut buf, (w, h))?.into_drawing_area();
         draw(&root, kind, ctx, data, Look { s: scale }, &mut Sink::Bitmap)?;
         root.present().map_err(|e| draw_err(kind, e))?;
     }
@@ -619,11 +635,12 @@ fn padded(v: impl Iterator<Item = f64>, include: &[f64]) -> Range<f64> {
 
 fn legend_box<'a, DB: DrawingBackend + 'a>(
     ch: &mut ChartContext<'a, DB, Cartesian2d<RangedCoordf64, RangedCoordf64>>,
+    position: SeriesLabelPosition,
     look: Look,
     kind: PanelKind,
 ) -> Result<(), ExportError> {
     ch.configure_series_labels()
-        .position(SeriesLabelPosition::UpperRight)
+        .position(position)
         .margin(look.i(8))
         .legend_area_size(look.i(26))
         .label_font(look.text(TICK_PX))
@@ -671,7 +688,7 @@ fn raps<DB: DrawingBackend>(
         .map_err(de)?
         .label("RAPS")
         .legend(move |(x, y)| PathElement::new([(x, y), (x + look.i(20), y)], line));
-    legend_box(&mut ch, look, kind)
+    legend_box(&mut ch, SeriesLabelPosition::LowerRight, look, kind)
 }
 
 fn kernel<DB: DrawingBackend>(
@@ -712,7 +729,7 @@ fn kernel<DB: DrawingBackend>(
         .map_err(de)?
         .label(name)
         .legend(move |(x, y)| PathElement::new([(x, y), (x + look.i(20), y)], line));
-    legend_box(&mut ch, look, kind)
+    legend_box(&mut ch, SeriesLabelPosition::UpperRight, look, kind)
 }
 
 /// The filter's name as the legend shows it (the `kind` tag of its RON text).
@@ -786,7 +803,7 @@ fn response<DB: DrawingBackend>(
         .map_err(de)?
         .label(format!("{}, |H(ω)|", filter_name(ctx)))
         .legend(move |(x, y)| PathElement::new([(x, y), (x + look.i(20), y)], line));
-    legend_box(&mut ch, look, kind)
+    legend_box(&mut ch, SeriesLabelPosition::UpperRight, look, kind)
 }
 
 fn convergence<DB: DrawingBackend>(
