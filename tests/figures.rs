@@ -27,8 +27,18 @@ const SCENE: &str = r#"(
     effects: (reconstruction: true, error: true, convergence: true, statistics: false),
 )"#;
 
+/// The test scene with every figure, the convergence curve included (its evaluation is the
+/// slowest part: 341 samples per pixel over 64²).
 fn scene() -> Scene {
     Scene::from_ron(SCENE, "figures.ron").expect("test scene parses")
+}
+
+/// The test scene without the cost view (no convergence curve): fast to evaluate.
+fn quick_scene() -> Scene {
+    let mut s = scene();
+    s.panels.cost = false;
+    s.effects.convergence = false;
+    s
 }
 
 /// Evaluates the scene and returns each column's context and data.
@@ -99,6 +109,11 @@ fn every_panel_png_decodes_at_base_size_times_scale() {
     for kind in kinds {
         for scale in [1, 2] {
             let bytes = panel_png(kind, ctx, data, scale).unwrap();
+            assert_eq!(
+                bytes,
+                panel_png(kind, ctx, data, scale).unwrap(),
+                "{kind:?} twice"
+            );
             let (info, pixels, _) = decode(&bytes);
             let (bw, bh) = kind.base_size();
             assert_eq!(
@@ -116,7 +131,7 @@ fn every_panel_png_decodes_at_base_size_times_scale() {
 
 #[test]
 fn png_metadata_names_scene_pattern_n_seed_filter_signal_and_scale() {
-    let scene = scene();
+    let scene = quick_scene();
     let cols = columns(&scene);
     let (ctx, data) = &cols[0];
     let bytes = panel_png(PanelKind::Spectrum, ctx, data, 2).unwrap();
@@ -144,7 +159,7 @@ fn png_metadata_names_scene_pattern_n_seed_filter_signal_and_scale() {
 
 #[test]
 fn svg_has_axes_text_metadata_and_embedded_images() {
-    let scene = scene();
+    let scene = quick_scene();
     let cols = columns(&scene);
     let (ctx, data) = &cols[1];
     let pattern = panel_svg(PanelKind::Pattern, ctx, data, 1).unwrap();
@@ -271,7 +286,7 @@ fn csv_round_trips_the_drawn_numbers() {
 
 #[test]
 fn same_inputs_give_byte_identical_png_and_svg() {
-    let scene = scene();
+    let scene = quick_scene();
     let a = columns(&scene);
     let b = columns(&scene); // a fresh evaluation of the same scene
     for kind in PanelKind::available(&scene) {
@@ -299,7 +314,7 @@ fn same_inputs_give_byte_identical_png_and_svg() {
 
 #[test]
 fn scale_out_of_range_is_a_typed_error_naming_the_field_and_range() {
-    let scene = scene();
+    let scene = quick_scene();
     let cols = columns(&scene);
     let (ctx, data) = &cols[0];
     for bad in [0, SCALES.end() + 1, 9] {
@@ -320,7 +335,7 @@ fn scale_out_of_range_is_a_typed_error_naming_the_field_and_range() {
 
 #[test]
 fn missing_or_empty_data_is_an_error_naming_the_figure() {
-    let scene = scene();
+    let scene = quick_scene();
     let ctx = FigureContext::new(&scene, 0, "x").unwrap();
     let none = ColumnData::default();
     for kind in PanelKind::ALL {
@@ -356,7 +371,7 @@ fn plot_centre(pixels: &[u8]) -> [u8; 3] {
 
 #[test]
 fn images_and_points_are_drawn_where_their_data_says() {
-    let scene = scene();
+    let scene = quick_scene();
     let ctx = FigureContext::new(&scene, 0, "x").unwrap();
     let mut colours = Vec::new();
     for level in [0.0f32, 1.0] {
@@ -402,7 +417,7 @@ fn images_and_points_are_drawn_where_their_data_says() {
 
 #[test]
 fn composites_put_every_panel_of_every_column_side_by_side() {
-    let scene = scene();
+    let scene = quick_scene();
     let cols = columns(&scene);
     let kinds = PanelKind::composite(&scene);
     assert_eq!(
@@ -433,7 +448,7 @@ fn composites_put_every_panel_of_every_column_side_by_side() {
 
 #[test]
 fn file_names_carry_scene_pattern_n_seed_kind_and_scale() {
-    let scene = scene();
+    let scene = quick_scene();
     let ctx = FigureContext::new(&scene, 0, "zone-plate-128-to-512").unwrap();
     assert_eq!(
         panel_file_name(PanelKind::Spectrum, &ctx, Some(2), "png"),
