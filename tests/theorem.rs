@@ -735,3 +735,75 @@ fn theorem_scenes_load_show_the_panel_and_separate_the_errors() {
     let e = Scene::from_ron(bad, "bad.ron").unwrap_err().to_string();
     assert!(e.contains("theorem.rate"), "{e}");
 }
+
+/// The panel driven through its labels (no rendering: accesskit only, no GPU needed).
+#[test]
+fn panel_controls_edit_the_settings_and_show_both_errors() {
+    use egui_kittest::kittest::Queryable;
+    use samplescope::scene::graph::{NodeResult, NodeValue};
+    use samplescope::ui::theorem::TheoremPanel;
+    use std::sync::Arc;
+
+    struct State {
+        panel: TheoremPanel,
+        settings: TheoremSettings,
+        result: Option<Arc<NodeResult>>,
+    }
+    let settings = TheoremSettings::default();
+    let view = compute_view(&settings).unwrap();
+    let result = Arc::new(NodeResult {
+        value: Ok(NodeValue::Theorem(Arc::new(view))),
+        wall: std::time::Duration::ZERO,
+        accuracy: None,
+    });
+    let state = State {
+        panel: TheoremPanel::default(),
+        settings,
+        result: Some(result),
+    };
+    let mut h = egui_kittest::Harness::builder()
+        .with_size(eframe::egui::Vec2::new(1400.0, 900.0))
+        .build_ui_state(
+            |ui, s: &mut State| {
+                let State {
+                    panel,
+                    settings,
+                    result,
+                } = s;
+                panel.ui(ui, settings, result.as_ref());
+            },
+            state,
+        );
+    h.run();
+    // The two aliasing errors side by side, and the controls by their labels.
+    for label in ["pre-aliasing", "post-aliasing", "smoothing"] {
+        h.get_by_label(label);
+    }
+    use eframe::egui::accesskit::Role;
+    for label in [
+        "sampling rate f_s",
+        "signal radius",
+        "scale a",
+        "shift s",
+        "van der Corput rows n",
+    ] {
+        h.get_by_role_and_label(Role::Slider, label);
+    }
+    h.get_by_role_and_label(Role::ComboBox, "Signal");
+    h.get_by_role_and_label(Role::ComboBox, "Reconstruction filter");
+    h.get_by_role_and_label(Role::ComboBox, "Pair");
+    // The table shows row i = 6 of the lecture: 110 → 0.011.
+    h.get_by_label("0.011");
+    // Controls edit the settings (the engine recomputes from them).
+    h.get_by_label("Show Re/Im of the transform")
+        .click_accesskit();
+    h.run();
+    assert!(h.state().panel.pair_re_im);
+    assert_eq!(h.state().settings, TheoremSettings::default());
+    h.get_by_role_and_label(Role::ComboBox, "Signal")
+        .click_accesskit();
+    h.run();
+    h.get_by_label("gaussian").click_accesskit();
+    h.run();
+    assert_eq!(h.state().settings.signal, Signal1D::Gaussian { sigma: 0.3 });
+}

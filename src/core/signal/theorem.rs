@@ -808,10 +808,10 @@ impl PairKind {
     /// Display name.
     pub fn name(self) -> &'static str {
         match self {
-            PairKind::Box => "box ↔ sinc",
-            PairKind::Tent => "tent ↔ sinc²",
-            PairKind::Gaussian => "Gaussian ↔ Gaussian",
-            PairKind::Shah => "shah ↔ shah",
+            PairKind::Box => "box <-> sinc",
+            PairKind::Tent => "tent <-> sinc²",
+            PairKind::Gaussian => "Gaussian <-> Gaussian",
+            PairKind::Shah => "shah <-> shah",
         }
     }
 }
