@@ -279,16 +279,14 @@ pub fn column_nodes(scene: &Scene, c: usize) -> Vec<(NodeKey, Job)> {
     }
     // Column-independent: keyed by its settings alone, listed for column 0 only.
     if panels.theorem && c == 0 {
-        out.push((
-            key_of(NodeKind::Theorem, &scene.theorem, &[]),
-            Job::Theorem,
-        ));
+        out.push((key_of(NodeKind::Theorem, &scene.theorem, &[]), Job::Theorem));
     }
     out
 }
 
 fn theorem(scene: &Scene) -> Output {
-    let v = crate::core::signal::theorem::compute_view(&scene.theorem).map_err(|e| e.to_string())?;
+    let v =
+        crate::core::signal::theorem::compute_view(&scene.theorem).map_err(|e| e.to_string())?;
     let e = &v.errors;
     let accuracy = Some(format!(
         "band ±{:.3} cycles/unit, tail ≤ {:.1e}",
