@@ -298,3 +298,16 @@ mod ui {
         assert_eq!(app.column_at(central, 1500.0), 2);
     }
 }
+
+/// `--normalize` only makes sense with `--points`: the command line refuses it alone (exit 2)
+/// without opening a window.
+#[test]
+fn cli_normalize_requires_points() {
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_samplescope"))
+        .arg("--normalize")
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("--points"), "{err}");
+}
