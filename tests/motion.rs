@@ -391,6 +391,15 @@ mod ui {
     }
 
     #[test]
+    fn switching_to_a_signal_that_cannot_move_is_reported() {
+        let mut h = harness_with("motion-zone-plate-drift.ron");
+        h.state_mut().scene.signal =
+            samplescope::core::signal::Signal::Checkerboard(Default::default());
+        h.step();
+        h.get_by_label_contains("checkerboard signal cannot move");
+    }
+
+    #[test]
     fn play_advances_frames_until_paused() {
         let mut h = harness_with("motion-grating-strobe.ron");
         h.get_by_label("Play").click();

@@ -136,6 +136,11 @@ impl SamplescopeApp {
                 ));
             }
             ui.label(readout);
+            // The signal can be switched in the controls to one that cannot move: say so
+            // (the still scene is shown meanwhile).
+            if let Err(e) = crate::scene::Motion::check_signal(&self.scene.signal) {
+                ui.colored_label(egui::Color32::from_rgb(200, 40, 40), e.to_string());
+            }
         });
     }
 }
