@@ -3,8 +3,9 @@
 
 use samplescope::core::cancel::Cancel;
 use samplescope::export::figure::{
-    column_png, comparison_png, panel_csv, panel_file_name, panel_png, panel_rgba, panel_svg,
-    ColumnData, FigureContext, PanelKind, SCALES,
+    column_png, column_size, comparison_png, comparison_size, panel_csv, panel_file_name,
+    panel_png, panel_rgba, panel_svg, ColumnData, FigureContext, PanelKind, MAX_COMPOSITE_PIXELS,
+    SCALES,
 };
 use samplescope::export::ExportError;
 use samplescope::scene::graph::{Evaluator, ImageData, NodeKind, NodeResult, PointsData};
@@ -438,6 +439,17 @@ fn composites_put_every_panel_of_every_column_side_by_side() {
     assert_eq!(meta(&text, "seed"), "7");
     let (info, _, text) = decode(&comparison_png(&kinds, &cols, 2).unwrap());
     assert_eq!(
+        comparison_size(&kinds, 2, 2),
+        (info.width as u64, info.height as u64)
+    );
+    assert_eq!(column_size(&kinds, 1), (width as u64, 510 + 36));
+    // Eight columns of five figures at scale 4 exceed the limit: refused, not allocated.
+    let (w, h) = comparison_size(&kinds, 8, 4);
+    assert!(w * h > MAX_COMPOSITE_PIXELS);
+    let many: Vec<_> = (0..8).map(|_| cols[0].clone()).collect();
+    let e = comparison_png(&kinds, &many, 4).unwrap_err();
+    assert!(matches!(e, ExportError::TooLarge { .. }), "{e:?}");
+    assert_eq!(
         (info.width, info.height),
         (2 * width, 2 * (44 + 2 * (510 + 36)))
     );
@@ -458,5 +470,9 @@ fn file_names_carry_scene_pattern_n_seed_kind_and_scale() {
     assert_eq!(
         panel_file_name(PanelKind::Raps, &ctx, None, "csv"),
         "figure-test-jitter_random-white-noise_n256_seed3_raps.csv"
+    );
+    assert_eq!(
+        panel_file_name(PanelKind::Pattern, &ctx, Some(3), ""),
+        "figure-test-jitter_random-white-noise_n256_seed3_pattern@3x"
     );
 }

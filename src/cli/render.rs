@@ -9,8 +9,9 @@
 use super::CliError;
 use samplescope::core::cancel::Cancel;
 use samplescope::export::figure::{
-    column_file_name, column_png, comparison_file_name, comparison_png, panel_csv, panel_file_name,
-    panel_png, panel_svg, ColumnData, FigureContext, PanelKind, SCALES,
+    column_file_name, column_png, comparison_file_name, comparison_png, comparison_size, panel_csv,
+    panel_file_name, panel_png, panel_svg, ColumnData, FigureContext, PanelKind,
+    MAX_COMPOSITE_PIXELS, SCALES,
 };
 use samplescope::export::{write_file, ExportError};
 use samplescope::scene::graph::{Evaluator, NodeKind, NodeResult};
@@ -188,7 +189,14 @@ pub fn run(args: &RenderArgs) -> Result<(), CliError> {
             write(&args.out.join(column_file_name(ctx, s)), &bytes)?;
         }
     }
-    if !composite.is_empty() && formats.contains(&Format::Png) {
+    let (cw, ch) = comparison_size(&composite, columns.len(), s);
+    if !composite.is_empty() && formats.contains(&Format::Png) && cw * ch > MAX_COMPOSITE_PIXELS {
+        eprintln!(
+            "warning: comparison skipped: {} columns at --scale {s} would be {cw}×{ch} pixels, \
+             more than {MAX_COMPOSITE_PIXELS}; use a smaller --scale",
+            columns.len()
+        );
+    } else if !composite.is_empty() && formats.contains(&Format::Png) {
         let bytes = comparison_png(&composite, &columns, s).map_err(export_err)?;
         let name = columns
             .first()

@@ -36,7 +36,9 @@ use crate::scene::{ReconMode, Scene};
 use std::collections::HashMap;
 use std::sync::Arc;
 
-pub use composite::{column_png, column_rgba, comparison_png, comparison_rgba};
+pub use composite::{
+    column_png, column_rgba, column_size, comparison_png, comparison_rgba, comparison_size,
+};
 
 /// The allowed figure scales (a figure at scale s is s × its base size).
 pub const SCALES: std::ops::RangeInclusive<u32> = 1..=4;
@@ -327,12 +329,19 @@ pub fn sanitize(text: &str) -> String {
 /// computed (hidden panel, effect off, still running or failed).
 #[derive(Debug, Clone, Default)]
 pub struct ColumnData {
+    /// The points (pattern figure).
     pub points: Option<Arc<PointsData>>,
+    /// The periodogram and its radial average (spectrum and RAPS figures).
     pub spectrum: Option<Arc<SpectrumData>>,
+    /// The reconstructed signal.
     pub reconstruction: Option<Arc<ReconData>>,
+    /// The signal's reference image.
     pub reference: Option<Arc<ReferenceData>>,
+    /// |reconstruction − reference| with RMSE and PSNR.
     pub error: Option<Arc<ErrorData>>,
+    /// The filter's kernel and frequency response.
     pub response: Option<Arc<ResponseData>>,
+    /// RMSE against samples per pixel (its timings are never drawn).
     pub convergence: Option<Arc<Vec<ConvergencePoint>>>,
 }
 
@@ -520,8 +529,8 @@ pub fn panel_csv(
 }
 
 /// The file name of figure `kind` of a column:
-/// `{scene}_{column}_n{N}_seed{S}_{kind}[@{scale}x].{ext}`, every part sanitised
-/// (`scale` is given for PNG and SVG, `None` for CSV).
+/// `{scene}_{column}_n{N}_seed{S}_{kind}[@{scale}x][.{ext}]`, every part sanitised
+/// (`scale` is given for PNG and SVG, `None` for CSV; an empty `ext` gives no extension).
 pub fn panel_file_name(
     kind: PanelKind,
     ctx: &FigureContext,
@@ -529,14 +538,18 @@ pub fn panel_file_name(
     ext: &str,
 ) -> String {
     let s = scale.map(|s| format!("@{s}x")).unwrap_or_default();
+    let ext = if ext.trim().is_empty() {
+        String::new()
+    } else {
+        format!(".{}", sanitize(ext))
+    };
     format!(
-        "{}_{}_n{}_seed{}_{}{s}.{}",
+        "{}_{}_n{}_seed{}_{}{s}{ext}",
         ctx.scene_name,
         ctx.column_slug,
         ctx.n,
         ctx.seed,
         kind.name(),
-        sanitize(ext)
     )
 }
 

@@ -23,6 +23,18 @@ fn size_of_row(kinds: &[PanelKind], scale: u32) -> (u64, u64) {
     (w * scale as u64, h * scale as u64)
 }
 
+/// (width, height) in pixels of [`column_png`] with figures `kinds` at `scale`.
+pub fn column_size(kinds: &[PanelKind], scale: u32) -> (u64, u64) {
+    size_of_row(kinds, scale)
+}
+
+/// (width, height) in pixels of [`comparison_png`] of `columns` columns with figures `kinds`
+/// at `scale`; compare its product with [`MAX_COMPOSITE_PIXELS`] before asking for it.
+pub fn comparison_size(kinds: &[PanelKind], columns: usize, scale: u32) -> (u64, u64) {
+    let (w, h) = size_of_row(kinds, scale);
+    (w, (HEADING_H * scale) as u64 + h * columns as u64)
+}
+
 fn check_size(width: u64, height: u64) -> Result<(u32, u32), ExportError> {
     if width * height > MAX_COMPOSITE_PIXELS {
         return Err(ExportError::TooLarge {
@@ -186,9 +198,10 @@ fn comparison_rgb(
             reason: "no column".into(),
         });
     };
-    let (row_w, row_h) = size_of_row(kinds, scale);
+    let (_, row_h) = size_of_row(kinds, scale);
     let head = (HEADING_H * scale) as u64;
-    let (w, h) = check_size(row_w, head + row_h * columns.len() as u64)?;
+    let (cw, ch) = comparison_size(kinds, columns.len(), scale);
+    let (w, h) = check_size(cw, ch)?;
     let mut buf = vec![255u8; w as usize * h as usize * 3];
     caption(
         &mut buf,
