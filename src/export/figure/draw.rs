@@ -806,6 +806,34 @@ fn response<DB: DrawingBackend>(
     legend_box(&mut ch, SeriesLabelPosition::UpperRight, look, kind)
 }
 
+/// Ticks of a logarithmic axis over [lo, hi] (0 < lo < hi): 1, 2 and 5 times the powers of
+/// ten inside, or every integer multiple when that gives fewer than three.
+fn log_ticks(lo: f64, hi: f64) -> Vec<f64> {
+    let ticks = |mantissas: &[f64]| -> Vec<f64> {
+        let (k0, k1) = (lo.log10().floor() as i32, hi.log10().ceil() as i32);
+        (k0..=k1)
+            .flat_map(|k| mantissas.iter().map(move |m| m * 10f64.powi(k)))
+            .filter(|v| *v >= lo && *v <= hi)
+            .collect()
+    };
+    let coarse = ticks(&[1.0, 2.0, 5.0]);
+    if coarse.len() >= 3 {
+        coarse
+    } else {
+        ticks(&[1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0, 9.0])
+    }
+}
+
+/// A tick value with as many decimals as its magnitude needs (0.02, 0.5, 20).
+fn tick_label(v: &f64) -> String {
+    let decimals = if *v > 0.0 {
+        (-v.log10().floor()).max(0.0) as usize
+    } else {
+        0
+    };
+    format!("{v:.decimals$}")
+}
+
 fn convergence<DB: DrawingBackend>(
     body: &DrawingArea<DB, Shift>,
     pts: &[(f64, f64)],
@@ -827,7 +855,10 @@ fn convergence<DB: DrawingBackend>(
         .margin(look.u(MARGIN))
         .x_label_area_size(look.u(X_LABEL))
         .y_label_area_size(look.u(Y_LABEL))
-        .build_cartesian_2d((x0..x1).log_scale(), (y0..y1).log_scale())
+        .build_cartesian_2d(
+            (x0..x1).log_scale().with_key_points(log_ticks(x0, x1)),
+            (y0..y1).log_scale().with_key_points(log_ticks(y0, y1)),
+        )
         .map_err(de)?;
     ch.configure_mesh()
         .x_desc("samples per pixel")
@@ -838,8 +869,8 @@ fn convergence<DB: DrawingBackend>(
         .set_all_tick_mark_size(look.i(5))
         .max_light_lines(0)
         .bold_line_style(look.line(RGBColor(225, 225, 225), 1))
-        .x_label_formatter(&|v: &f64| format!("{v}"))
-        .y_label_formatter(&|v: &f64| format!("{v:.0e}"))
+        .x_label_formatter(&tick_label)
+        .y_label_formatter(&tick_label)
         .draw()
         .map_err(de)?;
     ch.draw_series(LineSeries::new(pts.iter().copied(), look.line(DATA, 2)))
@@ -876,6 +907,20 @@ mod tests {
         let flat = padded([3.0].into_iter(), &[]);
         assert!(flat.start < 3.0 && flat.end > 3.0);
         assert_eq!(padded(std::iter::empty(), &[]), 0.0..1.0);
+    }
+
+    #[test]
+    fn log_ticks_are_one_two_five_or_finer_in_narrow_ranges() {
+        assert_eq!(
+            log_ticks(0.7, 300.0),
+            vec![1.0, 2.0, 5.0, 10.0, 20.0, 50.0, 100.0, 200.0]
+        );
+        let narrow = log_ticks(0.013, 0.12);
+        assert!(narrow.len() >= 3, "{narrow:?}");
+        assert!(narrow.iter().all(|&v| (0.013..=0.12).contains(&v)));
+        assert_eq!(tick_label(&0.02), "0.02");
+        assert_eq!(tick_label(&0.5), "0.5");
+        assert_eq!(tick_label(&200.0), "200");
     }
 
     #[test]
