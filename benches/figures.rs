@@ -1,0 +1,96 @@
+//! Cost of a figure for slides against the plain image export.
+//!
+//! `figure::panel_png` of a 512² zone plate (axes, ticks, labels, title, the image resampled
+//! nearest-neighbour into the 400² plotting area at scale 1, 800² at scale 2; PNG with text
+//! metadata) against `export::png_bytes` of the same 512² image (grey map and PNG encoding
+//! only), both on one thread. The GUI calls `panel_png` on the UI thread, so its time is a
+//! frame budget question. A summary (best of 15 runs) with the ratios is printed after the
+//! criterion measurements.
+
+use criterion::{criterion_group, criterion_main, Criterion};
+use samplescope::export::figure::{panel_png, ColumnData, FigureContext, PanelKind};
+use samplescope::export::{png_bytes, PngColormap};
+use samplescope::scene::graph::{ImageData, ReconData};
+use samplescope::scene::Scene;
+use std::hint::black_box;
+use std::sync::Arc;
+use std::time::{Duration, Instant};
+
+const W: usize = 512;
+const K: f64 = 64.0;
+
+/// The zone plate ½(1 + sin(π K |p − c|²)), c = (½, ½), at pixel centres, row 0 at the top.
+fn zone_plate() -> Vec<f64> {
+    let mut v = Vec::with_capacity(W * W);
+    for row in 0..W {
+        for col in 0..W {
+            let x = (col as f64 + 0.5) / W as f64 - 0.5;
+            let y = 1.0 - (row as f64 + 0.5) / W as f64 - 0.5;
+            v.push(0.5 * (1.0 + (std::f64::consts::PI * K * (x * x + y * y)).sin()));
+        }
+    }
+    v
+}
+
+fn setup() -> (FigureContext, ColumnData, Vec<f64>) {
+    let values = zone_plate();
+    let image = ImageData::new(W, W, values.iter().map(|&v| v as f32).collect());
+    let data = ColumnData {
+        reconstruction: Some(Arc::new(ReconData {
+            image,
+            zero_weight: 0,
+        })),
+        ..Default::default()
+    };
+    let ctx = FigureContext::new(&Scene::default(), 0, "bench").expect("column 0 exists");
+    (ctx, data, values)
+}
+
+fn best_of(runs: usize, f: impl Fn()) -> Duration {
+    (0..runs)
+        .map(|_| {
+            let t = Instant::now();
+            f();
+            t.elapsed()
+        })
+        .min()
+        .unwrap_or_default()
+}
+
+fn bench(c: &mut Criterion) {
+    let (ctx, data, values) = setup();
+    let plain = || {
+        black_box(
+            png_bytes(&values, W, W, 0.0, 1.0, PngColormap::Greys, &[]).expect("valid image"),
+        );
+    };
+    let figure = |scale: u32| {
+        black_box(panel_png(PanelKind::Reconstruction, &ctx, &data, scale).expect("figure draws"));
+    };
+    let mut g = c.benchmark_group("figure 512² zone plate");
+    g.sample_size(20);
+    g.bench_function("export::png_bytes (plain image)", |b| b.iter(plain));
+    g.bench_function("figure::panel_png scale 1", |b| b.iter(|| figure(1)));
+    g.bench_function("figure::panel_png scale 2", |b| b.iter(|| figure(2)));
+    g.finish();
+
+    let p = best_of(15, plain);
+    let f1 = best_of(15, || figure(1));
+    let f2 = best_of(15, || figure(2));
+    let ms = |d: Duration| d.as_secs_f64() * 1e3;
+    println!("\nbest of 15, one thread:");
+    println!("  export::png_bytes 512² plain image   {:8.2} ms", ms(p));
+    println!(
+        "  figure::panel_png scale 1 (480×510)   {:8.2} ms   {:.2}× plain",
+        ms(f1),
+        ms(f1) / ms(p)
+    );
+    println!(
+        "  figure::panel_png scale 2 (960×1020)  {:8.2} ms   {:.2}× plain",
+        ms(f2),
+        ms(f2) / ms(p)
+    );
+}
+
+criterion_group!(benches, bench);
+criterion_main!(benches);
