@@ -121,3 +121,44 @@ fn every_scene_evaluates_without_a_node_error() {
     }
     assert!(failures.is_empty(), "{failures:#?}");
 }
+
+/// The net scene's claim, checked exactly: every Hammersley column has one point in each of the
+/// 16 elementary intervals 2^-k × 2^-(4-k) of its own shape k, and the jittered column, drawn
+/// with a non-square shape, does not.
+#[test]
+fn net_scene_columns_hold_one_point_per_elementary_interval_of_their_shape() {
+    let (name, text) = BUILTIN
+        .iter()
+        .find(|(n, _)| *n == "net-0-4-2-elementary-intervals.ron")
+        .expect("net scene shipped");
+    let scene = Scene::from_ron(text, name).unwrap();
+    assert_eq!(scene.n, 16);
+    let mut shapes = BTreeSet::new();
+    for col in &scene.columns {
+        let k = col.elementary_k.expect("every column draws a shape");
+        let pts = col.pattern.generate(scene.n, col.seed).unwrap();
+        let (nx, ny) = (1usize << k, 1usize << (4 - k));
+        let mut counts = vec![0usize; 16];
+        for p in &pts {
+            let i = (p.x * nx as f64).floor() as usize;
+            let j = (p.y * ny as f64).floor() as usize;
+            counts[j * nx + i] += 1;
+        }
+        let one_each = counts.iter().all(|&c| c == 1);
+        if col.pattern.name() == "hammersley" {
+            assert!(one_each, "{}: {counts:?}", col.title());
+            shapes.insert(k);
+        } else {
+            assert!(!one_each, "{} should not be a net for k = {k}", col.title());
+        }
+    }
+    assert_eq!(shapes, (0..=4).collect::<BTreeSet<u32>>(), "all five shapes");
+}
+
+#[test]
+fn elementary_k_out_of_range_names_the_column_field() {
+    let text = "(columns: [(elementary_k: Some(25))])";
+    let err = Scene::from_ron(text, "bad.ron").unwrap_err().to_string();
+    assert!(err.contains("columns[0].elementary_k"), "{err}");
+    assert!(err.contains("0..=24"), "{err}");
+}

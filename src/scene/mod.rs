@@ -31,7 +31,14 @@ pub struct Column {
     pub label: String,
     /// Points imported from a file (or inline) used instead of the pattern; see [`import`].
     pub points: Option<ImportedPoints>,
+    /// Draw this column's elementary intervals b^k × b^(m−k) (base 2, N = 2^m) with this k,
+    /// whatever the shared overlay setting; lets a scene show several interval shapes side by
+    /// side. At most [`MAX_ELEMENTARY_K`].
+    pub elementary_k: Option<u32>,
 }
+
+/// Largest per-column elementary-interval exponent k (2^24 strata per axis).
+pub const MAX_ELEMENTARY_K: u32 = 24;
 
 impl Default for Column {
     fn default() -> Self {
@@ -40,6 +47,7 @@ impl Default for Column {
             seed: 1,
             label: String::new(),
             points: None,
+            elementary_k: None,
         }
     }
 }
@@ -495,6 +503,17 @@ impl Scene {
                 format!("{} columns", self.columns.len()),
                 &format!("1..={MAX_COLUMNS} columns"),
             ));
+        }
+        for (i, c) in self.columns.iter().enumerate() {
+            if let Some(k) = c.elementary_k {
+                if k > MAX_ELEMENTARY_K {
+                    return Err(invalid(
+                        &format!("columns[{i}].elementary_k"),
+                        k.to_string(),
+                        &format!("an integer in 0..={MAX_ELEMENTARY_K}"),
+                    ));
+                }
+            }
         }
         if self.n == 0 || self.n > MAX_SCENE_N {
             return Err(invalid(

@@ -168,12 +168,18 @@ pub fn columns_ui(
                     ui.allocate_ui(Vec2::new(width, ui.available_height()), |ui| {
                         ui.vertical(|ui| {
                             ui.horizontal(|ui| {
-                                ui.strong(format!(
-                                    "{} · N = {} · seed {}",
-                                    column.title(),
-                                    scene.n,
-                                    column.seed
-                                ));
+                                ui.strong(match &column.points {
+                                    // An imported set has its own size and no seed.
+                                    Some(p) => {
+                                        format!("{} · N = {}", column.title(), p.points.len())
+                                    }
+                                    None => format!(
+                                        "{} · N = {} · seed {}",
+                                        column.title(),
+                                        scene.n,
+                                        column.seed
+                                    ),
+                                });
                                 figures::column_menu_ui(ui, ci);
                             });
                             let mut shown: Vec<u8> = Vec::new();
@@ -302,7 +308,7 @@ fn pattern_panel(
             );
         }
     }
-    if let Some(k) = view.elementary_k {
+    if let Some(k) = scene.columns[ci].elementary_k.or(view.elementary_k) {
         let n = data.points.len();
         if n.is_power_of_two() {
             let m = n.trailing_zeros();
