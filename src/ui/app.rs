@@ -554,7 +554,7 @@ impl eframe::App for SamplescopeApp {
             let result = self.results.first().and_then(|c| c.get(&NodeKind::Theorem));
             egui::Panel::bottom("samplescope-theorem")
                 .resizable(true)
-                .default_size(460.0)
+                .default_size(520.0)
                 .show(ui, |ui| {
                     self.theorem_panel.ui(ui, &mut self.scene.theorem, result)
                 });

@@ -24,6 +24,13 @@ const REPLICA_COLOURS: [Color32; 7] = [
 const NYQUIST: Color32 = Color32::from_rgb(200, 60, 60);
 const RECON: Color32 = Color32::from_rgb(230, 120, 20);
 
+/// Small legend text, so that the legend leaves the curves visible.
+fn legend() -> Legend {
+    Legend::default()
+        .text_style(egui::TextStyle::Small)
+        .background_alpha(0.5)
+}
+
 fn replica_colour(k: i64) -> Color32 {
     REPLICA_COLOURS[(k + 3).clamp(0, 6) as usize]
 }
@@ -64,13 +71,15 @@ impl TheoremPanel {
             };
             egui::ScrollArea::vertical()
                 .id_salt("theorem-plots")
-                .show(ui, |ui| self.plots_ui(ui, &view));
+                .show(ui, |ui| ui.vertical(|ui| self.plots_ui(ui, &view)));
         });
     }
 
     fn plots_ui(&mut self, ui: &mut egui::Ui, v: &TheoremView) {
         let width = (ui.available_width() / 3.0 - 8.0).max(160.0);
-        let height = 170.0;
+        let height = 190.0;
+        // The numbers first, so that they stay in view when the panel is short.
+        errors_ui(ui, &v.errors, v.settings.rate);
         ui.horizontal_top(|ui| {
             ui.vertical(|ui| {
                 ui.strong("Signal f, samples f(nT), reconstruction f_r");
@@ -85,7 +94,6 @@ impl TheoremPanel {
                 recon_spectrum_plot_ui(ui, v, width, height);
             });
         });
-        errors_ui(ui, &v.errors, v.settings.rate);
         ui.separator();
         ui.horizontal_top(|ui| {
             ui.vertical(|ui| {
@@ -196,7 +204,7 @@ fn signal_plot_ui(ui: &mut egui::Ui, v: &TheoremView, width: f32, height: f32) {
     Plot::new("theorem-signal-plot")
         .width(width)
         .height(height)
-        .legend(Legend::default())
+        .legend(legend())
         .x_axis_label("x (units)")
         .show(ui, |p| {
             p.line(Line::new("f(x)", v.signal.clone()).color(Color32::GRAY));
@@ -221,19 +229,17 @@ fn spectrum_plot_ui(ui: &mut egui::Ui, v: &TheoremView, width: f32, height: f32)
     Plot::new("theorem-spectrum-plot")
         .width(width)
         .height(height)
-        .legend(Legend::default())
+        .legend(legend())
         .x_axis_label("ω (cycles/unit)")
         .show(ui, |p| {
             for (k, curve) in &sp.replicas {
-                p.line(
-                    Line::new(format!("replica k = {k}"), curve.clone()).color(replica_colour(*k)),
-                );
+                p.line(Line::new(format!("k = {k}"), curve.clone()).color(replica_colour(*k)));
             }
             for (k, lines) in &sp.lines {
                 let name = if *k == 0 {
                     "|F| (lines)".to_string()
                 } else {
-                    format!("replica k = {k}")
+                    format!("k = {k}")
                 };
                 let colour = if *k == 0 { text } else { replica_colour(*k) };
                 p.points(
@@ -256,7 +262,7 @@ fn recon_spectrum_plot_ui(ui: &mut egui::Ui, v: &TheoremView, width: f32, height
     Plot::new("theorem-recon-spectrum-plot")
         .width(width)
         .height(height)
-        .legend(Legend::default())
+        .legend(legend())
         .x_axis_label("ω (cycles/unit)")
         .show(ui, |p| {
             if !sp.original.is_empty() {
@@ -335,7 +341,7 @@ fn pair_plots_ui(ui: &mut egui::Ui, v: &TheoremView, re_im: bool, width: f32, he
         Plot::new("theorem-pair-spatial")
             .width(width)
             .height(height)
-            .legend(Legend::default())
+            .legend(legend())
             .x_axis_label("x")
             .include_x(-pp.x_max)
             .include_x(pp.x_max)
@@ -353,7 +359,7 @@ fn pair_plots_ui(ui: &mut egui::Ui, v: &TheoremView, re_im: bool, width: f32, he
         Plot::new("theorem-pair-frequency")
             .width(width)
             .height(height)
-            .legend(Legend::default())
+            .legend(legend())
             .x_axis_label("ω")
             .include_x(-pp.omega_max)
             .include_x(pp.omega_max)
