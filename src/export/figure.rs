@@ -196,9 +196,10 @@ pub struct FigureContext {
     /// File-name part naming the column: the pattern's name, then the label when it differs
     /// (sanitised), made unique within the scene.
     pub column_slug: String,
-    /// The pattern's name.
+    /// The pattern's name (`imported` for a column showing points from a file).
     pub pattern: String,
-    /// The pattern's parameters, `key=value` separated by spaces.
+    /// The pattern's parameters, `key=value` separated by spaces (for imported points the file
+    /// name and whether the points were normalised).
     pub pattern_params: String,
     /// Number of points.
     pub n: usize,
@@ -232,13 +233,21 @@ impl FigureContext {
                 max: scene.columns.len() as i64 - 1,
             })?;
         let slugs = column_slugs(scene);
-        let pattern_params = col
-            .pattern
-            .specs()
-            .iter()
-            .filter_map(|s| col.pattern.get(s.name).map(|v| format!("{}={v}", s.name)))
-            .collect::<Vec<_>>()
-            .join(" ");
+        let (pattern, pattern_params) = match &col.points {
+            Some(p) => (
+                IMPORTED.to_string(),
+                format!("file={} normalize={}", p.label(), p.normalize),
+            ),
+            None => (
+                col.pattern.name().to_string(),
+                col.pattern
+                    .specs()
+                    .iter()
+                    .filter_map(|s| col.pattern.get(s.name).map(|v| format!("{}={v}", s.name)))
+                    .collect::<Vec<_>>()
+                    .join(" "),
+            ),
+        };
         let recon = match scene.recon.mode {
             ReconMode::Scattered => "scattered".to_string(),
             ReconMode::Supersample { spp } => format!("supersample {spp} spp"),
@@ -255,7 +264,7 @@ impl FigureContext {
             column,
             column_title: col.title(),
             column_slug: slugs[column].clone(),
-            pattern: col.pattern.name().to_string(),
+            pattern,
             pattern_params,
             n: scene.n,
             seed: col.seed,
@@ -275,13 +284,20 @@ impl FigureContext {
     }
 }
 
+/// What names the "pattern" of a column whose points were imported from a file.
+const IMPORTED: &str = "imported";
+
 /// Unique file-name parts for the columns of a scene.
 fn column_slugs(scene: &Scene) -> Vec<String> {
     let base: Vec<String> = scene
         .columns
         .iter()
         .map(|c| {
-            let name = sanitize(c.pattern.name());
+            let name = sanitize(if c.points.is_some() {
+                IMPORTED
+            } else {
+                c.pattern.name()
+            });
             let label = sanitize(&c.title());
             if label == name {
                 name
@@ -632,6 +648,27 @@ mod tests {
         assert_eq!(column_slugs(&scene), vec!["jitter-c1", "jitter-c2"]);
         scene.columns[1].label = "p1 = 3".into();
         assert_eq!(column_slugs(&scene), vec!["jitter", "jitter-p1-3"]);
+    }
+
+    #[test]
+    fn imported_columns_are_named_by_their_file() {
+        let text = r#"(title: "x", n: 2, columns: [
+            (points: Some((path: "", points: [(0.5, 0.5), (0.25, 0.75)]))),
+            (pattern: (kind: "random")),
+        ])"#;
+        let scene = Scene::from_ron(text, "imported.ron").unwrap();
+        let ctx = FigureContext::new(&scene, 0, "imp").unwrap();
+        assert_eq!(ctx.pattern, "imported");
+        assert_eq!(ctx.pattern_params, "file=inline points normalize=false");
+        assert!(
+            ctx.column_slug.starts_with("imported"),
+            "{}",
+            ctx.column_slug
+        );
+        assert_eq!(
+            FigureContext::new(&scene, 1, "imp").unwrap().pattern,
+            "random"
+        );
     }
 
     #[test]
