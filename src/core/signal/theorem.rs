@@ -363,7 +363,8 @@ impl Signal1D {
     /// band-limited signals sum the finitely many replicas that reach ω; compactly supported
     /// signals use the finite sample sum T Σ_n f(nT) cos(2πωnT) (Poisson summation, with the
     /// mid-value ½ at the box's jumps); the Gaussian sums replicas until they fall below
-    /// 10⁻²⁰·F(0) (the rest is smaller than 10⁻²⁰·F(0)·(1 + 1/(1 − e^{−4π²σ²f_s²}))).
+    /// 10⁻²⁰·F(0) (F decreases in |ω| and F(c + jf_s)/F(c) ≤ q^j, q = e^{−2π²σ²f_s²}, so the
+    /// rest is at most 2·10⁻²⁰·F(0)/(1 − q)).
     /// Continuous spectra only ((0, 0) for lines).
     pub fn periodized(&self, omega: f64, rate: f64) -> (f64, f64) {
         let replicas = |reach: f64| {
