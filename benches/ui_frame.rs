@@ -24,7 +24,7 @@ fn harness(lecture: bool) -> Harness<'static, SamplescopeApp> {
         });
     // Let the first results arrive so the panels draw real data.
     let deadline = Instant::now() + Duration::from_secs(300);
-    while !(h.state().engine.is_idle() && !h.state().results.is_empty()) {
+    while !h.state().engine.is_idle() || h.state().results.is_empty() {
         h.step();
         std::thread::sleep(Duration::from_millis(5));
         assert!(Instant::now() < deadline, "engine did not finish");

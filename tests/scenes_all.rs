@@ -152,7 +152,11 @@ fn net_scene_columns_hold_one_point_per_elementary_interval_of_their_shape() {
             assert!(!one_each, "{} should not be a net for k = {k}", col.title());
         }
     }
-    assert_eq!(shapes, (0..=4).collect::<BTreeSet<u32>>(), "all five shapes");
+    assert_eq!(
+        shapes,
+        (0..=4).collect::<BTreeSet<u32>>(),
+        "all five shapes"
+    );
 }
 
 #[test]
