@@ -239,3 +239,21 @@ fn failing_node_exits_2_naming_column_and_node() {
         "{e}"
     );
 }
+
+#[test]
+fn scene_without_drawable_panels_warns_and_writes_nothing() {
+    let dir = temp_dir("nopanels");
+    let scene = dir.join("none.ron");
+    let text = SCENE.replace(
+        "panels: (pattern: true, spectrum: true, zoneplate: true, filter: true, cost: false)",
+        "panels: (pattern: false, spectrum: false, zoneplate: false, filter: false, cost: false)",
+    );
+    assert_ne!(text, SCENE);
+    std::fs::write(&scene, text).unwrap();
+    let out = dir.join("o");
+    let o = render(&[scene.to_str().unwrap(), "--out", out.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(stderr(&o).contains("nothing written"), "{}", stderr(&o));
+    assert!(o.stdout.is_empty());
+    assert!(files(&out).is_empty());
+}

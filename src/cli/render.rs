@@ -161,6 +161,12 @@ pub fn run(args: &RenderArgs) -> Result<(), CliError> {
     })?;
     let kinds = PanelKind::available(&scene);
     let composite = PanelKind::composite(&scene);
+    if kinds.is_empty() {
+        eprintln!(
+            "warning: {source} shows none of the panels render draws (pattern, spectrum, zone \
+             plate, filter, cost view with convergence); nothing written"
+        );
+    }
     let s = args.scale;
     for (ctx, data) in &columns {
         for &kind in &kinds {
