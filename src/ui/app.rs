@@ -237,8 +237,13 @@ impl SamplescopeApp {
                     .desired_width(180.0),
             );
             if ui.button("Open").clicked() {
-                let p = std::path::PathBuf::from(self.open_path.trim());
-                self.open_file(&p);
+                if self.open_path.trim().is_empty() {
+                    self.scene_error =
+                        Some("Open: type the path of a scene file (.ron) in the box first".into());
+                } else {
+                    let p = std::path::PathBuf::from(self.open_path.trim());
+                    self.open_file(&p);
+                }
             }
             ui.separator();
             if ui.button("Add column").on_hover_text("Ctrl+N").clicked() {
