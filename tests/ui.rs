@@ -157,3 +157,42 @@ fn lecture_mode_switches_theme_and_zoom_without_recomputing() {
     h.run_steps(3);
     assert!((h.ctx.zoom_factor() - 1.0).abs() < 1e-6);
 }
+
+#[test]
+fn save_menu_writes_the_panel_figure_with_scene_pattern_n_and_seed_in_its_name() {
+    let mut h = harness();
+    let dir = std::env::temp_dir().join(format!("samplescope-ui-figures-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    h.state_mut().view.figure_dir = dir.display().to_string();
+    // The first "Save" menu is the pattern panel's.
+    h.get_all_by_label("Save")
+        .next()
+        .expect("a Save menu")
+        .click();
+    h.run_steps(2);
+    h.get_by_label("PNG 2×").click();
+    let deadline = Instant::now() + Duration::from_secs(60);
+    while h.state().saver.busy() || h.state().saver.status.is_none() {
+        h.step();
+        std::thread::sleep(Duration::from_millis(10));
+        assert!(Instant::now() < deadline, "figure not written");
+    }
+    let status = h.state().saver.status.clone().unwrap();
+    assert!(status.starts_with("saved "), "{status}");
+    let path = dir.join("default_jitter_n4096_seed1_pattern@2x.png");
+    let bytes =
+        std::fs::read(&path).unwrap_or_else(|e| panic!("{}: {e} ({status})", path.display()));
+    let decoder = png::Decoder::new(std::io::Cursor::new(bytes));
+    let reader = decoder.read_info().unwrap();
+    let (w, h2) = (reader.info().width, reader.info().height);
+    let (bw, bh) = samplescope::export::figure::PanelKind::Pattern.base_size();
+    assert_eq!((w, h2), (2 * bw, 2 * bh));
+    let text: Vec<_> = reader
+        .info()
+        .uncompressed_latin1_text
+        .iter()
+        .map(|t| format!("{}={}", t.keyword, t.text))
+        .collect();
+    assert!(text.iter().any(|t| t.contains("jitter")), "{text:?}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
