@@ -297,6 +297,26 @@ mod ui {
         assert_eq!(app.column_at(central, 10.0), 0);
         assert_eq!(app.column_at(central, 1500.0), 2);
     }
+
+    /// Once drawn, the columns' own rectangles decide (they need not split the area equally).
+    #[test]
+    fn drop_target_follows_the_drawn_columns() {
+        let mut h = harness();
+        h.state_mut().add_column();
+        h.state_mut().add_column();
+        h.run_steps(3);
+        let app = h.state();
+        assert_eq!(app.column_rects.len(), 3);
+        let central = eframe::egui::Rect::from_min_size(
+            eframe::egui::pos2(0.0, 0.0),
+            eframe::egui::vec2(10.0, 10.0),
+        );
+        for (i, r) in app.column_rects.iter().enumerate() {
+            assert_eq!(app.column_at(central, r.center().x), i, "{r:?}");
+        }
+        let last = app.column_rects[2];
+        assert_eq!(app.column_at(central, last.right() + 500.0), 2);
+    }
 }
 
 /// `--normalize` only makes sense with `--points`: the command line refuses it alone (exit 2)

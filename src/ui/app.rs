@@ -46,6 +46,8 @@ pub struct SamplescopeApp {
     applied_style: Option<lecture::AppliedStyle>,
     /// Renders and writes requested figures off the UI thread.
     pub saver: figures::Saver,
+    /// Each column's screen rectangle in the last frame (where a dropped file goes).
+    pub column_rects: Vec<egui::Rect>,
 }
 
 /// Keys under which eframe persists the window's state.
@@ -85,6 +87,7 @@ impl SamplescopeApp {
             theorem_panel: Default::default(),
             applied_style: None,
             saver: figures::Saver::default(),
+            column_rects: Vec::new(),
             motion_clock: Default::default(),
             import_failure: None,
         };
@@ -569,7 +572,7 @@ impl eframe::App for SamplescopeApp {
                 // Panels sized for a 16:9 projector frame, centred.
                 let frame = lecture::letterbox_16_9(ui.available_rect_before_wrap());
                 let mut child = ui.new_child(egui::UiBuilder::new().max_rect(frame));
-                panels::columns_ui(
+                self.column_rects = panels::columns_ui(
                     &mut child,
                     &self.scene,
                     &self.results,
@@ -578,7 +581,7 @@ impl eframe::App for SamplescopeApp {
                     &mut self.textures,
                 );
             } else {
-                panels::columns_ui(
+                self.column_rects = panels::columns_ui(
                     ui,
                     &self.scene,
                     &self.results,

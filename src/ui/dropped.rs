@@ -1,8 +1,8 @@
 //! Importing point files into a column: from the command line (`--points FILE`) and by
 //! dragging a file onto a column.
 //!
-//! A file dropped on the window goes to the column under the pointer (columns share the
-//! central area's width equally, in order; a drop outside them goes to the nearest one).
+//! A file dropped on the window goes to the column under the pointer (the columns' rectangles
+//! as last drawn; a drop outside them goes to the nearest one).
 //! When the file cannot be used, the message (naming the line) stays on screen with a
 //! "Normalise to bounding box" button when the problem is a point outside [0,1)², which
 //! retries the same file with the bounding-box normalisation.
@@ -59,9 +59,27 @@ impl SamplescopeApp {
         }
     }
 
-    /// The column whose area contains `x` (columns split `central` equally, left to right).
+    /// The column under `x`: the one whose rectangle (as drawn in the last frame) spans `x`,
+    /// else the nearest one; before any column was drawn, columns split `central` equally.
     pub fn column_at(&self, central: egui::Rect, x: f32) -> usize {
         let n = self.scene.columns.len().max(1);
+        if self.column_rects.len() == n {
+            let distance = |r: &egui::Rect| {
+                if x < r.left() {
+                    r.left() - x
+                } else if x > r.right() {
+                    x - r.right()
+                } else {
+                    0.0
+                }
+            };
+            return self
+                .column_rects
+                .iter()
+                .enumerate()
+                .min_by(|a, b| distance(a.1).total_cmp(&distance(b.1)))
+                .map_or(0, |(i, _)| i);
+        }
         let f = ((x - central.left()) / central.width().max(1.0)).clamp(0.0, 0.999_999);
         ((f * n as f32) as usize).min(n - 1)
     }
@@ -82,12 +100,19 @@ impl SamplescopeApp {
                 egui::Order::Foreground,
                 egui::Id::unique("samplescope-drop-hint"),
             ));
-            let n = self.scene.columns.len().max(1) as f32;
-            let w = central.width() / n;
-            let rect = egui::Rect::from_min_size(
-                egui::pos2(central.left() + w * column as f32, central.top()),
-                egui::vec2(w, central.height()),
-            );
+            let rect = match self.column_rects.get(column) {
+                Some(r) if self.column_rects.len() == self.scene.columns.len() => {
+                    egui::Rect::from_x_y_ranges(r.x_range(), central.y_range())
+                }
+                _ => {
+                    let n = self.scene.columns.len().max(1) as f32;
+                    let w = central.width() / n;
+                    egui::Rect::from_min_size(
+                        egui::pos2(central.left() + w * column as f32, central.top()),
+                        egui::vec2(w, central.height()),
+                    )
+                }
+            };
             painter.rect_filled(rect, 4.0, egui::Color32::from_black_alpha(120));
             painter.text(
                 rect.center(),

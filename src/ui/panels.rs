@@ -131,7 +131,8 @@ fn error_label(ui: &mut egui::Ui, what: &str, e: &str) {
     ui.colored_label(Color32::from_rgb(200, 40, 40), format!("{what}: {e}"));
 }
 
-/// Every column side by side.
+/// Every column side by side. Returns each column's screen rectangle, in column order (files
+/// dropped on the window go to the column under the pointer).
 pub fn columns_ui(
     ui: &mut egui::Ui,
     scene: &Scene,
@@ -139,7 +140,8 @@ pub fn columns_ui(
     view: &mut ViewState,
     gpu: bool,
     textures: &mut TextureCache,
-) {
+) -> Vec<Rect> {
+    let mut column_rects = Vec::with_capacity(scene.columns.len());
     let show_timings = view.show_timings;
     ui.ctx()
         .data_mut(|d| d.insert_temp(egui::Id::NULL.with(SHOW_TIMINGS), show_timings));
@@ -165,7 +167,7 @@ pub fn columns_ui(
             for (ci, column) in scene.columns.iter().enumerate() {
                 let col = results.get(ci);
                 ui.push_id(ci, |ui| {
-                    ui.allocate_ui(Vec2::new(width, ui.available_height()), |ui| {
+                    let shown = ui.allocate_ui(Vec2::new(width, ui.available_height()), |ui| {
                         ui.vertical(|ui| {
                             ui.horizontal(|ui| {
                                 ui.strong(match &column.points {
@@ -240,10 +242,12 @@ pub fn columns_ui(
                             }
                         });
                     });
+                    column_rects.push(shown.response.rect);
                 });
             }
         });
     });
+    column_rects
 }
 
 fn visible_panels(p: &Panels) -> usize {
