@@ -2,6 +2,7 @@
 //! errors, on a small scene evaluated through the compute graph (N = 256, 64² images).
 
 use samplescope::core::cancel::Cancel;
+use samplescope::core::signal::theorem::TheoremView;
 use samplescope::export::figure::{
     column_png, column_size, comparison_png, comparison_size, panel_csv, panel_file_name,
     panel_png, panel_rgba, panel_svg, ColumnData, FigureContext, PanelKind, MAX_COMPOSITE_PIXELS,
@@ -104,8 +105,8 @@ fn every_panel_png_decodes_at_base_size_times_scale() {
     let kinds = PanelKind::available(&scene);
     assert_eq!(
         kinds.len(),
-        PanelKind::ALL.len(),
-        "the scene shows every figure"
+        PanelKind::ALL.iter().filter(|k| !k.is_theorem()).count(),
+        "the scene shows every figure but the theorem's (tested on their own scene below)"
     );
     for kind in kinds {
         for scale in [1, 2] {
@@ -475,4 +476,363 @@ fn file_names_carry_scene_pattern_n_seed_kind_and_scale() {
         panel_file_name(PanelKind::Pattern, &ctx, Some(3), ""),
         "figure-test-jitter_random-white-noise_n256_seed3_pattern@3x"
     );
+}
+
+/// A scene showing only the 1D sampling-theorem panel: sinc² (B = 1.5) sampled at 2.5 < 2B,
+/// tent reconstruction; `signal` replaces the signal's RON.
+fn theorem_scene(signal: &str) -> Scene {
+    let text = format!(
+        r#"(
+    title: "Theorem figure test",
+    columns: [(pattern: (kind: "jitter", cols: 0, amount: 1.0), seed: 1)],
+    n: 64,
+    panels: (pattern: false, spectrum: false, zoneplate: false, filter: false, cost: false, theorem: true),
+    theorem: (
+        signal: {signal},
+        rate: 2.5,
+        filter: (kind: "tent", radius: 1.0),
+        extent: 3.0,
+        pair: (kind: box, scale: 1.0, shift: 0.0),
+        vdc_rows: 4,
+    ),
+)"#
+    );
+    Scene::from_ron(&text, "theorem.ron").expect("theorem scene parses")
+}
+
+const SINC2: &str = r#"(kind: "sinc-squared", bandwidth: 1.5)"#;
+
+fn theorem_view(data: &ColumnData) -> &TheoremView {
+    data.theorem
+        .as_ref()
+        .expect("the theorem node ran for column 0")
+}
+
+#[test]
+fn theorem_figures_are_available_for_column_zero_only() {
+    let scene = theorem_scene(SINC2);
+    assert_eq!(PanelKind::available(&scene), PanelKind::THEOREM.to_vec());
+    assert_eq!(PanelKind::composite(&scene), PanelKind::THEOREM.to_vec());
+    assert_eq!(PanelKind::comparison(&scene), PanelKind::THEOREM.to_vec());
+    // With a second column (and the pattern panel), only column 0 has the theorem figures.
+    let mut two = quick_scene();
+    two.panels.theorem = true;
+    assert!(PanelKind::available_in(&two, 0).contains(&PanelKind::TheoremSpectrum));
+    assert!(!PanelKind::available_in(&two, 1)
+        .iter()
+        .any(|k| k.is_theorem()));
+    assert!(!PanelKind::composite_in(&two, 1)
+        .iter()
+        .any(|k| k.is_theorem()));
+    assert!(!PanelKind::comparison(&two).iter().any(|k| k.is_theorem()));
+    let cols = columns(&two);
+    assert!(cols[0].1.has(PanelKind::TheoremSignal));
+    assert!(!cols[1].1.has(PanelKind::TheoremSignal));
+    for c in 0..2 {
+        for kind in PanelKind::available_in(&two, c) {
+            assert!(cols[c].1.has(kind), "column {c} lacks {kind:?}");
+        }
+    }
+}
+
+#[test]
+fn theorem_figures_decode_at_base_size_times_scale_and_repeat_byte_for_byte() {
+    let scene = theorem_scene(SINC2);
+    let a = columns(&scene);
+    let b = columns(&scene); // a fresh evaluation
+    let (ctx, data) = &a[0];
+    let v = theorem_view(data);
+    assert!(
+        v.errors.pre_aliasing > 0.0,
+        "2.5 < 2B: the replicas overlap"
+    );
+    for kind in PanelKind::THEOREM {
+        for scale in [1, 2] {
+            let bytes = panel_png(kind, ctx, data, scale).unwrap();
+            assert_eq!(
+                bytes,
+                panel_png(kind, ctx, data, scale).unwrap(),
+                "{kind:?}"
+            );
+            assert_eq!(
+                bytes,
+                panel_png(kind, &b[0].0, &b[0].1, scale).unwrap(),
+                "{kind:?} re-evaluated"
+            );
+            let (info, pixels, text) = decode(&bytes);
+            let (bw, bh) = kind.base_size();
+            assert_eq!((info.width, info.height), (bw * scale, bh * scale));
+            assert_eq!(bh, 510, "every figure is 510 high");
+            assert!(pixels.iter().any(|&p| p < 100), "{kind:?} is blank");
+            assert_eq!(meta(&text, "figure"), kind.name());
+            assert_eq!(meta(&text, "scale"), scale.to_string());
+            let pre = meta(&text, "pre-aliasing");
+            assert!(
+                pre.starts_with(&format!("{:e}", v.errors.pre_aliasing)),
+                "{pre}"
+            );
+            let post = meta(&text, "post-aliasing");
+            assert!(
+                post.starts_with(&format!("{:e}", v.errors.post_aliasing)),
+                "{post}"
+            );
+            assert!(meta(&text, "signal").contains("sinc-squared"));
+            assert_eq!(meta(&text, "sampling rate"), "2.5 samples per unit");
+            assert!(meta(&text, "filter").contains("tent"));
+            assert!(meta(&text, "Title").contains("f_s = 2.5"));
+            // The 2D pattern, N and seed do not apply to the theorem's figures.
+            assert!(!text.iter().any(|(k, _)| k == "pattern" || k == "seed"));
+        }
+        let svg = panel_svg(kind, ctx, data, 1).unwrap();
+        assert_eq!(svg, panel_svg(kind, &b[0].0, &b[0].1, 1).unwrap());
+        assert!(svg.contains("pre-aliasing") && svg.contains("post-aliasing"));
+        assert!(svg.contains(&format!(
+            "({:.3} % of energy)",
+            100.0 * v.errors.relative(v.errors.pre_aliasing)
+        )));
+    }
+    assert_eq!(
+        panel_file_name(PanelKind::TheoremSpectrum, ctx, Some(2), "png"),
+        "figure-test_theorem-spectrum@2x.png"
+    );
+    assert_eq!(
+        panel_file_name(PanelKind::TheoremSignal, ctx, None, "csv"),
+        "figure-test_theorem-signal.csv"
+    );
+}
+
+/// Whether the RGB pixels hold exactly `colour` somewhere.
+fn has_colour(pixels: &[u8], colour: [u8; 3]) -> bool {
+    pixels.chunks(3).any(|p| p == colour)
+}
+
+#[test]
+fn theorem_spectrum_draws_replicas_in_distinct_colours_nyquist_lines_and_a_legend() {
+    let scene = theorem_scene(SINC2);
+    let cols = columns(&scene);
+    let (ctx, data) = &cols[0];
+    let (_, px, _) = decode(&panel_png(PanelKind::TheoremSpectrum, ctx, data, 1).unwrap());
+    // k = −2, −1, 1, 2 (green, orange, red, cyan) and the Nyquist red.
+    for c in [
+        [44, 160, 44],
+        [255, 127, 14],
+        [214, 39, 40],
+        [23, 190, 207],
+        [200, 60, 60],
+    ] {
+        assert!(has_colour(&px, c), "{c:?} missing");
+    }
+    let svg = panel_svg(PanelKind::TheoremSpectrum, ctx, data, 1).unwrap();
+    for label in [
+        "|F(ω)|",
+        "F(ω + 1·f_s)",
+        "F(ω − 2·f_s)",
+        "|G(ω)| (filter)",
+        "Nyquist ±f_s/2",
+    ] {
+        assert!(svg.contains(label), "legend lacks {label}");
+    }
+    // The reconstructed spectrum is drawn in the reconstruction's orange, not the replicas'.
+    let (_, px, _) = decode(&panel_png(PanelKind::TheoremReconstructed, ctx, data, 1).unwrap());
+    assert!(has_colour(&px, [230, 120, 20]));
+    assert!(!has_colour(&px, [44, 160, 44]));
+}
+
+fn parse_series(csv: &str, header: &str) -> Vec<(String, [f64; 2])> {
+    let mut lines = csv.lines();
+    assert_eq!(lines.next(), Some(header));
+    lines
+        .map(|l| {
+            let v: Vec<&str> = l.split(',').collect();
+            assert_eq!(v.len(), 3, "{l}");
+            (
+                v[0].to_string(),
+                [v[1].parse().unwrap(), v[2].parse().unwrap()],
+            )
+        })
+        .collect()
+}
+
+fn series(rows: &[(String, [f64; 2])], name: &str) -> Vec<[f64; 2]> {
+    rows.iter()
+        .filter(|(n, _)| n == name)
+        .map(|(_, p)| *p)
+        .collect()
+}
+
+#[test]
+fn theorem_csv_round_trips_the_plotted_numbers() {
+    let scene = theorem_scene(SINC2);
+    let cols = columns(&scene);
+    let (ctx, data) = &cols[0];
+    let v = theorem_view(data);
+
+    let rows = parse_series(
+        &panel_csv(PanelKind::TheoremSignal, ctx, data).unwrap(),
+        "series,x,value",
+    );
+    assert_eq!(series(&rows, "f"), v.signal);
+    assert_eq!(series(&rows, "sample"), v.samples);
+    assert_eq!(series(&rows, "f_r"), v.reconstruction);
+    assert_eq!(
+        rows.len(),
+        v.signal.len() + v.samples.len() + v.reconstruction.len()
+    );
+
+    let rows = parse_series(
+        &panel_csv(PanelKind::TheoremSpectrum, ctx, data).unwrap(),
+        "series,omega,magnitude",
+    );
+    let sp = &v.spectrum;
+    assert_eq!(series(&rows, "F"), sp.original);
+    assert_eq!(series(&rows, "G"), sp.gain);
+    assert_eq!(sp.replicas.len(), 6);
+    for (k, c) in &sp.replicas {
+        assert_eq!(&series(&rows, &format!("replica_{k}")), c, "k = {k}");
+    }
+
+    let rows = parse_series(
+        &panel_csv(PanelKind::TheoremReconstructed, ctx, data).unwrap(),
+        "series,omega,magnitude",
+    );
+    assert_eq!(series(&rows, "F"), sp.original);
+    assert_eq!(series(&rows, "F_r"), sp.reconstructed);
+}
+
+#[test]
+fn theorem_figures_of_a_line_spectrum_draw_and_export_the_lines() {
+    // Cosines up to B = 1.5 sampled at 2.5: the line at 1.5 > f_s/2 pre-aliases.
+    let scene = theorem_scene(r#"(kind: "cosines", bandwidth: 1.5)"#);
+    let cols = columns(&scene);
+    let (ctx, data) = &cols[0];
+    let v = theorem_view(data);
+    assert!(v.errors.periodic && v.errors.pre_aliasing > 0.0);
+    for kind in PanelKind::THEOREM {
+        let (info, px, text) = decode(&panel_png(kind, ctx, data, 1).unwrap());
+        assert_eq!(info.width, kind.base_size().0);
+        assert!(px.iter().any(|&p| p < 100));
+        assert!(meta(&text, "pre-aliasing").contains("% of the signal's power"));
+    }
+    let rows = parse_series(
+        &panel_csv(PanelKind::TheoremSpectrum, ctx, data).unwrap(),
+        "series,omega,magnitude",
+    );
+    assert!(series(&rows, "F").is_empty());
+    for (k, c) in &v.spectrum.lines {
+        assert_eq!(&series(&rows, &format!("line_{k}")), c, "k = {k}");
+    }
+    let rows = parse_series(
+        &panel_csv(PanelKind::TheoremReconstructed, ctx, data).unwrap(),
+        "series,omega,magnitude",
+    );
+    assert_eq!(series(&rows, "F_r_line"), v.spectrum.reconstructed_lines);
+    assert_eq!(series(&rows, "F_line").len(), 6, "three cosines, ± each");
+}
+
+#[test]
+fn missing_theorem_data_is_a_typed_error_naming_the_figure() {
+    // Column 1 of a two-column scene with the theorem panel has no theorem view.
+    let mut two = quick_scene();
+    two.panels.theorem = true;
+    let cols = columns(&two);
+    let (ctx, data) = &cols[1];
+    for kind in PanelKind::THEOREM {
+        for e in [
+            panel_png(kind, ctx, data, 1).unwrap_err(),
+            panel_svg(kind, ctx, data, 1).unwrap_err(),
+            panel_csv(kind, ctx, data).unwrap_err(),
+        ] {
+            match &e {
+                ExportError::EmptyData { figure, .. } => assert_eq!(*figure, kind.name()),
+                other => panic!("{kind:?}: {other:?}"),
+            }
+            assert!(e.to_string().starts_with(kind.name()), "{e}");
+        }
+    }
+    // A column composite asking for them fails the same way.
+    let e = column_png(&PanelKind::THEOREM, ctx, data, 1).unwrap_err();
+    assert!(e.to_string().starts_with("theorem-signal"), "{e}");
+}
+
+/// N = 4 points at the centres of the 2×2 boxes, and a context whose column draws the
+/// elementary intervals with k = `k`.
+fn four_points(k: Option<u32>) -> (FigureContext, ColumnData) {
+    let scene = quick_scene();
+    let mut ctx = FigureContext::new(&scene, 0, "x").unwrap();
+    ctx.elementary_k = k;
+    let pts = [[0.25, 0.25], [0.75, 0.25], [0.25, 0.75], [0.75, 0.75]];
+    let data = ColumnData {
+        points: Some(Arc::new(PointsData {
+            points: pts.iter().map(|p| glam::DVec2::new(p[0], p[1])).collect(),
+            gpu: Arc::new(pts.iter().map(|p| [p[0] as f32, p[1] as f32]).collect()),
+            version: 0,
+            note: None,
+        })),
+        ..Default::default()
+    };
+    (ctx, data)
+}
+
+/// Whether some pixel within ±2 of (x, y) of a 480-wide figure is light blue (the
+/// elementary-interval lines: blue well above red).
+fn blue_near(px: &[u8], x: usize, y: usize) -> bool {
+    (y - 2..=y + 2).any(|yy| {
+        (x - 2..=x + 2).any(|xx| {
+            let i = (yy * 480 + xx) * 3;
+            let (r, b) = (px[i] as i32, px[i + 2] as i32);
+            b > r + 40 && b > 150
+        })
+    })
+}
+
+#[test]
+fn pattern_draws_the_elementary_interval_grid_when_the_column_asks() {
+    // Plot area at scale 1: x in 70..470, y in 50..450 (y = 1 at the top).
+    let (x_half, y_10) = (70 + 200, 50 + 360); // x = 0.5, y = 0.1: on the k = 1 vertical
+    let (x_10, y_half) = (70 + 40, 50 + 200); // x = 0.1, y = 0.5: on the horizontal
+    let (plain_ctx, data) = four_points(None);
+    let (_, plain, plain_text) =
+        decode(&panel_png(PanelKind::Pattern, &plain_ctx, &data, 1).unwrap());
+    assert!(!blue_near(&plain, x_half, y_10));
+    assert!(!blue_near(&plain, x_10, y_half));
+    assert!(!plain_text.iter().any(|(k, _)| k == "elementary intervals"));
+
+    // k = 1 with N = 4 = 2²: 2 × 2 boxes, one line each way through the centre.
+    let (ctx, data) = four_points(Some(1));
+    let (_, grid, text) = decode(&panel_png(PanelKind::Pattern, &ctx, &data, 1).unwrap());
+    assert!(blue_near(&grid, x_half, y_10));
+    assert!(blue_near(&grid, x_10, y_half));
+    assert_eq!(
+        meta(&text, "elementary intervals"),
+        "k = 1: 2×2 boxes of 2^-1 × 2^-1"
+    );
+    // k = 2: 4 × 1 boxes: verticals at 0.25, 0.5, 0.75 and no horizontal.
+    let (ctx, data) = four_points(Some(2));
+    let (_, tall, _) = decode(&panel_png(PanelKind::Pattern, &ctx, &data, 1).unwrap());
+    assert!(blue_near(&tall, x_half, y_10));
+    assert!(blue_near(&tall, 70 + 100, y_10));
+    assert!(!blue_near(&tall, x_10, y_half));
+    // Three points are not a power of two: nothing drawn.
+    let (ctx, mut data) = four_points(Some(1));
+    let p = data.points.as_ref().unwrap();
+    data.points = Some(Arc::new(PointsData {
+        points: p.points[..3].to_vec(),
+        gpu: Arc::new(p.gpu[..3].to_vec()),
+        version: 0,
+        note: None,
+    }));
+    let (_, three, _) = decode(&panel_png(PanelKind::Pattern, &ctx, &data, 1).unwrap());
+    assert!(!blue_near(&three, x_half, y_10));
+}
+
+#[test]
+fn the_net_scene_columns_carry_their_elementary_k_into_the_figures() {
+    let scene = Scene::load(std::path::Path::new(
+        "assets/scenes/net-0-4-2-elementary-intervals.ron",
+    ))
+    .unwrap();
+    for (c, want) in [(0, Some(0)), (2, Some(2)), (4, Some(4))] {
+        let ctx = FigureContext::new(&scene, c, "net").unwrap();
+        assert_eq!(ctx.elementary_k, want);
+    }
 }

@@ -2,7 +2,8 @@
 //!
 //! Loads the scene, evaluates its compute graph synchronously, and writes, for every column,
 //! each figure its visible panels show (PNG, SVG, CSV), the column composite, and the
-//! comparison of all columns, printing one line per file. The periodograms of all columns
+//! comparison of all columns, printing one line per file. The 1D sampling-theorem figures
+//! belong to column 0 only (the view does not depend on the column). The periodograms of all columns
 //! share one colour range (the union of their automatic ranges), as locked scales do in
 //! the GUI. Same scene → byte-identical files.
 
@@ -159,17 +160,16 @@ pub fn run(args: &RenderArgs) -> Result<(), CliError> {
         path: args.out.display().to_string(),
         source: source_err,
     })?;
-    let kinds = PanelKind::available(&scene);
-    let composite = PanelKind::composite(&scene);
-    if kinds.is_empty() {
+    if PanelKind::available(&scene).is_empty() {
         eprintln!(
             "warning: {source} shows none of the panels render draws (pattern, spectrum, zone \
-             plate, filter, cost view with convergence); nothing written"
+             plate, filter, cost view with convergence, sampling theorem); nothing written"
         );
     }
+    let composite = PanelKind::comparison(&scene);
     let s = args.scale;
-    for (ctx, data) in &columns {
-        for &kind in &kinds {
+    for (c, (ctx, data)) in columns.iter().enumerate() {
+        for kind in PanelKind::available_in(&scene, c) {
             for &f in &formats {
                 let (name, bytes) = match f {
                     Format::Png => (
@@ -190,8 +190,9 @@ pub fn run(args: &RenderArgs) -> Result<(), CliError> {
                 write(&args.out.join(name), &bytes)?;
             }
         }
-        if !composite.is_empty() && formats.contains(&Format::Png) {
-            let bytes = column_png(&composite, ctx, data, s).map_err(export_err)?;
+        let own = PanelKind::composite_in(&scene, c);
+        if !own.is_empty() && formats.contains(&Format::Png) {
+            let bytes = column_png(&own, ctx, data, s).map_err(export_err)?;
             write(&args.out.join(column_file_name(ctx, s)), &bytes)?;
         }
     }

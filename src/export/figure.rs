@@ -17,6 +17,13 @@
 //!   signal, filter, scale and `Software: samplescope <version>`. Never timings.
 //! - **Determinism.** The same inputs give byte-identical PNG and SVG: no clocks, no hash
 //!   ordering, nothing random.
+//! - **The 1D sampling theorem.** The `theorem-*` kinds draw the column-independent
+//!   [`TheoremView`] (computed for column 0 only, when the scene shows the theorem panel):
+//!   the signal with its samples and reconstruction, the spectrum with the replicas, the
+//!   filter and the Nyquist lines, and the reconstructed spectrum. Their titles say what is
+//!   plotted, a caption line under the plot gives the pre- and post-aliasing terms, and their
+//!   metadata holds the 1D signal, rate, filter and every error term instead of the 2D
+//!   pattern, N and seed (which do not apply to them; nor do their file names carry them).
 //! - **Images.** Periodograms and zone-plate images are drawn nearest-neighbour into the
 //!   plotting area of the bitmap; in SVG they are embedded as PNG (`<image>` with a data URI,
 //!   pixelated rendering), at the data's own resolution.
@@ -28,6 +35,7 @@ mod svg;
 mod text;
 
 use super::ExportError;
+use crate::core::signal::theorem::TheoremView;
 use crate::scene::graph::{
     ConvergencePoint, ErrorData, NodeKind, NodeResult, NodeValue, PointsData, ReconData,
     ReferenceData, ResponseData, SpectrumData,
@@ -68,11 +76,19 @@ pub enum PanelKind {
     Response,
     /// RMSE against samples per pixel (log–log).
     Convergence,
+    /// The 1D sampling theorem: f(x), the samples f(nT) as stems and the reconstruction
+    /// f_r(x).
+    TheoremSignal,
+    /// The 1D sampling theorem: |F(ω)|, the replicas F(ω − k f_s) (one colour per k), the
+    /// filter's gain |G(ω)| and the Nyquist lines ±f_s/2, with a legend beside the plot.
+    TheoremSpectrum,
+    /// The 1D sampling theorem: the reconstructed spectrum |F_r(ω)| against |F(ω)|.
+    TheoremReconstructed,
 }
 
 impl PanelKind {
     /// Every kind, in the order `render` writes them.
-    pub const ALL: [PanelKind; 9] = [
+    pub const ALL: [PanelKind; 12] = [
         PanelKind::Pattern,
         PanelKind::Spectrum,
         PanelKind::Raps,
@@ -82,7 +98,23 @@ impl PanelKind {
         PanelKind::Kernel,
         PanelKind::Response,
         PanelKind::Convergence,
+        PanelKind::TheoremSignal,
+        PanelKind::TheoremSpectrum,
+        PanelKind::TheoremReconstructed,
     ];
+
+    /// The figures of the 1D sampling-theorem panel.
+    pub const THEOREM: [PanelKind; 3] = [
+        PanelKind::TheoremSignal,
+        PanelKind::TheoremSpectrum,
+        PanelKind::TheoremReconstructed,
+    ];
+
+    /// Whether this is a figure of the 1D sampling-theorem panel: its data does not depend
+    /// on the column and exists for column 0 only.
+    pub fn is_theorem(self) -> bool {
+        PanelKind::THEOREM.contains(&self)
+    }
 
     /// Name used in file names and metadata.
     pub fn name(self) -> &'static str {
@@ -96,23 +128,32 @@ impl PanelKind {
             PanelKind::Kernel => "kernel",
             PanelKind::Response => "response",
             PanelKind::Convergence => "convergence",
+            PanelKind::TheoremSignal => "theorem-signal",
+            PanelKind::TheoremSpectrum => "theorem-spectrum",
+            PanelKind::TheoremReconstructed => "theorem-reconstructed",
         }
     }
 
     /// Size at scale 1, in pixels (width, height). Every kind is 510 pixels high so that
-    /// figures sit side by side in a composite; image and pattern plots are square.
+    /// figures sit side by side in a composite; image and pattern plots are square. The
+    /// theorem's spectrum is wider by its legend column.
     pub fn base_size(self) -> (u32, u32) {
         match self {
             PanelKind::Pattern | PanelKind::Reconstruction | PanelKind::Reference => (480, 510),
             PanelKind::Spectrum | PanelKind::Error => (590, 510),
-            PanelKind::Raps | PanelKind::Kernel | PanelKind::Response | PanelKind::Convergence => {
-                (640, 510)
-            }
+            PanelKind::Raps
+            | PanelKind::Kernel
+            | PanelKind::Response
+            | PanelKind::Convergence
+            | PanelKind::TheoremSignal
+            | PanelKind::TheoremReconstructed => (640, 510),
+            PanelKind::TheoremSpectrum => (820, 510),
         }
     }
 
-    /// The figures a scene computes, in [`PanelKind::ALL`] order: what `render` writes for
-    /// every column.
+    /// The figures a scene computes, in [`PanelKind::ALL`] order (the theorem figures when
+    /// the scene shows the theorem panel; they exist for column 0 only, see
+    /// [`PanelKind::available_in`]).
     pub fn available(scene: &Scene) -> Vec<PanelKind> {
         let p = scene.panels;
         let fx = scene.effects;
@@ -126,12 +167,25 @@ impl PanelKind {
                 PanelKind::Reference | PanelKind::Error => recon && fx.error,
                 PanelKind::Kernel | PanelKind::Response => p.filter,
                 PanelKind::Convergence => p.cost && fx.convergence,
+                PanelKind::TheoremSignal
+                | PanelKind::TheoremSpectrum
+                | PanelKind::TheoremReconstructed => p.theorem,
             })
             .collect()
     }
 
+    /// The figures column `column` of `scene` has: [`PanelKind::available`] without the
+    /// theorem figures for every column but the first. What `render` writes for the column.
+    pub fn available_in(scene: &Scene, column: usize) -> Vec<PanelKind> {
+        let mut kinds = PanelKind::available(scene);
+        kinds.retain(|k| column == 0 || !k.is_theorem());
+        kinds
+    }
+
     /// The figures of a column composite: one per visible panel as the GUI first shows it
-    /// (pattern, periodogram, reconstruction, kernel and response).
+    /// (pattern, periodogram, reconstruction, kernel and response), then the theorem's
+    /// signal, spectrum and reconstructed spectrum (column 0 only: see
+    /// [`PanelKind::composite_in`]).
     pub fn composite(scene: &Scene) -> Vec<PanelKind> {
         let p = scene.panels;
         let mut out = Vec::new();
@@ -148,7 +202,27 @@ impl PanelKind {
             out.push(PanelKind::Kernel);
             out.push(PanelKind::Response);
         }
+        if p.theorem {
+            out.extend(PanelKind::THEOREM);
+        }
         out
+    }
+
+    /// The composite of column `column`: [`PanelKind::composite`] without the theorem
+    /// figures for every column but the first.
+    pub fn composite_in(scene: &Scene, column: usize) -> Vec<PanelKind> {
+        let mut kinds = PanelKind::composite(scene);
+        kinds.retain(|k| column == 0 || !k.is_theorem());
+        kinds
+    }
+
+    /// The figures of the comparison (every column one row, the same figures in each): the
+    /// composite figures every column has, so the theorem figures only when the scene has a
+    /// single column.
+    pub fn comparison(scene: &Scene) -> Vec<PanelKind> {
+        let mut kinds = PanelKind::composite(scene);
+        kinds.retain(|k| scene.columns.len() == 1 || !k.is_theorem());
+        kinds
     }
 }
 
@@ -217,6 +291,10 @@ pub struct FigureContext {
     pub spectrum_colormap: FigureColormap,
     /// Plot |H| in dB instead of linear.
     pub response_db: bool,
+    /// Draw the elementary intervals 2^k × 2^(m−k) (N = 2^m) under the points of the pattern
+    /// figure with this k (the column's `elementary_k`; nothing is drawn when N is not a
+    /// power of two; k above m is taken as m).
+    pub elementary_k: Option<u32>,
 }
 
 impl FigureContext {
@@ -275,6 +353,7 @@ impl FigureContext {
             spectrum_range: None,
             spectrum_colormap: FigureColormap::Viridis,
             response_db: false,
+            elementary_k: col.elementary_k,
         })
     }
 
@@ -359,6 +438,8 @@ pub struct ColumnData {
     pub response: Option<Arc<ResponseData>>,
     /// RMSE against samples per pixel (its timings are never drawn).
     pub convergence: Option<Arc<Vec<ConvergencePoint>>>,
+    /// The 1D sampling-theorem view (column 0 only, when the scene shows the theorem panel).
+    pub theorem: Option<Arc<TheoremView>>,
 }
 
 impl ColumnData {
@@ -375,6 +456,7 @@ impl ColumnData {
                 Ok(NodeValue::Error(v)) => d.error = Some(v.clone()),
                 Ok(NodeValue::Response(v)) => d.response = Some(v.clone()),
                 Ok(NodeValue::Convergence(v)) => d.convergence = Some(v.clone()),
+                Ok(NodeValue::Theorem(v)) => d.theorem = Some(v.clone()),
                 // Values no figure draws (statistics, samples, …) and failed nodes.
                 _ => {}
             }
@@ -392,6 +474,9 @@ impl ColumnData {
             PanelKind::Error => self.error.is_some(),
             PanelKind::Kernel | PanelKind::Response => self.response.is_some(),
             PanelKind::Convergence => self.convergence.is_some(),
+            PanelKind::TheoremSignal
+            | PanelKind::TheoremSpectrum
+            | PanelKind::TheoremReconstructed => self.theorem.is_some(),
         }
     }
 }
@@ -434,7 +519,89 @@ pub fn figure_title(kind: PanelKind, ctx: &FigureContext, data: &ColumnData) -> 
         PanelKind::Kernel => "kernel h(x)".to_string(),
         PanelKind::Response => "frequency response |H(ω)|".to_string(),
         PanelKind::Convergence => format!("RMSE vs samples per pixel, {}", ctx.column_title),
+        PanelKind::TheoremSignal | PanelKind::TheoremSpectrum | PanelKind::TheoremReconstructed => {
+            let what = match kind {
+                PanelKind::TheoremSignal => "f(x), samples f(nT), reconstruction f_r(x)",
+                PanelKind::TheoremSpectrum => "|F(ω)|, replicas F(ω − k·f_s), filter |G(ω)|",
+                _ => "reconstructed spectrum |F_r(ω)| vs |F(ω)|",
+            };
+            match &data.theorem {
+                Some(v) => format!("{what}: {}", theorem_setup(v)),
+                None => what.to_string(),
+            }
+        }
     }
+}
+
+/// "signal (params), f_s = …, filter": the theorem view's settings in words.
+fn theorem_setup(v: &TheoremView) -> String {
+    let s = &v.settings;
+    let params = s
+        .signal
+        .params()
+        .iter()
+        .map(|(n, x, _)| format!("{n} {x}"))
+        .collect::<Vec<_>>()
+        .join(", ");
+    format!(
+        "{} ({params}), f_s = {}, {} filter",
+        s.signal.name(),
+        s.rate,
+        s.filter.name()
+    )
+}
+
+/// The caption line under the theorem figures: the pre- and post-aliasing terms, absolute
+/// and relative to the signal's energy (power, for periodic signals).
+pub fn theorem_caption(v: &TheoremView) -> String {
+    let e = &v.errors;
+    let unit = if e.periodic { "power" } else { "energy" };
+    format!(
+        "pre-aliasing {:.3e} ({:.3} % of {unit}) · post-aliasing {:.3e} ({:.3} %) · Nyquist f_s/2 = {}",
+        e.pre_aliasing,
+        100.0 * e.relative(e.pre_aliasing),
+        e.post_aliasing,
+        100.0 * e.relative(e.post_aliasing),
+        0.5 * v.settings.rate
+    )
+}
+
+/// The theorem view's settings and error terms as metadata.
+fn theorem_metadata(v: &TheoremView) -> Vec<(String, String)> {
+    let s = &v.settings;
+    let e = &v.errors;
+    let unit = if e.periodic { "power" } else { "energy" };
+    let term = |name: &str, x: f64| {
+        (
+            name.to_string(),
+            format!("{x:e} ({} % of the signal's {unit})", 100.0 * e.relative(x)),
+        )
+    };
+    vec![
+        (
+            "signal".into(),
+            ron::to_string(&s.signal).unwrap_or_else(|_| s.signal.name().into()),
+        ),
+        (
+            "sampling rate".into(),
+            format!("{} samples per unit", s.rate),
+        ),
+        (
+            "filter".into(),
+            ron::to_string(&s.filter).unwrap_or_else(|_| s.filter.name().into()),
+        ),
+        ("extent".into(), format!("x in [-{0}, {0}]", s.extent)),
+        (format!("signal {unit}"), format!("{:e}", e.signal_energy)),
+        term("pre-aliasing", e.pre_aliasing),
+        term("post-aliasing", e.post_aliasing),
+        term("smoothing", e.smoothing),
+        term("lost above Nyquist", e.lost),
+        term("total error", e.total),
+        (
+            "error band".into(),
+            format!("|omega| <= {}, tail <= {:e}", e.band, e.tail_bound),
+        ),
+    ]
 }
 
 /// The metadata of a figure, in a fixed order: (keyword, value).
@@ -452,7 +619,34 @@ pub fn metadata(
         ),
         ("figure".to_string(), kind.name().to_string()),
     ];
+    if kind.is_theorem() {
+        m.push(("scene".into(), ctx.scene_title.clone()));
+        if let Some(v) = &data.theorem {
+            m.extend(theorem_metadata(v));
+        }
+        m.push(("scale".into(), scale.to_string()));
+        return m;
+    }
     m.extend(context_metadata(ctx));
+    if kind == PanelKind::Pattern {
+        if let Some(grid) = data
+            .points
+            .as_ref()
+            .and_then(|p| elementary_grid(ctx.elementary_k, p.points.len()))
+        {
+            m.push((
+                "elementary intervals".into(),
+                format!(
+                    "k = {}: {}×{} boxes of 2^-{} × 2^-{}",
+                    grid.0.trailing_zeros(),
+                    grid.0,
+                    grid.1,
+                    grid.0.trailing_zeros(),
+                    grid.1.trailing_zeros()
+                ),
+            ));
+        }
+    }
     if kind == PanelKind::Spectrum {
         if let Some(s) = &data.spectrum {
             let (lo, hi) = ctx.spectrum_range.unwrap_or(s.auto_range);
@@ -461,6 +655,18 @@ pub fn metadata(
     }
     m.push(("scale".into(), scale.to_string()));
     m
+}
+
+/// The elementary-interval grid (columns, rows) = (2^k, 2^(m−k)) for `k` and `n` = 2^m
+/// points (k above m taken as m); `None` without a k or when `n` is not a power of two.
+pub(crate) fn elementary_grid(k: Option<u32>, n: usize) -> Option<(usize, usize)> {
+    let k = k?;
+    if !n.is_power_of_two() {
+        return None;
+    }
+    let m = n.trailing_zeros();
+    let k = k.min(m);
+    Some((1usize << k, 1usize << (m - k)))
 }
 
 /// The scene, column, pattern, N, seed, signal and filter of a context as metadata.
@@ -536,6 +742,9 @@ pub fn panel_svg(
 /// | kernel | `x,h` |
 /// | response | `omega,magnitude` (|H(ω)|/|H(0)|, linear) |
 /// | convergence | `spp,rmse` |
+/// | theorem-signal | `series,x,value`: series `f` (the signal), `sample` (f(nT) at x = nT), `f_r` (the reconstruction) |
+/// | theorem-spectrum | `series,omega,magnitude`: `F` (\|F\|), `replica_k` (\|F(ω − k f_s)\|, k = −3..3, k ≠ 0), `G` (\|G\|); line spectra: `line_k` (the lines of replica k, k = 0 the signal's) and `G` |
+/// | theorem-reconstructed | `series,omega,magnitude`: `F` and `F_r`; line spectra: `F_line` and `F_r_line` |
 pub fn panel_csv(
     kind: PanelKind,
     _ctx: &FigureContext,
@@ -547,6 +756,7 @@ pub fn panel_csv(
 /// The file name of figure `kind` of a column:
 /// `{scene}_{column}_n{N}_seed{S}_{kind}[@{scale}x][.{ext}]`, every part sanitised
 /// (`scale` is given for PNG and SVG, `None` for CSV; an empty `ext` gives no extension).
+/// The theorem figures, which depend on no column, are `{scene}_{kind}[@{scale}x][.{ext}]`.
 pub fn panel_file_name(
     kind: PanelKind,
     ctx: &FigureContext,
@@ -559,6 +769,9 @@ pub fn panel_file_name(
     } else {
         format!(".{}", sanitize(ext))
     };
+    if kind.is_theorem() {
+        return format!("{}_{}{s}{ext}", ctx.scene_name, kind.name());
+    }
     format!(
         "{}_{}_n{}_seed{}_{}{s}{ext}",
         ctx.scene_name,

@@ -241,7 +241,6 @@ impl Snapshot {
     }
 
     fn try_run(&self, req: Request, dir: &Path) -> Result<Done, String> {
-        let kinds = PanelKind::composite(&self.scene);
         // (file name, bytes) or clipboard image.
         enum Made {
             File(String, Vec<u8>),
@@ -284,6 +283,7 @@ impl Snapshot {
                 }
             }
             (Target::Column { column }, out) => {
+                let kinds = PanelKind::composite_in(&self.scene, column);
                 let ctx = self.context(column)?;
                 let data = self.data(column)?;
                 match out {
@@ -302,6 +302,7 @@ impl Snapshot {
                 }
             }
             (Target::Comparison, out) => {
+                let kinds = PanelKind::comparison(&self.scene);
                 let mut cols = Vec::with_capacity(self.scene.columns.len());
                 for c in 0..self.scene.columns.len() {
                     cols.push((self.context(c)?, self.data(c)?.clone()));

@@ -6,7 +6,9 @@ use crate::core::signal::theorem::{
     AliasingErrors, PairKind, Reconstructor, Signal1D, TheoremSettings, TheoremView,
     PAIR_SCALE_RANGE, PAIR_SHIFT_RANGE,
 };
+use crate::export::figure::PanelKind;
 use crate::scene::graph::{NodeResult, NodeValue};
+use crate::ui::figures;
 use eframe::egui::{self, Color32};
 use egui_plot::{Legend, Line, Plot, Points, VLine};
 use std::sync::Arc;
@@ -79,20 +81,32 @@ impl TheoremPanel {
         let width = (ui.available_width() / 3.0 - 8.0).max(160.0);
         let height = 190.0;
         // The numbers first, so that they stay in view when the panel is short.
+        ui.horizontal(|ui| {
+            // The view belongs to column 0 (it does not depend on the column).
+            figures::panel_menu_ui(ui, 0, &PanelKind::THEOREM);
+            ui.weak("figures of the three plots below (Ctrl+S over a plot saves it)");
+        });
         errors_ui(ui, &v.errors, v.settings.rate);
         ui.horizontal_top(|ui| {
-            ui.vertical(|ui| {
+            let signal = ui.vertical(|ui| {
                 ui.strong("Signal f, samples f(nT), reconstruction f_r");
                 signal_plot_ui(ui, v, width, height);
             });
-            ui.vertical(|ui| {
+            let spectrum = ui.vertical(|ui| {
                 ui.strong("Spectrum: |F|, replicas F(ω − k·f_s), |G|");
                 spectrum_plot_ui(ui, v, width, height);
             });
-            ui.vertical(|ui| {
+            let recon = ui.vertical(|ui| {
                 ui.strong("Reconstructed spectrum |G·T·F_s|");
                 recon_spectrum_plot_ui(ui, v, width, height);
             });
+            for (r, kind) in [
+                (signal.response.rect, PanelKind::TheoremSignal),
+                (spectrum.response.rect, PanelKind::TheoremSpectrum),
+                (recon.response.rect, PanelKind::TheoremReconstructed),
+            ] {
+                figures::register_panel(ui.ctx(), r, 0, kind);
+            }
         });
         ui.separator();
         ui.horizontal_top(|ui| {

@@ -110,6 +110,57 @@ pub(crate) fn panel_csv(kind: PanelKind, d: &ColumnData) -> Result<String, Expor
             let pts: Vec<[f64; 2]> = c.iter().map(|p| [p.spp as f64, p.rmse]).collect();
             curve("spp,rmse", &pts, kind)
         }
+        PanelKind::TheoremSignal | PanelKind::TheoremSpectrum | PanelKind::TheoremReconstructed => {
+            let v = d.theorem.as_ref().ok_or_else(|| missing(kind))?;
+            let sp = &v.spectrum;
+            let mut series: Vec<(String, &[[f64; 2]])> = Vec::new();
+            let header = match kind {
+                PanelKind::TheoremSignal => {
+                    series.push(("f".into(), &v.signal));
+                    series.push(("sample".into(), &v.samples));
+                    series.push(("f_r".into(), &v.reconstruction));
+                    "series,x,value"
+                }
+                PanelKind::TheoremSpectrum => {
+                    if !sp.original.is_empty() {
+                        series.push(("F".into(), &sp.original));
+                    }
+                    for (k, c) in &sp.replicas {
+                        series.push((format!("replica_{k}"), c));
+                    }
+                    for (k, c) in &sp.lines {
+                        series.push((format!("line_{k}"), c));
+                    }
+                    series.push(("G".into(), &sp.gain));
+                    "series,omega,magnitude"
+                }
+                _ => {
+                    if sp.original.is_empty() {
+                        if let Some((_, c)) = sp.lines.iter().find(|(k, _)| *k == 0) {
+                            series.push(("F_line".into(), c));
+                        }
+                        series.push(("F_r_line".into(), &sp.reconstructed_lines));
+                    } else {
+                        series.push(("F".into(), &sp.original));
+                        series.push(("F_r".into(), &sp.reconstructed));
+                    }
+                    "series,omega,magnitude"
+                }
+            };
+            if series.iter().all(|(_, c)| c.is_empty()) {
+                return Err(ExportError::EmptyData {
+                    figure: kind.name(),
+                    reason: "the curves are empty".into(),
+                });
+            }
+            let mut out = format!("{header}\n");
+            for (name, c) in &series {
+                for p in c.iter() {
+                    let _ = writeln!(out, "{name},{},{}", p[0], p[1]);
+                }
+            }
+            Ok(out)
+        }
     }
 }
 

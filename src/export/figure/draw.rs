@@ -4,10 +4,16 @@
 //! [`TITLE_H`] pixels, then a chart with [`MARGIN`] on every side, [`Y_LABEL`] pixels for the
 //! y tick labels and description and [`X_LABEL`] pixels for the x ones. With the base sizes of
 //! [`PanelKind::base_size`] the plotting area of the pattern and image figures is a
-//! 400 × 400 square and that of the line plots 560 × 400.
+//! 400 × 400 square and that of the line plots 560 × 400. The theorem figures keep a
+//! [`CAPTION_LINE`] band under the chart for the aliasing numbers, and the theorem's spectrum
+//! a [`LEGEND_PART`] column right of it for its legend (nine entries would hide the curves).
 
 use super::text::CrispText;
-use super::{figure_title, ColumnData, FigureColormap, FigureContext, PanelKind, Rgb};
+use super::{
+    elementary_grid, figure_title, theorem_caption, ColumnData, FigureColormap, FigureContext,
+    PanelKind, Rgb,
+};
+use crate::core::signal::theorem::TheoremView;
 use crate::export::ExportError;
 use crate::scene::graph::ImageData;
 use plotters::coord::types::RangedCoordf64;
@@ -42,6 +48,28 @@ const GUIDE: RGBColor = RGBColor(150, 150, 150);
 const NYQUIST: RGBColor = RGBColor(200, 60, 60);
 /// The points of a pattern.
 const INK: RGBColor = RGBColor(20, 20, 30);
+/// The elementary-interval grid under the points (the GUI's overlay colour).
+const INTERVALS: RGBColor = RGBColor(120, 160, 220);
+/// The reconstruction f_r and its spectrum (the theorem panel's colour).
+const RECON: RGBColor = RGBColor(230, 120, 20);
+/// The replicas k = −3..=3 of the theorem's spectrum (k = 0, the signal, is drawn in [`INK`]);
+/// the theorem panel's colours.
+const REPLICA_COLOURS: [RGBColor; 7] = [
+    RGBColor(148, 103, 189),
+    RGBColor(44, 160, 44),
+    RGBColor(255, 127, 14),
+    RGBColor(31, 119, 180),
+    RGBColor(214, 39, 40),
+    RGBColor(23, 190, 207),
+    RGBColor(188, 189, 34),
+];
+/// Height of the caption line under the theorem figures' charts.
+const CAPTION_LINE: u32 = 26;
+/// Width of the legend column of the theorem's spectrum figure.
+const LEGEND_PART: u32 = 180;
+/// Sample markers are drawn up to this many samples (beyond, the stems alone: the markers
+/// would merge into a band).
+const MAX_MARKERS: usize = 400;
 
 /// An image placed in an SVG figure: `image` shown over the pixel rectangle (x, y, w, h).
 pub(crate) struct SvgImage {
@@ -240,6 +268,24 @@ fn check_data(kind: PanelKind, d: &ColumnData) -> Result<(), ExportError> {
                 return Err(empty(kind, "no point with spp > 0 and a positive RMSE"));
             }
         }
+        PanelKind::TheoremSignal | PanelKind::TheoremSpectrum | PanelKind::TheoremReconstructed => {
+            let v = d.theorem.as_ref().ok_or_else(|| missing(kind))?;
+            let sp = &v.spectrum;
+            let any = |c: &[[f64; 2]]| c.iter().any(|p| p[0].is_finite() && p[1].is_finite());
+            let ok = match kind {
+                PanelKind::TheoremSignal => any(&v.signal),
+                PanelKind::TheoremSpectrum => {
+                    any(&sp.gain) && (any(&sp.original) || sp.lines.iter().any(|(_, c)| any(c)))
+                }
+                _ => any(&sp.original) || any(&sp.reconstructed_lines),
+            };
+            if !ok {
+                return Err(empty(kind, "the curves have no finite point"));
+            }
+            if !(v.settings.rate.is_finite() && v.settings.rate > 0.0) {
+                return Err(empty(kind, "the sampling rate is not positive"));
+            }
+        }
     }
     Ok(())
 }
@@ -258,7 +304,7 @@ fn draw<DB: DrawingBackend>(
     title(&title_area, &figure_title(kind, ctx, data), look, kind)?;
     // `check_data` has run: the unwraps below are on data it found present.
     match kind {
-        PanelKind::Pattern => pattern(&body, data, look),
+        PanelKind::Pattern => pattern(&body, ctx, data, look),
         PanelKind::Spectrum => {
             let s = data.spectrum.as_ref().ok_or_else(|| missing(kind))?;
             let (lo, hi) = ordered_range(ctx.spectrum_range.unwrap_or(s.auto_range));
@@ -348,6 +394,17 @@ fn draw<DB: DrawingBackend>(
                 .collect();
             convergence(&body, &pts, look)
         }
+        PanelKind::TheoremSignal | PanelKind::TheoremSpectrum | PanelKind::TheoremReconstructed => {
+            let v = data.theorem.as_ref().ok_or_else(|| missing(kind))?;
+            let (_, h) = body.dim_in_pixel();
+            let (plot, caption) = body.split_vertically(h - look.u(CAPTION_LINE));
+            fitted_text(&caption, &theorem_caption(v), DESC_PX, look, kind)?;
+            match kind {
+                PanelKind::TheoremSignal => theorem_signal(&plot, v, look),
+                PanelKind::TheoremSpectrum => theorem_spectrum(&plot, v, look),
+                _ => theorem_reconstructed(&plot, v, look),
+            }
+        }
     }
 }
 
@@ -358,9 +415,20 @@ fn title<DB: DrawingBackend>(
     look: Look,
     kind: PanelKind,
 ) -> Result<(), ExportError> {
+    fitted_text(area, text, TITLE_PX, look, kind)
+}
+
+/// `text` centred in `area`, at `start_px` (× scale) or smaller until it fits the width.
+fn fitted_text<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    text: &str,
+    start_px: f64,
+    look: Look,
+    kind: PanelKind,
+) -> Result<(), ExportError> {
     let (w, h) = area.dim_in_pixel();
     let room = w.saturating_sub(2 * look.u(MARGIN));
-    let mut px = TITLE_PX;
+    let mut px = start_px;
     let mut style = look.text(px);
     while px > 8.0 {
         let (tw, _) = area
@@ -430,6 +498,7 @@ fn axes<DB: DrawingBackend>(
 
 fn pattern<DB: DrawingBackend>(
     body: &DrawingArea<DB, Shift>,
+    ctx: &FigureContext,
     data: &ColumnData,
     look: Look,
 ) -> Result<(), ExportError> {
@@ -438,6 +507,18 @@ fn pattern<DB: DrawingBackend>(
     let pts = &data.points.as_ref().ok_or_else(|| missing(kind))?.points;
     let mut ch = chart(body, 0.0..1.0, 0.0..1.0, look, kind)?;
     axes(&mut ch, "x", "y", false, false, look, kind)?;
+    if let Some((cols, rows)) = elementary_grid(ctx.elementary_k, pts.len()) {
+        let thin = look.line(INTERVALS, 1);
+        let verticals = (1..cols).map(|i| {
+            let x = i as f64 / cols as f64;
+            PathElement::new(vec![(x, 0.0), (x, 1.0)], thin)
+        });
+        let horizontals = (1..rows).map(|j| {
+            let y = j as f64 / rows as f64;
+            PathElement::new(vec![(0.0, y), (1.0, y)], thin)
+        });
+        ch.draw_series(verticals.chain(horizontals)).map_err(de)?;
+    }
     let (xr, _) = ch.plotting_area().get_pixel_range();
     let side = (xr.end - xr.start) as f64;
     let radius = (side / (pts.len() as f64).sqrt() * 0.18)
@@ -881,6 +962,288 @@ fn convergence<DB: DrawingBackend>(
     )
     .map_err(de)?;
     Ok(())
+}
+
+/// The colour of replica k (k = 0, the signal itself, in ink).
+fn replica_colour(k: i64) -> RGBColor {
+    if k == 0 {
+        INK
+    } else {
+        REPLICA_COLOURS[(k + 3).clamp(0, 6) as usize]
+    }
+}
+
+/// The largest finite second coordinate of the curves (0 when none).
+fn max_of<'a>(curves: impl Iterator<Item = &'a [[f64; 2]]>) -> f64 {
+    curves
+        .flat_map(|c| c.iter())
+        .filter(|p| p[0].is_finite() && p[1].is_finite())
+        .map(|p| p[1])
+        .fold(0.0, f64::max)
+}
+
+/// A magnitude axis from 0 to a little above `hi` (0..1 when `hi` is not positive).
+fn magnitude_range(hi: f64) -> Range<f64> {
+    if hi.is_finite() && hi > 0.0 {
+        0.0..hi * 1.08
+    } else {
+        0.0..1.0
+    }
+}
+
+/// Stems from 0 to each point, with a filled marker of `radius` (× scale) on top when there
+/// are at most [`MAX_MARKERS`]; labelled `label` in the legend.
+fn stems<DB: DrawingBackend>(
+    ch: &mut ChartContext<'_, DB, Cartesian2d<RangedCoordf64, RangedCoordf64>>,
+    pts: &[(f64, f64)],
+    colour: RGBColor,
+    radius: u32,
+    label: &str,
+    look: Look,
+    kind: PanelKind,
+) -> Result<(), ExportError> {
+    let de = |e| draw_err(kind, e);
+    let stem = look.line(colour, 1);
+    let anno = ch
+        .draw_series(
+            pts.iter()
+                .map(|&(x, y)| PathElement::new(vec![(x, 0.0), (x, y)], stem)),
+        )
+        .map_err(de)?;
+    let r = look.u(radius);
+    anno.label(label)
+        .legend(move |(x, y)| Circle::new((x + look.i(10), y), r, colour.filled()));
+    if pts.len() <= MAX_MARKERS {
+        ch.draw_series(pts.iter().map(|&p| Circle::new(p, r, colour.filled())))
+            .map_err(de)?;
+    }
+    Ok(())
+}
+
+/// The vertical Nyquist lines ±f_s/2 over the y range `y`, labelled once.
+fn nyquist_lines<DB: DrawingBackend>(
+    ch: &mut ChartContext<'_, DB, Cartesian2d<RangedCoordf64, RangedCoordf64>>,
+    rate: f64,
+    y: &Range<f64>,
+    look: Look,
+    kind: PanelKind,
+) -> Result<(), ExportError> {
+    let red = look.line(NYQUIST, 1);
+    let half = 0.5 * rate;
+    ch.draw_series([
+        PathElement::new(vec![(-half, y.start), (-half, y.end)], red),
+        PathElement::new(vec![(half, y.start), (half, y.end)], red),
+    ])
+    .map_err(|e| draw_err(kind, e))?
+    .label("Nyquist ±f_s/2")
+    .legend(move |(x, y)| PathElement::new([(x, y), (x + look.i(20), y)], red));
+    Ok(())
+}
+
+fn theorem_signal<DB: DrawingBackend>(
+    body: &DrawingArea<DB, Shift>,
+    v: &TheoremView,
+    look: Look,
+) -> Result<(), ExportError> {
+    let kind = PanelKind::TheoremSignal;
+    let de = |e| draw_err(kind, e);
+    let ext = v.settings.extent;
+    let f = finite(&v.signal);
+    let fr = finite(&v.reconstruction);
+    let samples = finite(&v.samples);
+    let y = padded(f.iter().chain(&fr).chain(&samples).map(|p| p.1), &[0.0]);
+    let mut ch = chart(body, -ext..ext, y, look, kind)?;
+    axes(&mut ch, "x (units)", "value", true, false, look, kind)?;
+    ch.draw_series(LineSeries::new(
+        [(-ext, 0.0), (ext, 0.0)],
+        look.line(GUIDE, 1),
+    ))
+    .map_err(de)?;
+    let grey = look.line(RGBColor(110, 110, 110), 2);
+    ch.draw_series(LineSeries::new(f, grey))
+        .map_err(de)?
+        .label("f(x)")
+        .legend(move |(x, y)| PathElement::new([(x, y), (x + look.i(20), y)], grey));
+    stems(&mut ch, &samples, DATA, 3, "samples f(nT)", look, kind)?;
+    let orange = look.line(RECON, 2);
+    ch.draw_series(LineSeries::new(fr, orange))
+        .map_err(de)?
+        .label("reconstruction f_r(x)")
+        .legend(move |(x, y)| PathElement::new([(x, y), (x + look.i(20), y)], orange));
+    legend_box(&mut ch, SeriesLabelPosition::UpperRight, look, kind)
+}
+
+/// How an entry of the legend column is drawn.
+enum Mark {
+    Line(ShapeStyle),
+    Dot(RGBColor),
+}
+
+fn theorem_spectrum<DB: DrawingBackend>(
+    body: &DrawingArea<DB, Shift>,
+    v: &TheoremView,
+    look: Look,
+) -> Result<(), ExportError> {
+    let kind = PanelKind::TheoremSpectrum;
+    let de = |e| draw_err(kind, e);
+    let sp = &v.spectrum;
+    let (w, _) = body.dim_in_pixel();
+    let (main, legend_area) = body.split_horizontally(w - look.u(LEGEND_PART));
+    let hi = max_of(
+        std::iter::once(sp.original.as_slice())
+            .chain(std::iter::once(sp.gain.as_slice()))
+            .chain(sp.replicas.iter().map(|(_, c)| c.as_slice()))
+            .chain(sp.lines.iter().map(|(_, c)| c.as_slice())),
+    );
+    let y = magnitude_range(hi);
+    let wm = sp.omega_max;
+    let mut ch = chart(&main, -wm..wm, y.clone(), look, kind)?;
+    axes(
+        &mut ch,
+        "ω (cycles per unit)",
+        "magnitude",
+        true,
+        false,
+        look,
+        kind,
+    )?;
+    let mut entries: Vec<(String, Mark)> = Vec::new();
+    for (k, c) in &sp.replicas {
+        let style = look.line(replica_colour(*k), 2);
+        ch.draw_series(LineSeries::new(finite(c), style))
+            .map_err(de)?;
+        let label = if *k < 0 {
+            format!("F(ω + {}·f_s)", -k)
+        } else {
+            format!("F(ω − {k}·f_s)")
+        };
+        entries.push((label, Mark::Line(style)));
+    }
+    for (k, c) in &sp.lines {
+        let colour = replica_colour(*k);
+        let name = if *k == 0 {
+            "|F| (lines)".to_string()
+        } else {
+            format!("lines, k = {k}")
+        };
+        stems(&mut ch, &finite(c), colour, 3, &name, look, kind)?;
+        entries.push((name, Mark::Dot(colour)));
+    }
+    if !sp.original.is_empty() {
+        let style = look.line(INK, 3);
+        ch.draw_series(LineSeries::new(finite(&sp.original), style))
+            .map_err(de)?;
+        entries.insert(0, ("|F(ω)|".to_string(), Mark::Line(style)));
+    }
+    let gain = look.line(RGBColor(110, 110, 110), 2);
+    ch.draw_series(LineSeries::new(finite(&sp.gain), gain))
+        .map_err(de)?;
+    entries.push(("|G(ω)| (filter)".to_string(), Mark::Line(gain)));
+    nyquist_lines(&mut ch, v.settings.rate, &y, look, kind)?;
+    entries.push((
+        "Nyquist ±f_s/2".to_string(),
+        Mark::Line(look.line(NYQUIST, 1)),
+    ));
+    legend_column(&legend_area, &entries, look, kind)
+}
+
+/// The legend as a column of entries (a line or dot sample, then the label) from the top of
+/// `area`, level with the plot.
+fn legend_column<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    entries: &[(String, Mark)],
+    look: Look,
+    kind: PanelKind,
+) -> Result<(), ExportError> {
+    let de = |e| draw_err(kind, e);
+    let style = look.text(TICK_PX).pos(Pos::new(HPos::Left, VPos::Center));
+    let x0 = look.i(8);
+    let step = look.i(24);
+    for (i, (label, mark)) in entries.iter().enumerate() {
+        let y = look.i(MARGIN + 12) + step * i as i32;
+        match mark {
+            Mark::Line(s) => area
+                .draw(&PathElement::new(vec![(x0, y), (x0 + look.i(24), y)], *s))
+                .map_err(de)?,
+            Mark::Dot(c) => area
+                .draw(&Circle::new((x0 + look.i(12), y), look.u(4), c.filled()))
+                .map_err(de)?,
+        }
+        area.draw_text(label, &style, (x0 + look.i(32), y))
+            .map_err(de)?;
+    }
+    Ok(())
+}
+
+fn theorem_reconstructed<DB: DrawingBackend>(
+    body: &DrawingArea<DB, Shift>,
+    v: &TheoremView,
+    look: Look,
+) -> Result<(), ExportError> {
+    let kind = PanelKind::TheoremReconstructed;
+    let de = |e| draw_err(kind, e);
+    let sp = &v.spectrum;
+    let original_lines: &[[f64; 2]] = sp
+        .lines
+        .iter()
+        .find(|(k, _)| *k == 0)
+        .map(|(_, c)| c.as_slice())
+        .unwrap_or(&[]);
+    let hi = max_of(
+        [
+            sp.original.as_slice(),
+            sp.reconstructed.as_slice(),
+            original_lines,
+            sp.reconstructed_lines.as_slice(),
+        ]
+        .into_iter(),
+    );
+    let y = magnitude_range(hi);
+    let wm = sp.omega_max;
+    let mut ch = chart(body, -wm..wm, y.clone(), look, kind)?;
+    axes(
+        &mut ch,
+        "ω (cycles per unit)",
+        "magnitude",
+        true,
+        false,
+        look,
+        kind,
+    )?;
+    let grey = RGBColor(110, 110, 110);
+    if !sp.original.is_empty() {
+        let f = look.line(grey, 2);
+        ch.draw_series(LineSeries::new(finite(&sp.original), f))
+            .map_err(de)?
+            .label("|F(ω)|")
+            .legend(move |(x, y)| PathElement::new([(x, y), (x + look.i(20), y)], f));
+        let r = look.line(RECON, 2);
+        ch.draw_series(LineSeries::new(finite(&sp.reconstructed), r))
+            .map_err(de)?
+            .label("|F_r(ω)|")
+            .legend(move |(x, y)| PathElement::new([(x, y), (x + look.i(20), y)], r));
+    } else {
+        let r = look.u(5);
+        ch.draw_series(
+            finite(original_lines)
+                .into_iter()
+                .map(|p| Circle::new(p, r, grey.stroke_width(look.u(2)))),
+        )
+        .map_err(de)?
+        .label("|F| (lines)")
+        .legend(move |(x, y)| Circle::new((x + look.i(10), y), r, grey.stroke_width(look.u(2))));
+        stems(
+            &mut ch,
+            &finite(&sp.reconstructed_lines),
+            RECON,
+            3,
+            "|F_r| (lines)",
+            look,
+            kind,
+        )?;
+    }
+    nyquist_lines(&mut ch, v.settings.rate, &y, look, kind)?;
+    legend_box(&mut ch, SeriesLabelPosition::UpperRight, look, kind)
 }
 
 #[cfg(test)]
