@@ -257,3 +257,90 @@ fn scene_without_drawable_panels_warns_and_writes_nothing() {
     assert!(o.stdout.is_empty());
     assert!(files(&out).is_empty());
 }
+
+/// A one-column scene showing only the 1D sampling-theorem panel (a Gaussian sampled at 3,
+/// box reconstruction: both aliasing terms non-zero).
+const THEOREM_SCENE: &str = r#"(
+    title: "Theorem render test",
+    columns: [(pattern: (kind: "jitter", cols: 0, amount: 1.0), seed: 1)],
+    n: 64,
+    panels: (pattern: false, spectrum: false, zoneplate: false, filter: false, cost: false, theorem: true),
+    theorem: (
+        signal: (kind: "gaussian", sigma: 0.2),
+        rate: 3.0,
+        filter: (kind: "box", radius: 0.5),
+        extent: 2.0,
+        pair: (kind: gaussian, scale: 1.0, shift: 0.0),
+        vdc_rows: 4,
+    ),
+)
+"#;
+
+#[test]
+fn theorem_scene_writes_the_theorem_figures_byte_identically() {
+    let dir = temp_dir("theorem");
+    let scene = dir.join("theory.ron");
+    std::fs::write(&scene, THEOREM_SCENE).unwrap();
+    let (a, b) = (dir.join("a"), dir.join("b"));
+    for out in [&a, &b] {
+        let o = render(&[scene.to_str().unwrap(), "--out", out.to_str().unwrap()]);
+        assert!(o.status.success(), "{}", stderr(&o));
+        assert!(!stderr(&o).contains("nothing written"), "{}", stderr(&o));
+        let printed = String::from_utf8(o.stdout).unwrap();
+        assert_eq!(printed.lines().count(), files(out).len());
+    }
+    let names = files(&a);
+    assert_eq!(names, files(&b));
+    // 3 theorem figures × (png, svg, csv) + the column composite + the comparison.
+    assert_eq!(names.len(), 3 * 3 + 2, "{names:#?}");
+    for want in [
+        "theory_theorem-signal@1x.png",
+        "theory_theorem-signal@1x.svg",
+        "theory_theorem-signal.csv",
+        "theory_theorem-spectrum@1x.png",
+        "theory_theorem-spectrum.csv",
+        "theory_theorem-reconstructed@1x.svg",
+        "theory_theorem-reconstructed.csv",
+        "theory_jitter_n64_seed1_column@1x.png",
+        "theory_n64_comparison@1x.png",
+    ] {
+        assert!(
+            names.iter().any(|n| n == want),
+            "{want} missing from {names:#?}"
+        );
+    }
+    for n in &names {
+        let (x, y) = (
+            std::fs::read(a.join(n)).unwrap(),
+            std::fs::read(b.join(n)).unwrap(),
+        );
+        assert!(!x.is_empty(), "{n} is empty");
+        assert!(x == y, "{n} differs between two renders");
+    }
+    // The spectrum figure: its base size (wider by the legend) and the aliasing numbers.
+    let png = std::fs::read(a.join("theory_theorem-spectrum@1x.png")).unwrap();
+    let reader = png::Decoder::new(std::io::Cursor::new(png))
+        .read_info()
+        .unwrap();
+    let info = reader.info();
+    assert_eq!((info.width, info.height), (820, 510));
+    let text: Vec<(String, String)> = info
+        .uncompressed_latin1_text
+        .iter()
+        .map(|t| (t.keyword.clone(), t.text.clone()))
+        .chain(
+            info.utf8_text
+                .iter()
+                .map(|t| (t.keyword.clone(), t.get_text().unwrap())),
+        )
+        .collect();
+    for key in ["pre-aliasing", "post-aliasing", "signal", "sampling rate"] {
+        assert!(text.iter().any(|(k, _)| k == key), "no {key} in {text:?}");
+    }
+    let csv = std::fs::read_to_string(a.join("theory_theorem-signal.csv")).unwrap();
+    assert!(csv.starts_with("series,x,value\n"));
+    assert!(
+        csv.lines().any(|l| l.starts_with("sample,0,1")),
+        "f(0) = 1 is a sample"
+    );
+}
