@@ -440,6 +440,86 @@ mod tests {
     }
 
     #[test]
+    fn theorem_figures_save_from_column_zero_and_other_columns_composites_skip_them() {
+        use crate::core::cancel::Cancel;
+        use crate::scene::graph::Evaluator;
+        let text = r#"(title: "GUI theorem figures",
+            columns: [(pattern: (kind: "random"), seed: 1), (pattern: (kind: "random"), seed: 2)],
+            n: 16,
+            panels: (pattern: true, spectrum: false, zoneplate: false, filter: false, cost: false, theorem: true),
+            effects: (reconstruction: false, error: false, convergence: false, statistics: false))"#;
+        let scene = Scene::from_ron(text, "gui-theorem.ron").unwrap();
+        let mut results = vec![std::collections::HashMap::new(); 2];
+        Evaluator::default().evaluate(&scene, &Cancel::never(), &mut |c, kind, r| {
+            results[c].insert(kind, r);
+        });
+        let snapshot = Snapshot {
+            scene,
+            scene_name: "gui-theorem".into(),
+            columns: results.iter().map(ColumnData::from_results).collect(),
+            spectrum_range: None,
+            colormap: FigureColormap::Viridis,
+            response_db: false,
+        };
+        let dir =
+            std::env::temp_dir().join(format!("samplescope-gui-theorem-{}", std::process::id()));
+        let written = |r: Request| match snapshot.run(r, &dir) {
+            Done::Written(p) => p,
+            Done::Failed(e) => panic!("{r:?}: {e}"),
+            Done::Clipboard(..) => panic!("{r:?}: not a file"),
+        };
+        let p = written(Request {
+            target: Target::Panel {
+                column: 0,
+                kind: PanelKind::TheoremSpectrum,
+            },
+            output: Output::Csv,
+        });
+        assert!(p.ends_with("gui-theorem_theorem-spectrum.csv"), "{p:?}");
+        // Column 1 has no theorem view: its composite is its pattern alone.
+        written(Request {
+            target: Target::Column { column: 1 },
+            output: Output::Png { scale: 1 },
+        });
+        // Column 0's composite holds the theorem figures; the comparison leaves them out.
+        let p = written(Request {
+            target: Target::Column { column: 0 },
+            output: Output::Png { scale: 1 },
+        });
+        let bytes = std::fs::read(p).unwrap();
+        let info = png::Decoder::new(std::io::Cursor::new(bytes))
+            .read_info()
+            .unwrap()
+            .info()
+            .clone();
+        let want: u32 = PanelKind::composite_in(&snapshot.scene, 0)
+            .iter()
+            .map(|k| k.base_size().0)
+            .sum();
+        assert_eq!(info.width, want);
+        assert!(want > PanelKind::Pattern.base_size().0 + 3 * 600);
+        written(Request {
+            target: Target::Comparison,
+            output: Output::Png { scale: 1 },
+        });
+        let e = match snapshot.run(
+            Request {
+                target: Target::Panel {
+                    column: 1,
+                    kind: PanelKind::TheoremSignal,
+                },
+                output: Output::Png { scale: 1 },
+            },
+            &dir,
+        ) {
+            Done::Failed(e) => e,
+            _ => panic!("column 1 has no theorem figure"),
+        };
+        assert!(e.starts_with("theorem-signal"), "{e}");
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+
+    #[test]
     fn requests_queue_and_drain() {
         let ctx = egui::Context::default();
         let r = Request {
