@@ -512,8 +512,14 @@ fn theorem_view(data: &ColumnData) -> &TheoremView {
 fn theorem_figures_are_available_for_column_zero_only() {
     let scene = theorem_scene(SINC2);
     assert_eq!(PanelKind::available(&scene), PanelKind::THEOREM.to_vec());
-    assert_eq!(PanelKind::composite(&scene), PanelKind::THEOREM.to_vec());
-    assert_eq!(PanelKind::comparison(&scene), PanelKind::THEOREM.to_vec());
+    // The composites show the three plots of the sampling process, not the transform pair.
+    let three = vec![
+        PanelKind::TheoremSignal,
+        PanelKind::TheoremSpectrum,
+        PanelKind::TheoremReconstructed,
+    ];
+    assert_eq!(PanelKind::composite(&scene), three);
+    assert_eq!(PanelKind::comparison(&scene), three);
     // With a second column (and the pattern panel), only column 0 has the theorem figures.
     let mut two = quick_scene();
     two.panels.theorem = true;
@@ -579,17 +585,30 @@ fn theorem_figures_decode_at_base_size_times_scale_and_repeat_byte_for_byte() {
             assert!(meta(&text, "signal").contains("sinc-squared"));
             assert_eq!(meta(&text, "sampling rate"), "2.5 samples per unit");
             assert!(meta(&text, "filter").contains("tent"));
-            assert!(meta(&text, "Title").contains("f_s = 2.5"));
+            if kind == PanelKind::TheoremPair {
+                assert_eq!(
+                    meta(&text, "Title"),
+                    "transform pair box <-> sinc, scale a = 1, shift s = 0"
+                );
+            } else {
+                assert!(meta(&text, "Title").contains("f_s = 2.5"));
+            }
             // The 2D pattern, N and seed do not apply to the theorem's figures.
             assert!(!text.iter().any(|(k, _)| k == "pattern" || k == "seed"));
         }
         let svg = panel_svg(kind, ctx, data, 1).unwrap();
         assert_eq!(svg, panel_svg(kind, &b[0].0, &b[0].1, 1).unwrap());
         assert!(svg.contains("pre-aliasing") && svg.contains("post-aliasing"));
-        assert!(svg.contains(&format!(
+        // The caption line under the sampling plots (the pair's states its formula).
+        let caption = format!(
             "({:.3} % of energy)",
             100.0 * v.errors.relative(v.errors.pre_aliasing)
-        )));
+        );
+        assert_eq!(
+            svg.contains(&caption),
+            kind != PanelKind::TheoremPair,
+            "{kind:?}"
+        );
     }
     assert_eq!(
         panel_file_name(PanelKind::TheoremSpectrum, ctx, Some(2), "png"),
@@ -697,6 +716,48 @@ fn theorem_csv_round_trips_the_plotted_numbers() {
     );
     assert_eq!(series(&rows, "F"), sp.original);
     assert_eq!(series(&rows, "F_r"), sp.reconstructed);
+
+    let rows = parse_series(
+        &panel_csv(PanelKind::TheoremPair, ctx, data).unwrap(),
+        "series,position,value",
+    );
+    let pp = &v.pair;
+    assert_eq!(series(&rows, "p"), pp.spatial);
+    assert_eq!(series(&rows, "abs_P"), pp.magnitude);
+    assert_eq!(series(&rows, "re_P"), pp.re);
+    assert_eq!(series(&rows, "im_P"), pp.im);
+    assert!(!pp.spatial.is_empty());
+}
+
+#[test]
+fn shah_pair_figure_draws_and_exports_its_impulses() {
+    let mut scene = theorem_scene(SINC2);
+    scene.theorem.pair = samplescope::core::signal::theorem::TransformPair {
+        kind: samplescope::core::signal::theorem::PairKind::Shah,
+        scale: 1.5,
+        shift: 0.2,
+    };
+    let cols = columns(&scene);
+    let (ctx, data) = &cols[0];
+    let pp = &theorem_view(data).pair;
+    let (info, px, text) = decode(&panel_png(PanelKind::TheoremPair, ctx, data, 1).unwrap());
+    assert_eq!((info.width, info.height), (1000, 510));
+    // Re in blue, and Im (non-zero: the shift) in the reconstruction's orange.
+    assert!(has_colour(&px, [31, 119, 180]) && has_colour(&px, [230, 120, 20]));
+    assert_eq!(
+        meta(&text, "transform pair"),
+        "shah <-> shah, a = 1.5, s = 0.2"
+    );
+    let rows = parse_series(
+        &panel_csv(PanelKind::TheoremPair, ctx, data).unwrap(),
+        "series,position,value",
+    );
+    assert_eq!(series(&rows, "impulse_x"), pp.impulses_x);
+    let re: Vec<[f64; 2]> = pp.impulses_omega.iter().map(|i| [i[0], i[1]]).collect();
+    let im: Vec<[f64; 2]> = pp.impulses_omega.iter().map(|i| [i[0], i[2]]).collect();
+    assert_eq!(series(&rows, "impulse_re"), re);
+    assert_eq!(series(&rows, "impulse_im"), im);
+    assert!(series(&rows, "p").is_empty());
 }
 
 #[test]

@@ -291,8 +291,8 @@ fn theorem_scene_writes_the_theorem_figures_byte_identically() {
     }
     let names = files(&a);
     assert_eq!(names, files(&b));
-    // 3 theorem figures × (png, svg, csv) + the column composite + the comparison.
-    assert_eq!(names.len(), 3 * 3 + 2, "{names:#?}");
+    // 4 theorem figures × (png, svg, csv) + the column composite + the comparison.
+    assert_eq!(names.len(), 4 * 3 + 2, "{names:#?}");
     for want in [
         "theory_theorem-signal@1x.png",
         "theory_theorem-signal@1x.svg",
@@ -301,6 +301,8 @@ fn theorem_scene_writes_the_theorem_figures_byte_identically() {
         "theory_theorem-spectrum.csv",
         "theory_theorem-reconstructed@1x.svg",
         "theory_theorem-reconstructed.csv",
+        "theory_theorem-pair@1x.png",
+        "theory_theorem-pair.csv",
         "theory_jitter_n64_seed1_column@1x.png",
         "theory_n64_comparison@1x.png",
     ] {

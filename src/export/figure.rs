@@ -84,11 +84,14 @@ pub enum PanelKind {
     TheoremSpectrum,
     /// The 1D sampling theorem: the reconstructed spectrum |F_r(ω)| against |F(ω)|.
     TheoremReconstructed,
+    /// The theorem panel's transform pair p(x) = g(a(x − s)) and its transform P(ω) side by
+    /// side (|P|, Re P and Im P; the shah as impulses).
+    TheoremPair,
 }
 
 impl PanelKind {
     /// Every kind, in the order `render` writes them.
-    pub const ALL: [PanelKind; 12] = [
+    pub const ALL: [PanelKind; 13] = [
         PanelKind::Pattern,
         PanelKind::Spectrum,
         PanelKind::Raps,
@@ -101,13 +104,15 @@ impl PanelKind {
         PanelKind::TheoremSignal,
         PanelKind::TheoremSpectrum,
         PanelKind::TheoremReconstructed,
+        PanelKind::TheoremPair,
     ];
 
     /// The figures of the 1D sampling-theorem panel.
-    pub const THEOREM: [PanelKind; 3] = [
+    pub const THEOREM: [PanelKind; 4] = [
         PanelKind::TheoremSignal,
         PanelKind::TheoremSpectrum,
         PanelKind::TheoremReconstructed,
+        PanelKind::TheoremPair,
     ];
 
     /// Whether this is a figure of the 1D sampling-theorem panel: its data does not depend
@@ -131,6 +136,7 @@ impl PanelKind {
             PanelKind::TheoremSignal => "theorem-signal",
             PanelKind::TheoremSpectrum => "theorem-spectrum",
             PanelKind::TheoremReconstructed => "theorem-reconstructed",
+            PanelKind::TheoremPair => "theorem-pair",
         }
     }
 
@@ -148,6 +154,7 @@ impl PanelKind {
             | PanelKind::TheoremSignal
             | PanelKind::TheoremReconstructed => (640, 510),
             PanelKind::TheoremSpectrum => (820, 510),
+            PanelKind::TheoremPair => (1000, 510),
         }
     }
 
@@ -169,7 +176,8 @@ impl PanelKind {
                 PanelKind::Convergence => p.cost && fx.convergence,
                 PanelKind::TheoremSignal
                 | PanelKind::TheoremSpectrum
-                | PanelKind::TheoremReconstructed => p.theorem,
+                | PanelKind::TheoremReconstructed
+                | PanelKind::TheoremPair => p.theorem,
             })
             .collect()
     }
@@ -184,7 +192,7 @@ impl PanelKind {
 
     /// The figures of a column composite: one per visible panel as the GUI first shows it
     /// (pattern, periodogram, reconstruction, kernel and response), then the theorem's
-    /// signal, spectrum and reconstructed spectrum (column 0 only: see
+    /// signal, spectrum and reconstructed spectrum (not the transform pair; column 0 only: see
     /// [`PanelKind::composite_in`]).
     pub fn composite(scene: &Scene) -> Vec<PanelKind> {
         let p = scene.panels;
@@ -203,7 +211,11 @@ impl PanelKind {
             out.push(PanelKind::Response);
         }
         if p.theorem {
-            out.extend(PanelKind::THEOREM);
+            out.extend([
+                PanelKind::TheoremSignal,
+                PanelKind::TheoremSpectrum,
+                PanelKind::TheoremReconstructed,
+            ]);
         }
         out
     }
@@ -476,7 +488,8 @@ impl ColumnData {
             PanelKind::Convergence => self.convergence.is_some(),
             PanelKind::TheoremSignal
             | PanelKind::TheoremSpectrum
-            | PanelKind::TheoremReconstructed => self.theorem.is_some(),
+            | PanelKind::TheoremReconstructed
+            | PanelKind::TheoremPair => self.theorem.is_some(),
         }
     }
 }
@@ -519,6 +532,18 @@ pub fn figure_title(kind: PanelKind, ctx: &FigureContext, data: &ColumnData) -> 
         PanelKind::Kernel => "kernel h(x)".to_string(),
         PanelKind::Response => "frequency response |H(ω)|".to_string(),
         PanelKind::Convergence => format!("RMSE vs samples per pixel, {}", ctx.column_title),
+        PanelKind::TheoremPair => match &data.theorem {
+            Some(v) => {
+                let p = &v.settings.pair;
+                format!(
+                    "transform pair {}, scale a = {}, shift s = {}",
+                    p.kind.name(),
+                    p.scale,
+                    p.shift
+                )
+            }
+            None => "transform pair".to_string(),
+        },
         PanelKind::TheoremSignal | PanelKind::TheoremSpectrum | PanelKind::TheoremReconstructed => {
             let what = match kind {
                 PanelKind::TheoremSignal => "f(x), samples f(nT), reconstruction f_r(x)",
@@ -591,6 +616,15 @@ fn theorem_metadata(v: &TheoremView) -> Vec<(String, String)> {
             ron::to_string(&s.filter).unwrap_or_else(|_| s.filter.name().into()),
         ),
         ("extent".into(), format!("x in [-{0}, {0}]", s.extent)),
+        (
+            "transform pair".into(),
+            format!(
+                "{}, a = {}, s = {}",
+                s.pair.kind.name(),
+                s.pair.scale,
+                s.pair.shift
+            ),
+        ),
         (format!("signal {unit}"), format!("{:e}", e.signal_energy)),
         term("pre-aliasing", e.pre_aliasing),
         term("post-aliasing", e.post_aliasing),
@@ -745,6 +779,7 @@ pub fn panel_svg(
 /// | theorem-signal | `series,x,value`: series `f` (the signal), `sample` (f(nT) at x = nT), `f_r` (the reconstruction) |
 /// | theorem-spectrum | `series,omega,magnitude`: `F` (\|F\|), `replica_k` (\|F(ω − k f_s)\|, k = −3..3, k ≠ 0), `G` (\|G\|); line spectra: `line_k` (the lines of replica k, k = 0 the signal's) and `G` |
 /// | theorem-reconstructed | `series,omega,magnitude`: `F` and `F_r`; line spectra: `F_line` and `F_r_line` |
+/// | theorem-pair | `series,position,value`: `p` (x, p(x)), `abs_P`, `re_P`, `im_P` (ω, …); the shah: `impulse_x` (x, weight), `impulse_re`, `impulse_im` (ω, Re and Im of the weight) |
 pub fn panel_csv(
     kind: PanelKind,
     _ctx: &FigureContext,

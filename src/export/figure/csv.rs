@@ -110,11 +110,32 @@ pub(crate) fn panel_csv(kind: PanelKind, d: &ColumnData) -> Result<String, Expor
             let pts: Vec<[f64; 2]> = c.iter().map(|p| [p.spp as f64, p.rmse]).collect();
             curve("spp,rmse", &pts, kind)
         }
-        PanelKind::TheoremSignal | PanelKind::TheoremSpectrum | PanelKind::TheoremReconstructed => {
+        PanelKind::TheoremSignal
+        | PanelKind::TheoremSpectrum
+        | PanelKind::TheoremReconstructed
+        | PanelKind::TheoremPair => {
             let v = d.theorem.as_ref().ok_or_else(|| missing(kind))?;
             let sp = &v.spectrum;
+            let pp = &v.pair;
+            let impulse_re: Vec<[f64; 2]> =
+                pp.impulses_omega.iter().map(|i| [i[0], i[1]]).collect();
+            let impulse_im: Vec<[f64; 2]> =
+                pp.impulses_omega.iter().map(|i| [i[0], i[2]]).collect();
             let mut series: Vec<(String, &[[f64; 2]])> = Vec::new();
             let header = match kind {
+                PanelKind::TheoremPair => {
+                    if pp.impulses_x.is_empty() {
+                        series.push(("p".into(), &pp.spatial));
+                        series.push(("abs_P".into(), &pp.magnitude));
+                        series.push(("re_P".into(), &pp.re));
+                        series.push(("im_P".into(), &pp.im));
+                    } else {
+                        series.push(("impulse_x".into(), &pp.impulses_x));
+                        series.push(("impulse_re".into(), &impulse_re));
+                        series.push(("impulse_im".into(), &impulse_im));
+                    }
+                    "series,position,value"
+                }
                 PanelKind::TheoremSignal => {
                     series.push(("f".into(), &v.signal));
                     series.push(("sample".into(), &v.samples));

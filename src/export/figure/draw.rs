@@ -268,12 +268,20 @@ fn check_data(kind: PanelKind, d: &ColumnData) -> Result<(), ExportError> {
                 return Err(empty(kind, "no point with spp > 0 and a positive RMSE"));
             }
         }
-        PanelKind::TheoremSignal | PanelKind::TheoremSpectrum | PanelKind::TheoremReconstructed => {
+        PanelKind::TheoremSignal
+        | PanelKind::TheoremSpectrum
+        | PanelKind::TheoremReconstructed
+        | PanelKind::TheoremPair => {
             let v = d.theorem.as_ref().ok_or_else(|| missing(kind))?;
             let sp = &v.spectrum;
             let any = |c: &[[f64; 2]]| c.iter().any(|p| p[0].is_finite() && p[1].is_finite());
             let ok = match kind {
                 PanelKind::TheoremSignal => any(&v.signal),
+                PanelKind::TheoremPair => {
+                    let pp = &v.pair;
+                    (any(&pp.spatial) && any(&pp.magnitude))
+                        || (any(&pp.impulses_x) && !pp.impulses_omega.is_empty())
+                }
                 PanelKind::TheoremSpectrum => {
                     any(&sp.gain) && (any(&sp.original) || sp.lines.iter().any(|(_, c)| any(c)))
                 }
@@ -404,6 +412,19 @@ fn draw<DB: DrawingBackend>(
                 PanelKind::TheoremSpectrum => theorem_spectrum(&plot, v, look),
                 _ => theorem_reconstructed(&plot, v, look),
             }
+        }
+        PanelKind::TheoremPair => {
+            let v = data.theorem.as_ref().ok_or_else(|| missing(kind))?;
+            let (_, h) = body.dim_in_pixel();
+            let (plot, caption) = body.split_vertically(h - look.u(CAPTION_LINE));
+            fitted_text(
+                &caption,
+                "p(x) = g(a(x − s))  <->  P(ω) = e^(−2πiωs) G(ω/a) / |a|",
+                DESC_PX,
+                look,
+                kind,
+            )?;
+            theorem_pair(&plot, v, look)
         }
     }
 }
@@ -1243,6 +1264,85 @@ fn theorem_reconstructed<DB: DrawingBackend>(
         )?;
     }
     nyquist_lines(&mut ch, v.settings.rate, &y, look, kind)?;
+    legend_box(&mut ch, SeriesLabelPosition::UpperRight, look, kind)
+}
+
+fn theorem_pair<DB: DrawingBackend>(
+    body: &DrawingArea<DB, Shift>,
+    v: &TheoremView,
+    look: Look,
+) -> Result<(), ExportError> {
+    let kind = PanelKind::TheoremPair;
+    let de = |e| draw_err(kind, e);
+    let pp = &v.pair;
+    let (w, _) = body.dim_in_pixel();
+    let (left, right) = body.split_horizontally(w / 2);
+    let shah = !pp.impulses_x.is_empty();
+    // Space domain.
+    let spatial = if shah {
+        finite(&pp.impulses_x)
+    } else {
+        finite(&pp.spatial)
+    };
+    let y = padded(spatial.iter().map(|p| p.1), &[0.0]);
+    let mut ch = chart(&left, -pp.x_max..pp.x_max, y, look, kind)?;
+    axes(&mut ch, "x", "p(x)", true, false, look, kind)?;
+    if shah {
+        stems(
+            &mut ch,
+            &spatial,
+            DATA,
+            3,
+            "impulses, weight 1/|a|",
+            look,
+            kind,
+        )?;
+    } else {
+        let line = look.line(DATA, 2);
+        ch.draw_series(LineSeries::new(spatial, line))
+            .map_err(de)?
+            .label("p(x) = g(a(x − s))")
+            .legend(move |(x, y)| PathElement::new([(x, y), (x + look.i(20), y)], line));
+    }
+    legend_box(&mut ch, SeriesLabelPosition::UpperRight, look, kind)?;
+    // Frequency domain.
+    let (re, im): (Vec<_>, Vec<_>) = if shah {
+        (
+            pp.impulses_omega.iter().map(|i| (i[0], i[1])).collect(),
+            pp.impulses_omega.iter().map(|i| (i[0], i[2])).collect(),
+        )
+    } else {
+        (finite(&pp.re), finite(&pp.im))
+    };
+    let magnitude = finite(&pp.magnitude);
+    let has_im = im.iter().any(|p| p.1.abs() > 1e-12);
+    let y = padded(re.iter().chain(&im).chain(&magnitude).map(|p| p.1), &[0.0]);
+    let mut ch = chart(&right, -pp.omega_max..pp.omega_max, y, look, kind)?;
+    axes(&mut ch, "ω", "P(ω)", true, false, look, kind)?;
+    if shah {
+        stems(&mut ch, &re, DATA, 3, "Re P (impulses)", look, kind)?;
+        if has_im {
+            stems(&mut ch, &im, RECON, 2, "Im P (impulses)", look, kind)?;
+        }
+    } else {
+        let abs = look.line(INK, 2);
+        ch.draw_series(LineSeries::new(magnitude, abs))
+            .map_err(de)?
+            .label("|P(ω)|")
+            .legend(move |(x, y)| PathElement::new([(x, y), (x + look.i(20), y)], abs));
+        let re_style = look.line(DATA, 1);
+        ch.draw_series(LineSeries::new(re, re_style))
+            .map_err(de)?
+            .label("Re P(ω)")
+            .legend(move |(x, y)| PathElement::new([(x, y), (x + look.i(20), y)], re_style));
+        if has_im {
+            let im_style = look.line(RECON, 1);
+            ch.draw_series(LineSeries::new(im, im_style))
+                .map_err(de)?
+                .label("Im P(ω)")
+                .legend(move |(x, y)| PathElement::new([(x, y), (x + look.i(20), y)], im_style));
+        }
+    }
     legend_box(&mut ch, SeriesLabelPosition::UpperRight, look, kind)
 }
 
