@@ -214,6 +214,9 @@ pub struct Snapshot {
     pub spectrum_range: Option<(f32, f32)>,
     pub colormap: FigureColormap,
     pub response_db: bool,
+    /// The shared elementary-interval overlay of the pattern panels (a column's own
+    /// `elementary_k` takes precedence, as on screen).
+    pub elementary_k: Option<u32>,
 }
 
 impl Snapshot {
@@ -223,6 +226,7 @@ impl Snapshot {
         ctx.spectrum_range = self.spectrum_range;
         ctx.spectrum_colormap = self.colormap;
         ctx.response_db = self.response_db;
+        ctx.elementary_k = ctx.elementary_k.or(self.elementary_k);
         Ok(ctx)
     }
 
@@ -440,6 +444,24 @@ mod tests {
     }
 
     #[test]
+    fn shared_elementary_overlay_reaches_the_figure_unless_the_column_sets_its_own() {
+        let mut scene = Scene::default();
+        scene.columns = vec![crate::scene::Column::default(); 2];
+        scene.columns[1].elementary_k = Some(3);
+        let snapshot = Snapshot {
+            scene,
+            scene_name: "overlay".into(),
+            columns: Vec::new(),
+            spectrum_range: None,
+            colormap: FigureColormap::Viridis,
+            response_db: false,
+            elementary_k: Some(1),
+        };
+        assert_eq!(snapshot.context(0).unwrap().elementary_k, Some(1));
+        assert_eq!(snapshot.context(1).unwrap().elementary_k, Some(3));
+    }
+
+    #[test]
     fn theorem_figures_save_from_column_zero_and_other_columns_composites_skip_them() {
         use crate::core::cancel::Cancel;
         use crate::scene::graph::Evaluator;
@@ -460,6 +482,7 @@ mod tests {
             spectrum_range: None,
             colormap: FigureColormap::Viridis,
             response_db: false,
+            elementary_k: None,
         };
         let dir =
             std::env::temp_dir().join(format!("samplescope-gui-theorem-{}", std::process::id()));
