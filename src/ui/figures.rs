@@ -444,6 +444,57 @@ mod tests {
     }
 
     #[test]
+    fn unusable_folder_or_missing_data_fail_with_a_message_naming_them() {
+        let snapshot = Snapshot {
+            scene: Scene::default(),
+            scene_name: "bad".into(),
+            columns: vec![ColumnData::default()],
+            spectrum_range: None,
+            colormap: FigureColormap::Viridis,
+            response_db: false,
+            elementary_k: None,
+        };
+        let png = Request {
+            target: Target::Panel {
+                column: 0,
+                kind: PanelKind::Pattern,
+            },
+            output: Output::Png { scale: 1 },
+        };
+        // No points yet: refused before drawing, naming the figure.
+        match snapshot.run(png, Path::new("unused")) {
+            Done::Failed(e) => assert!(e.contains("pattern"), "{e}"),
+            _ => panic!("drawn without data"),
+        }
+        // A column that does not exist.
+        let r = Request {
+            target: Target::Column { column: 3 },
+            output: Output::Png { scale: 1 },
+        };
+        assert!(matches!(
+            snapshot.run(r, Path::new("unused")),
+            Done::Failed(_)
+        ));
+        // A folder that is a file: the error names the path.
+        let file =
+            std::env::temp_dir().join(format!("samplescope-not-a-dir-{}", std::process::id()));
+        std::fs::write(&file, b"x").unwrap();
+        let mut with_points = snapshot.clone();
+        with_points.columns[0].points =
+            Some(std::sync::Arc::new(crate::scene::graph::PointsData {
+                points: vec![glam::DVec2::new(0.5, 0.5)],
+                gpu: std::sync::Arc::new(vec![[0.5, 0.5]]),
+                version: 1,
+                note: None,
+            }));
+        match with_points.run(png, &file) {
+            Done::Failed(e) => assert!(e.contains(&file.display().to_string()), "{e}"),
+            _ => panic!("wrote into a file"),
+        }
+        let _ = std::fs::remove_file(&file);
+    }
+
+    #[test]
     fn shared_elementary_overlay_reaches_the_figure_unless_the_column_sets_its_own() {
         let mut scene = Scene::default();
         scene.columns = vec![crate::scene::Column::default(); 2];
