@@ -46,6 +46,25 @@ fn files(dir: &Path) -> Vec<String> {
     names
 }
 
+/// The files of two renders of one scene: the same names, each of `want` among them, every
+/// file non-empty and byte-identical in both. Returns the names.
+fn same_files(a: &Path, b: &Path, want: &[&str]) -> Vec<String> {
+    let names = files(a);
+    assert_eq!(names, files(b));
+    for w in want {
+        assert!(names.iter().any(|n| n == w), "{w} missing from {names:#?}");
+    }
+    for n in &names {
+        let (x, y) = (
+            std::fs::read(a.join(n)).unwrap(),
+            std::fs::read(b.join(n)).unwrap(),
+        );
+        assert!(!x.is_empty(), "{n} is empty");
+        assert!(x == y, "{n} differs between two renders");
+    }
+    names
+}
+
 fn stderr(o: &Output) -> String {
     String::from_utf8_lossy(&o.stderr).into_owned()
 }
@@ -72,32 +91,21 @@ fn render_twice_gives_byte_identical_files() {
             assert!(Path::new(line).is_file(), "{line}");
         }
     }
-    let names = files(&a);
-    assert_eq!(names, files(&b));
+    let names = same_files(
+        &a,
+        &b,
+        &[
+            "small_jitter_n256_seed1_pattern@1x.png",
+            "small_jitter_n256_seed1_spectrum@1x.svg",
+            "small_jitter_n256_seed1_raps.csv",
+            "small_halton_n256_seed0_response@1x.png",
+            "small_jitter_n256_seed1_column@1x.png",
+            "small_n256_comparison@1x.png",
+        ],
+    );
     // 2 columns × 8 figures (pattern, spectrum, raps, reconstruction, reference, error,
     // kernel, response) × (png, svg, csv) + 2 column composites + 1 comparison.
     assert_eq!(names.len(), 2 * 8 * 3 + 2 + 1, "{names:#?}");
-    for want in [
-        "small_jitter_n256_seed1_pattern@1x.png",
-        "small_jitter_n256_seed1_spectrum@1x.svg",
-        "small_jitter_n256_seed1_raps.csv",
-        "small_halton_n256_seed0_response@1x.png",
-        "small_jitter_n256_seed1_column@1x.png",
-        "small_n256_comparison@1x.png",
-    ] {
-        assert!(
-            names.iter().any(|n| n == want),
-            "{want} missing from {names:#?}"
-        );
-    }
-    for n in &names {
-        let (x, y) = (
-            std::fs::read(a.join(n)).unwrap(),
-            std::fs::read(b.join(n)).unwrap(),
-        );
-        assert!(!x.is_empty(), "{n} is empty");
-        assert!(x == y, "{n} differs between two renders");
-    }
 }
 
 #[test]
@@ -289,36 +297,25 @@ fn theorem_scene_writes_the_theorem_figures_byte_identically() {
         let printed = String::from_utf8(o.stdout).unwrap();
         assert_eq!(printed.lines().count(), files(out).len());
     }
-    let names = files(&a);
-    assert_eq!(names, files(&b));
+    let names = same_files(
+        &a,
+        &b,
+        &[
+            "theory_theorem-signal@1x.png",
+            "theory_theorem-signal@1x.svg",
+            "theory_theorem-signal.csv",
+            "theory_theorem-spectrum@1x.png",
+            "theory_theorem-spectrum.csv",
+            "theory_theorem-reconstructed@1x.svg",
+            "theory_theorem-reconstructed.csv",
+            "theory_theorem-pair@1x.png",
+            "theory_theorem-pair.csv",
+            "theory_jitter_n64_seed1_column@1x.png",
+            "theory_n64_comparison@1x.png",
+        ],
+    );
     // 4 theorem figures × (png, svg, csv) + the column composite + the comparison.
     assert_eq!(names.len(), 4 * 3 + 2, "{names:#?}");
-    for want in [
-        "theory_theorem-signal@1x.png",
-        "theory_theorem-signal@1x.svg",
-        "theory_theorem-signal.csv",
-        "theory_theorem-spectrum@1x.png",
-        "theory_theorem-spectrum.csv",
-        "theory_theorem-reconstructed@1x.svg",
-        "theory_theorem-reconstructed.csv",
-        "theory_theorem-pair@1x.png",
-        "theory_theorem-pair.csv",
-        "theory_jitter_n64_seed1_column@1x.png",
-        "theory_n64_comparison@1x.png",
-    ] {
-        assert!(
-            names.iter().any(|n| n == want),
-            "{want} missing from {names:#?}"
-        );
-    }
-    for n in &names {
-        let (x, y) = (
-            std::fs::read(a.join(n)).unwrap(),
-            std::fs::read(b.join(n)).unwrap(),
-        );
-        assert!(!x.is_empty(), "{n} is empty");
-        assert!(x == y, "{n} differs between two renders");
-    }
     // The spectrum figure: its base size (wider by the legend) and the aliasing numbers.
     let png = std::fs::read(a.join("theory_theorem-spectrum@1x.png")).unwrap();
     let reader = png::Decoder::new(std::io::Cursor::new(png))
