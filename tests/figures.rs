@@ -3,13 +3,14 @@
 
 use samplescope::core::cancel::Cancel;
 use samplescope::core::signal::theorem::TheoremView;
+use samplescope::engine::Evaluator;
 use samplescope::export::figure::{
     column_png, column_size, comparison_png, comparison_size, panel_csv, panel_file_name,
     panel_png, panel_rgba, panel_svg, ColumnData, FigureContext, PanelKind, MAX_COMPOSITE_PIXELS,
     SCALES,
 };
 use samplescope::export::ExportError;
-use samplescope::scene::graph::{Evaluator, ImageData, NodeKind, NodeResult, PointsData};
+use samplescope::scene::graph::{ImageData, NodeKind, NodeResult, PointsData};
 use samplescope::scene::Scene;
 use std::collections::HashMap;
 use std::sync::Arc;

@@ -5,7 +5,8 @@
 use glam::DVec2;
 use samplescope::core::cancel::Cancel;
 use samplescope::core::pointset::{read_points_file, OutOfRange, PointsFileError};
-use samplescope::scene::graph::{Evaluator, NodeKind, NodeValue};
+use samplescope::engine::Evaluator;
+use samplescope::scene::graph::{NodeKind, NodeValue};
 use samplescope::scene::{Column, ImportedPoints, ReconMode, Scene, SceneError};
 use std::path::{Path, PathBuf};
 

@@ -5,7 +5,8 @@
 use glam::DVec2;
 use samplescope::core::cancel::Cancel;
 use samplescope::core::signal::{Grating, Signal, StepEdge, ZonePlate};
-use samplescope::scene::graph::{Evaluator, NodeKind};
+use samplescope::engine::Evaluator;
+use samplescope::scene::graph::NodeKind;
 use samplescope::scene::{Motion, ReconMode, Scene, SceneError};
 
 /// A small scene with every panel on and a drifting zone plate.

@@ -3,8 +3,8 @@
 //! their dependents; equal inputs share one evaluation; the engine drops stale generations.
 
 use samplescope::core::cancel::Cancel;
-use samplescope::engine::Engine;
-use samplescope::scene::graph::{Evaluator, NodeKind};
+use samplescope::engine::{Engine, Evaluator};
+use samplescope::scene::graph::{self, NodeKind, NodeResult, NodeValue};
 use samplescope::scene::{Scene, SceneError, BUILTIN};
 use std::sync::Arc;
 use std::time::Duration;
@@ -104,16 +104,21 @@ fn hidden_panels_and_effects_cost_nothing() {
     assert_eq!(eval.count(NodeKind::Error), 0);
     assert_eq!(eval.count(NodeKind::Points), 1);
     assert_eq!(eval.count(NodeKind::Reconstruction), 1);
-    // Only the spectrum panel: no points node at all (the spectrum generates its realizations).
+    // Only the spectrum panel: the points node once (it is the spectrum's realization 0), and
+    // nothing of the zone plate or the filter.
     let mut s = small(Scene::builtin_default());
     s.panels.pattern = false;
     s.panels.zoneplate = false;
     s.panels.filter = false;
     let eval = Evaluator::default();
-    evaluate(&eval, &s);
+    let seen = evaluate(&eval, &s);
     assert_eq!(eval.count(NodeKind::Spectrum), 1);
+    assert_eq!(eval.count(NodeKind::Points), 1);
+    assert!(seen
+        .iter()
+        .all(|(_, k)| *k == NodeKind::Spectrum || *k == NodeKind::Points));
     for k in [
-        NodeKind::Points,
+        NodeKind::Statistics,
         NodeKind::Samples,
         NodeKind::Reconstruction,
         NodeKind::Response,
@@ -179,8 +184,8 @@ fn two_columns_with_equal_inputs_share_one_evaluation() {
 }
 
 #[test]
-fn cancelled_work_is_neither_computed_nor_cached() {
-    // A cancelled token stops evaluation before anything is computed or cached.
+fn a_cancelled_token_computes_nothing_and_completed_work_is_cached() {
+    // A token cancelled up front stops evaluation before anything is started.
     let s = small(Scene::builtin_default());
     let eval = Evaluator::default();
     let cancel = Cancel::new();
@@ -189,6 +194,255 @@ fn cancelled_work_is_neither_computed_nor_cached() {
     eval.evaluate(&s, &cancel, &mut |_, _, _| n += 1);
     assert_eq!(n, 0);
     assert!(eval.counts().iter().all(|(_, c)| *c == 0));
+    // Every node that completed is in the cache under its planned key.
+    evaluate(&eval, &s);
+    for node in graph::plan(&s).iter().flat_map(|p| p.nodes.iter()) {
+        let key = node.key.clone().unwrap();
+        assert!(eval.cached(&key).is_some(), "{:?} not cached", node.kind);
+    }
+}
+
+#[test]
+fn plan_is_derived_from_the_node_table_with_declared_inputs() {
+    // The default scene: statistics overlay off, cost view off, no theorem panel.
+    let s = small(Scene::builtin_default());
+    let plans = graph::plan(&s);
+    let kinds: Vec<NodeKind> = plans[0].nodes.iter().map(|n| n.kind).collect();
+    assert_eq!(
+        kinds,
+        [
+            NodeKind::Points,
+            NodeKind::Spectrum,
+            NodeKind::Samples,
+            NodeKind::Reconstruction,
+            NodeKind::Reference,
+            NodeKind::Error,
+            NodeKind::Response,
+        ]
+    );
+    for n in &plans[0].nodes {
+        // Inputs are exactly the table's declaration, each planned before its user.
+        let declared = (n.kind.def().inputs)(&s, 0).nodes;
+        let deps: Vec<NodeKind> = n.deps.iter().map(|(k, _)| *k).collect();
+        assert_eq!(deps, declared, "{:?}", n.kind);
+        for (k, key) in &n.deps {
+            let pos = plans[0]
+                .nodes
+                .iter()
+                .position(|m| m.key.as_ref() == Ok(key));
+            let me = plans[0].nodes.iter().position(|m| m.kind == n.kind);
+            assert!(pos < me, "{k:?} planned after {:?}", n.kind);
+        }
+    }
+}
+
+#[test]
+fn keys_are_stable_distinct_and_change_with_their_inputs_only() {
+    let s = small(Scene::builtin_default());
+    let a = graph::plan(&s);
+    assert_eq!(a, graph::plan(&s.clone()), "same scene, same keys");
+    let key = |p: &[graph::ColumnPlan], k: NodeKind| {
+        p[0].nodes
+            .iter()
+            .find(|n| n.kind == k)
+            .unwrap()
+            .key
+            .clone()
+            .unwrap()
+    };
+    // A change of the filter changes its dependents' keys only.
+    let mut s2 = s.clone();
+    s2.filter.filter.set("sigma", "0.6").unwrap();
+    let b = graph::plan(&s2);
+    for k in [
+        NodeKind::Points,
+        NodeKind::Spectrum,
+        NodeKind::Samples,
+        NodeKind::Reference,
+    ] {
+        assert_eq!(key(&a, k), key(&b, k), "{k:?}");
+    }
+    for k in [
+        NodeKind::Reconstruction,
+        NodeKind::Error,
+        NodeKind::Response,
+    ] {
+        assert_ne!(key(&a, k), key(&b, k), "{k:?}");
+    }
+    // Keys are BLAKE3 over fixed text: the same on every run and platform. This value is the
+    // key of `Samples` fields `42u32` with no inputs; it changes only if the key format does
+    // (which must also invalidate the disk cache).
+    let k = graph::key_of(NodeKind::Samples, &42u32, &[]).unwrap();
+    let again = graph::key_of(NodeKind::Samples, &42u32, &[]).unwrap();
+    assert_eq!(k, again);
+    assert_ne!(k, graph::key_of(NodeKind::Samples, &43u32, &[]).unwrap());
+    assert_ne!(k, graph::key_of(NodeKind::Points, &42u32, &[]).unwrap());
+    let mut h = blake3::Hasher::new();
+    h.update(b"samplescope-node-v1\0samples\042\0");
+    assert_eq!(k.hash, *h.finalize().as_bytes());
+}
+
+#[test]
+fn a_key_that_cannot_be_made_is_an_error_not_a_default() {
+    struct Unkeyable;
+    impl serde::Serialize for Unkeyable {
+        fn serialize<S: serde::Serializer>(&self, _: S) -> Result<S::Ok, S::Error> {
+            Err(serde::ser::Error::custom("no text for this value"))
+        }
+    }
+    let e = graph::key_of(NodeKind::Reference, &Unkeyable, &[]).unwrap_err();
+    assert!(
+        e.to_string().contains("reference") && e.to_string().contains("no text"),
+        "{e}"
+    );
+}
+
+#[test]
+fn twenty_rapid_filter_changes_evaluate_spectrum_and_reference_once() {
+    // The spectrum and the reference do not depend on the filter: their keys stay in every
+    // plan, so their jobs keep running through all 20 submits and are used.
+    let mut s = small(Scene::builtin_default());
+    s.spectrum.realizations = 8;
+    let eval = Evaluator::default();
+    let mut engine = Engine::with_evaluator(eval.clone(), Arc::new(|| {}));
+    for i in 0..20 {
+        let mut si = s.clone();
+        si.filter
+            .filter
+            .set("sigma", &format!("{}", 0.4 + 0.01 * i as f64))
+            .unwrap();
+        engine.submit(&si);
+    }
+    let updates = engine.wait(Duration::from_secs(120));
+    assert!(engine.is_idle());
+    assert_eq!(eval.count(NodeKind::Spectrum), 1);
+    assert_eq!(eval.count(NodeKind::Reference), 1);
+    assert_eq!(eval.count(NodeKind::Points), 1);
+    let last = engine.generation();
+    assert!(updates.iter().all(|u| u.generation == last));
+    for k in [
+        NodeKind::Spectrum,
+        NodeKind::Reference,
+        NodeKind::Error,
+        NodeKind::Response,
+    ] {
+        assert!(
+            updates.iter().any(|u| u.kind == k && u.progress.is_none()),
+            "{k:?} missing"
+        );
+    }
+}
+
+#[test]
+fn five_hundred_slider_steps_stay_within_the_memory_budget() {
+    let budget = 3 << 20;
+    let eval = Evaluator::new(budget, None);
+    let mut engine = Engine::with_evaluator(eval.clone(), Arc::new(|| {}));
+    let mut s = Scene::builtin_default();
+    s.n = 256;
+    s.recon.size = 48;
+    s.spectrum.size = 32;
+    let mut max = 0;
+    for i in 0..500 {
+        s.columns[0]
+            .pattern
+            .set("amount", &format!("{:?}", 1.0 - i as f64 * 1e-4))
+            .unwrap();
+        engine.submit(&s);
+        if i % 7 == 0 {
+            // Sometimes let it finish, mostly cancel in flight, as a drag does.
+            engine.wait(Duration::from_secs(30));
+        } else {
+            engine.poll();
+        }
+        max = max.max(eval.cache_bytes());
+        assert!(
+            eval.cache_bytes() <= budget,
+            "step {i}: {} bytes",
+            eval.cache_bytes()
+        );
+    }
+    engine.wait(Duration::from_secs(60));
+    max = max.max(eval.cache_bytes());
+    assert!(
+        max <= budget && max > budget / 4,
+        "cache peaked at {max} of {budget}"
+    );
+}
+
+#[test]
+fn a_dead_engine_says_so_and_nothing_waits_forever() {
+    let mut engine = Engine::with_evaluator(Evaluator::default(), Arc::new(|| {}));
+    assert!(engine.failure().is_none());
+    engine.crash_for_test();
+    let t = std::time::Instant::now();
+    // The coordinator is gone: submitting and waiting return at once with a failure.
+    let mut s = small(Scene::builtin_default());
+    s.n = 64;
+    loop {
+        engine.submit(&s);
+        engine.wait(Duration::from_secs(5));
+        if engine.failure().is_some() {
+            break;
+        }
+        assert!(
+            t.elapsed() < Duration::from_secs(20),
+            "failure never reported"
+        );
+    }
+    assert!(engine.is_idle());
+    assert!(
+        engine.failure().unwrap().contains("stopped"),
+        "{:?}",
+        engine.failure()
+    );
+}
+
+#[test]
+fn slow_nodes_publish_coarse_results_then_the_exact_final_one() {
+    // 64 realizations of a 128² spectrum take well over the partial interval on 2 cores.
+    let mut s = Scene::builtin_default();
+    s.panels.pattern = false;
+    s.panels.zoneplate = false;
+    s.panels.filter = false;
+    s.n = 2048;
+    s.spectrum.size = 128;
+    s.spectrum.realizations = 64;
+    let mut engine = Engine::with_evaluator(Evaluator::default(), Arc::new(|| {}));
+    engine.submit(&s);
+    let updates = engine.wait(Duration::from_secs(300));
+    let spectra: Vec<_> = updates
+        .iter()
+        .filter(|u| u.kind == NodeKind::Spectrum)
+        .collect();
+    let partial = spectra.iter().filter(|u| u.progress.is_some()).count();
+    assert!(partial >= 1, "no coarse result");
+    let last = spectra.last().unwrap();
+    assert!(
+        last.progress.is_none(),
+        "the last spectrum is the final one"
+    );
+    for u in &spectra[..spectra.len() - 1] {
+        let p = u.progress.unwrap();
+        assert!(p.step < p.steps && p.steps == 64);
+        assert!(u.result.accuracy.as_deref().unwrap().contains("rel. noise"));
+    }
+    // The final result is exactly what a plain evaluation computes.
+    let mut plain = None;
+    Evaluator::default().evaluate(&s, &Cancel::never(), &mut |_, k, r| {
+        if k == NodeKind::Spectrum {
+            plain = Some(r);
+        }
+    });
+    let image = |r: &NodeResult| match &r.value {
+        Ok(NodeValue::Spectrum(d)) => d.image.values.clone(),
+        other => panic!("{other:?}"),
+    };
+    let (a, b) = (image(&last.result), image(&plain.unwrap()));
+    assert!(a
+        .iter()
+        .zip(b.iter())
+        .all(|(x, y)| x.to_bits() == y.to_bits()));
 }
 
 #[test]

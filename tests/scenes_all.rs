@@ -6,7 +6,8 @@
 //! 512² resampling scenes; the whole test stays well under two minutes in the dev profile.
 
 use samplescope::core::cancel::Cancel;
-use samplescope::scene::graph::{Evaluator, NodeKind};
+use samplescope::engine::Evaluator;
+use samplescope::scene::graph::NodeKind;
 use samplescope::scene::{Scene, BUILTIN};
 use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};

@@ -326,3 +326,53 @@ fn request_serde_round_trip_and_default() {
     let json = serde_json::to_string(&d).unwrap();
     assert_eq!(serde_json::from_str::<SpectrumRequest>(&json).unwrap(), d);
 }
+
+#[test]
+fn progressive_average_reports_running_means_and_ends_bit_identical() {
+    // Reference: the plain average (same request, seed and generator) and, for each partial,
+    // the naive mean of the first d realizations in order.
+    let c = Cancel::never();
+    let (m, k, seed) = (16usize, 40usize, 7u64);
+    let req = request(m, Method::Exact, k);
+    let gen = |s: u64| Ok::<_, Infallible>(uniform(50, s));
+    let (plain, _) = average_periodogram(&req, seed, gen, &c).unwrap();
+    let mut partials: Vec<(usize, Vec<f64>)> = Vec::new();
+    let (prog, _) = average_periodogram_progressive(
+        &req,
+        seed,
+        gen,
+        &c,
+        std::time::Duration::ZERO,
+        &mut |s, d| {
+            assert_eq!(s.realizations, d);
+            partials.push((d, s.power.clone()));
+        },
+    )
+    .unwrap();
+    assert!(prog
+        .power
+        .iter()
+        .zip(&plain.power)
+        .all(|(a, b)| a.to_bits() == b.to_bits()));
+    assert!(
+        !partials.is_empty(),
+        "no partial result with a zero interval"
+    );
+    let mut last = 0;
+    for (d, power) in &partials {
+        assert!(*d > last && *d < k, "partials grow and stop before K: {d}");
+        last = *d;
+        let mut acc = vec![0.0; m * m];
+        for r in 0..*d {
+            let p = periodogram_exact(&uniform(50, derive_seed(seed, r as u64)), m, &c).unwrap();
+            acc.iter_mut().zip(&p.power).for_each(|(a, v)| *a += v);
+        }
+        for (a, b) in acc.iter().zip(power) {
+            let mean = a / *d as f64;
+            assert!(
+                (mean - b).abs() <= 1e-12 * mean.abs().max(1.0),
+                "d = {d}: {mean} vs {b}"
+            );
+        }
+    }
+}

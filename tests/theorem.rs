@@ -12,7 +12,8 @@ use samplescope::core::signal::theorem::{
     aliasing_errors, compute_view, merged_lines, samples, PairKind, Reconstructor, Signal1D,
     TheoremError, TheoremSettings, TransformPair, ERROR_BAND,
 };
-use samplescope::scene::graph::{Evaluator, NodeKind};
+use samplescope::engine::Evaluator;
+use samplescope::scene::graph::NodeKind;
 use samplescope::scene::{Scene, BUILTIN};
 use std::f64::consts::PI;
 

@@ -9,13 +9,14 @@
 
 use super::CliError;
 use samplescope::core::cancel::Cancel;
+use samplescope::engine::Evaluator;
 use samplescope::export::figure::{
     column_file_name, column_png, comparison_file_name, comparison_png, comparison_size, panel_csv,
     panel_file_name, panel_png, panel_svg, ColumnData, FigureContext, PanelKind,
     MAX_COMPOSITE_PIXELS, SCALES,
 };
 use samplescope::export::{write_file, ExportError};
-use samplescope::scene::graph::{Evaluator, NodeKind, NodeResult};
+use samplescope::scene::graph::{NodeKind, NodeResult};
 use samplescope::scene::{Scene, SceneError};
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
@@ -35,6 +36,9 @@ pub struct RenderArgs {
     /// Formats to write, comma-separated: png, svg, csv (composites are PNG only).
     #[arg(long, value_delimiter = ',', default_value = "png,svg,csv")]
     pub format: Vec<String>,
+    /// Compute reference images even if the disk cache has them (and store nothing there).
+    #[arg(long)]
+    pub no_cache: bool,
 }
 
 /// An output format.
@@ -88,10 +92,17 @@ fn write(path: &Path, bytes: &[u8]) -> Result<(), CliError> {
 fn evaluate(
     scene: &Scene,
     source: &str,
+    no_cache: bool,
 ) -> Result<Vec<HashMap<NodeKind, Arc<NodeResult>>>, CliError> {
     let mut results: Vec<HashMap<NodeKind, Arc<NodeResult>>> =
         vec![HashMap::new(); scene.columns.len()];
-    Evaluator::default().evaluate(scene, &Cancel::never(), &mut |c, kind, r| {
+    let disk = if no_cache {
+        None
+    } else {
+        samplescope::engine::default_disk_cache()
+    };
+    let eval = Evaluator::new(samplescope::engine::cache::DEFAULT_BUDGET, disk);
+    eval.evaluate(scene, &Cancel::never(), &mut |c, kind, r| {
         if let Some(col) = results.get_mut(c) {
             col.insert(kind, r);
         }
@@ -135,7 +146,7 @@ pub fn run(args: &RenderArgs) -> Result<(), CliError> {
         .file_stem()
         .map(|s| s.to_string_lossy().into_owned())
         .unwrap_or_default();
-    let results = evaluate(&scene, &source)?;
+    let results = evaluate(&scene, &source, args.no_cache)?;
 
     let mut columns: Vec<(FigureContext, ColumnData)> = Vec::new();
     for (c, res) in results.iter().enumerate() {

@@ -1,91 +1,347 @@
-//! The worker that evaluates scenes off the UI thread.
+//! Evaluating scenes: parallel, per-node cancellation, progressive results, bounded caches.
 //!
-//! The UI submits the whole scene after every change; the engine cancels the job in flight
-//! (cooperatively: the hot loops check a [`Cancel`] token), evaluates the new scene on its worker
-//! thread (rayon inside the nodes), and sends each node's result back over a channel as soon as
-//! it is ready, calling `repaint` so the UI wakes up. Every request carries a generation number;
-//! results of older generations are dropped. A panic inside a node becomes an error on that
-//! node's panel; the worker keeps running.
+//! The UI submits the whole scene after every change ([`Engine::submit`]). The engine's
+//! coordinator thread plans it (the node table of [`crate::scene::graph`]), starts every node
+//! whose inputs are ready as a job on rayon's pool (independent nodes run concurrently),
+//! and sends each result back as soon as it is ready, calling `repaint` so the UI wakes up.
+//! See [`scheduler`] for the invariants: a new scene cancels only the running jobs whose keys
+//! left the plan, a job whose key stayed keeps running and its result is used, and every
+//! completed result is cached ([`cache::MemoryCache`], bounded by bytes, least recently used
+//! first out; reference images also on disk, [`disk_cache::DiskCache`]).
+//!
+//! Slow nodes publish coarse results first ([`Progress`]): the UI shows them with
+//! "refining i/n" and their error estimate; the final result is the node's plain result, bit
+//! for bit. Every [`Update`] carries the generation and the scene snapshot it was computed
+//! for, so a panel or a saved figure never mixes one scene's labels with another's data.
+//! If the coordinator cannot start or dies, [`Engine::failure`] says so (the UI shows a banner)
+//! and [`Engine::is_idle`] is true: nothing waits forever.
+//!
+//! [`Evaluator::evaluate`] runs the same scheduler to completion on the calling thread
+//! (`samplescope render`, tests, benchmarks).
+
+pub mod cache;
+mod disk;
+pub mod disk_cache;
+pub mod scheduler;
 
 use crate::core::cancel::Cancel;
-use crate::scene::graph::{Evaluator, NodeKind, NodeResult};
+use crate::scene::graph::{NodeKey, NodeKind, NodeResult};
 use crate::scene::Scene;
-use std::sync::mpsc::{channel, Receiver, Sender};
+use scheduler::{Event, Scheduler, Shared, Sink};
+pub use scheduler::{Progress, Update};
+use std::sync::atomic::Ordering;
+use std::sync::mpsc::{channel, Receiver, RecvTimeoutError, Sender, TryRecvError};
 use std::sync::Arc;
 use std::time::{Duration, Instant};
 
-/// A node result for one column of one generation.
-#[derive(Clone)]
-pub struct Update {
-    pub generation: u64,
-    pub column: usize,
-    pub kind: NodeKind,
-    pub result: Arc<NodeResult>,
+/// Default size bound of the on-disk cache of reference images: 1 GiB.
+pub const DISK_CACHE_BYTES: u64 = 1 << 30;
+
+/// The on-disk cache of reference images at [`disk_cache::DiskCache::default_dir`] (the
+/// platform cache directory, or `$SAMPLESCOPE_CACHE_DIR`), bounded by [`DISK_CACHE_BYTES`];
+/// `None` when `SAMPLESCOPE_NO_CACHE` is set or no directory can be used (a warning says why).
+pub fn default_disk_cache() -> Option<disk_cache::DiskCache> {
+    if std::env::var_os("SAMPLESCOPE_NO_CACHE").is_some() {
+        return None;
+    }
+    let dir = disk_cache::DiskCache::default_dir()?;
+    match disk_cache::DiskCache::open(dir, DISK_CACHE_BYTES) {
+        Ok(d) => Some(d),
+        Err(e) => {
+            eprintln!("samplescope: disk cache off: {e}");
+            None
+        }
+    }
 }
 
-/// What the worker sends back.
+/// Node caches and evaluation counters, shared by every evaluation that uses them.
+#[derive(Clone)]
+pub struct Evaluator {
+    shared: Arc<Shared>,
+}
+
+impl Default for Evaluator {
+    /// An in-memory cache of [`cache::DEFAULT_BUDGET`] bytes and no disk cache.
+    fn default() -> Self {
+        Evaluator::new(cache::DEFAULT_BUDGET, None)
+    }
+}
+
+impl Evaluator {
+    /// An evaluator whose memory cache holds at most `budget` bytes, with an optional disk
+    /// cache for reference images.
+    pub fn new(budget: usize, disk: Option<disk_cache::DiskCache>) -> Self {
+        Evaluator {
+            shared: Arc::new(Shared::new(budget, disk)),
+        }
+    }
+
+    /// How many times nodes of `kind` were started (cache hits do not count; a job that was
+    /// cancelled does).
+    pub fn count(&self, kind: NodeKind) -> usize {
+        self.shared.counts[kind as usize].load(Ordering::Relaxed)
+    }
+
+    /// Every counter, by kind.
+    pub fn counts(&self) -> Vec<(NodeKind, usize)> {
+        NodeKind::ALL.iter().map(|&k| (k, self.count(k))).collect()
+    }
+
+    /// Resets every counter to zero.
+    pub fn reset_counts(&self) {
+        for c in &self.shared.counts {
+            c.store(0, Ordering::Relaxed);
+        }
+    }
+
+    /// A cached result, if any.
+    pub fn cached(&self, key: &NodeKey) -> Option<Arc<NodeResult>> {
+        self.shared.cache().peek(key)
+    }
+
+    /// Bytes held by the memory cache now.
+    pub fn cache_bytes(&self) -> usize {
+        self.shared.cache().bytes()
+    }
+
+    /// The memory cache's budget in bytes.
+    pub fn cache_budget(&self) -> usize {
+        self.shared.cache().budget()
+    }
+
+    /// Evaluates every node the scene needs (in parallel) and calls `sink` on this thread with
+    /// each final result, per column, as it becomes ready. Returns when all are ready, or as
+    /// soon as `cancel` fires (running jobs are cancelled; completed ones stay cached).
+    pub fn evaluate(
+        &self,
+        scene: &Scene,
+        cancel: &Cancel,
+        sink: &mut dyn FnMut(usize, NodeKind, Arc<NodeResult>),
+    ) {
+        if cancel.is_cancelled() {
+            return;
+        }
+        struct Finals<'a>(&'a mut dyn FnMut(usize, NodeKind, Arc<NodeResult>));
+        impl Sink for Finals<'_> {
+            fn node(&mut self, u: Update) {
+                if u.progress.is_none() {
+                    (self.0)(u.column, u.kind, u.result);
+                }
+            }
+            fn finished(&mut self, _: u64, _: Duration) {}
+        }
+        let mut sink = Finals(sink);
+        let (tx, rx) = channel();
+        let mut s = Scheduler::new(self.shared.clone(), tx);
+        s.handle(
+            Event::Submit {
+                generation: 1,
+                scene: Arc::new(scene.clone()),
+            },
+            &mut sink,
+        );
+        while !s.is_finished() {
+            if cancel.is_cancelled() {
+                s.cancel_all();
+                return;
+            }
+            match rx.recv_timeout(Duration::from_millis(20)) {
+                Ok(ev) => {
+                    s.handle(ev, &mut sink);
+                }
+                Err(RecvTimeoutError::Timeout) => {}
+                Err(RecvTimeoutError::Disconnected) => return,
+            }
+        }
+    }
+}
+
+impl Evaluator {
+    /// The serial reference: every column's plan in order, one node after the other on this
+    /// thread (no job runs beside another), with the same jobs and caches as
+    /// [`Self::evaluate`]. Benchmarks time it against the parallel scheduler; tests check
+    /// that both give the same bits. Stops at once when `cancel` fires.
+    pub fn evaluate_serial(
+        &self,
+        scene: &Scene,
+        cancel: &Cancel,
+        sink: &mut dyn FnMut(usize, NodeKind, Arc<NodeResult>),
+    ) {
+        let never = |_: crate::scene::compute::Partial| {};
+        for (c, plan) in crate::scene::graph::plan(scene).into_iter().enumerate() {
+            let mut done: std::collections::HashMap<NodeKind, Arc<NodeResult>> = Default::default();
+            for n in plan.nodes {
+                if cancel.is_cancelled() {
+                    return;
+                }
+                let key = match n.key {
+                    Ok(k) => k,
+                    Err(e) => {
+                        let r = Arc::new(NodeResult::error(e.to_string()));
+                        done.insert(n.kind, r.clone());
+                        sink(c, n.kind, r);
+                        continue;
+                    }
+                };
+                let cached = self.shared.cache().get(&key);
+                let r = match cached {
+                    Some(r) => r,
+                    None => {
+                        let deps: std::collections::HashMap<_, _> = n
+                            .deps
+                            .iter()
+                            .filter_map(|(k, _)| done.get(k).map(|r| (*k, r.clone())))
+                            .collect();
+                        let failed = deps.iter().find_map(|(k, r)| {
+                            r.value
+                                .as_ref()
+                                .err()
+                                .map(|e| format!("{} failed: {e}", k.name()))
+                        });
+                        let r = match failed {
+                            Some(e) => NodeResult::error(e),
+                            None => {
+                                self.shared.counts[n.kind as usize].fetch_add(1, Ordering::Relaxed);
+                                let start = Instant::now();
+                                let ctx = crate::scene::compute::JobCtx {
+                                    scene,
+                                    column: c,
+                                    deps: &deps,
+                                    cancel,
+                                    progress: &never,
+                                };
+                                let out = (n.kind.def().run)(&ctx);
+                                if cancel.is_cancelled() {
+                                    return;
+                                }
+                                match out {
+                                    Ok((v, accuracy)) => NodeResult {
+                                        value: Ok(v),
+                                        wall: start.elapsed(),
+                                        accuracy,
+                                    },
+                                    Err(e) => NodeResult {
+                                        value: Err(e),
+                                        wall: start.elapsed(),
+                                        accuracy: None,
+                                    },
+                                }
+                            }
+                        };
+                        let r = Arc::new(r);
+                        self.shared.cache().insert(key, r.clone());
+                        r
+                    }
+                };
+                done.insert(n.kind, r.clone());
+                sink(c, n.kind, r);
+            }
+        }
+    }
+}
+
+/// What the coordinator sends to the UI.
 enum Message {
     Node(Update),
     Finished { generation: u64, elapsed: Duration },
 }
 
-struct Request {
-    generation: u64,
-    scene: Scene,
-    cancel: Cancel,
-}
-
 /// A callback that wakes the UI (egui's `request_repaint`).
 pub type Repaint = Arc<dyn Fn() + Send + Sync>;
 
-/// Owns the worker thread and the node cache.
+struct ToUi {
+    messages: Sender<Message>,
+    repaint: Repaint,
+}
+
+impl Sink for ToUi {
+    fn node(&mut self, u: Update) {
+        let _ = self.messages.send(Message::Node(u));
+        (self.repaint)();
+    }
+    fn finished(&mut self, generation: u64, elapsed: Duration) {
+        let _ = self.messages.send(Message::Finished {
+            generation,
+            elapsed,
+        });
+        (self.repaint)();
+    }
+}
+
+/// Owns the coordinator thread; the UI's handle on evaluation.
 pub struct Engine {
-    requests: Sender<Request>,
+    events: Sender<Event>,
     messages: Receiver<Message>,
-    cancel: Cancel,
     generation: u64,
     finished_generation: u64,
     submitted_at: Option<Instant>,
     /// Time from the last submit until all of its nodes were ready.
     pub last_update_time: Option<Duration>,
-    evaluator: Arc<Evaluator>,
+    evaluator: Evaluator,
+    failure: Option<String>,
 }
 
 impl Engine {
-    /// Starts the worker thread. `repaint` is called whenever a result is ready.
+    /// Starts the coordinator with a fresh [`Evaluator`] (memory cache of the default budget;
+    /// the disk cache at [`disk_cache::DiskCache::default_dir`] unless `SAMPLESCOPE_NO_CACHE`
+    /// is set). `repaint` is called whenever a result is ready.
     pub fn new(repaint: Repaint) -> Engine {
-        let (req_tx, req_rx) = channel::<Request>();
+        Engine::with_evaluator(
+            Evaluator::new(cache::DEFAULT_BUDGET, default_disk_cache()),
+            repaint,
+        )
+    }
+
+    /// Starts the coordinator on `evaluator`'s caches.
+    pub fn with_evaluator(evaluator: Evaluator, repaint: Repaint) -> Engine {
+        let (ev_tx, ev_rx) = channel::<Event>();
         let (msg_tx, msg_rx) = channel::<Message>();
-        let evaluator = Arc::new(Evaluator::default());
-        let worker_eval = evaluator.clone();
-        std::thread::Builder::new()
+        let shared = evaluator.shared.clone();
+        let sched_tx = ev_tx.clone();
+        let started = std::thread::Builder::new()
             .name("samplescope-engine".into())
-            .spawn(move || worker(req_rx, msg_tx, worker_eval, repaint))
-            .map_err(|e| eprintln!("cannot start the engine thread: {e}"))
-            .ok();
+            .spawn(move || {
+                let mut s = Scheduler::new(shared, sched_tx);
+                let mut sink = ToUi {
+                    messages: msg_tx,
+                    repaint,
+                };
+                while let Ok(ev) = ev_rx.recv() {
+                    if !s.handle(ev, &mut sink) {
+                        break;
+                    }
+                }
+            });
+        let failure = started
+            .err()
+            .map(|e| format!("the compute engine could not start: {e}"));
         Engine {
-            requests: req_tx,
+            events: ev_tx,
             messages: msg_rx,
-            cancel: Cancel::new(),
             generation: 0,
             finished_generation: 0,
             submitted_at: None,
             last_update_time: None,
             evaluator,
+            failure,
         }
     }
 
-    /// Submits a scene; cancels the job in flight. Returns the new generation.
+    /// Submits a scene. Nodes of the previous scene whose keys are not in this one are
+    /// cancelled; the others keep running. Returns the new generation.
     pub fn submit(&mut self, scene: &Scene) -> u64 {
-        self.cancel.cancel();
-        self.cancel = Cancel::new();
         self.generation += 1;
         self.submitted_at = Some(Instant::now());
-        let _ = self.requests.send(Request {
-            generation: self.generation,
-            scene: scene.clone(),
-            cancel: self.cancel.clone(),
-        });
+        if self
+            .events
+            .send(Event::Submit {
+                generation: self.generation,
+                scene: Arc::new(scene.clone()),
+            })
+            .is_err()
+        {
+            self.died();
+        }
         self.generation
     }
 
@@ -94,16 +350,38 @@ impl Engine {
         self.generation
     }
 
-    /// Whether the latest submit has finished.
+    /// Whether the latest submit has finished (or the engine has failed: see [`Self::failure`]).
     pub fn is_idle(&self) -> bool {
-        self.finished_generation >= self.generation
+        self.failure.is_some() || self.finished_generation >= self.generation
+    }
+
+    /// Why the engine is not working, if it is not (shown as a banner).
+    pub fn failure(&self) -> Option<&str> {
+        self.failure.as_deref()
+    }
+
+    fn died(&mut self) {
+        if self.failure.is_none() {
+            self.failure = Some(
+                "the compute engine stopped unexpectedly; results are no longer updated \
+                 (restart samplescope)"
+                    .into(),
+            );
+        }
     }
 
     /// Results that arrived since the last poll, of the current generation only.
     pub fn poll(&mut self) -> Vec<Update> {
         let mut out = Vec::new();
-        while let Ok(m) = self.messages.try_recv() {
-            self.accept(m, &mut out);
+        loop {
+            match self.messages.try_recv() {
+                Ok(m) => self.accept(m, &mut out),
+                Err(TryRecvError::Empty) => break,
+                Err(TryRecvError::Disconnected) => {
+                    self.died();
+                    break;
+                }
+            }
         }
         out
     }
@@ -136,52 +414,27 @@ impl Engine {
             }
             match self.messages.recv_timeout(left) {
                 Ok(m) => self.accept(m, &mut out),
-                Err(_) => break,
+                Err(RecvTimeoutError::Timeout) => break,
+                Err(RecvTimeoutError::Disconnected) => self.died(),
             }
         }
         out
     }
 
     /// The evaluator (node cache and evaluation counters).
-    pub fn evaluator(&self) -> &Arc<Evaluator> {
+    pub fn evaluator(&self) -> &Evaluator {
         &self.evaluator
+    }
+
+    /// Makes the coordinator thread panic, as a bug would (tests of the failure banner).
+    #[doc(hidden)]
+    pub fn crash_for_test(&self) {
+        let _ = self.events.send(Event::Crash);
     }
 }
 
 impl Drop for Engine {
     fn drop(&mut self) {
-        self.cancel.cancel();
-    }
-}
-
-fn worker(
-    requests: Receiver<Request>,
-    messages: Sender<Message>,
-    eval: Arc<Evaluator>,
-    repaint: Repaint,
-) {
-    while let Ok(mut req) = requests.recv() {
-        // Skip requests that a newer one already superseded.
-        while let Ok(newer) = requests.try_recv() {
-            req = newer;
-        }
-        let start = Instant::now();
-        let generation = req.generation;
-        eval.evaluate(&req.scene, &req.cancel, &mut |column, kind, result| {
-            let _ = messages.send(Message::Node(Update {
-                generation,
-                column,
-                kind,
-                result,
-            }));
-            repaint();
-        });
-        if !req.cancel.is_cancelled() {
-            let _ = messages.send(Message::Finished {
-                generation,
-                elapsed: start.elapsed(),
-            });
-            repaint();
-        }
+        let _ = self.events.send(Event::Shutdown);
     }
 }

@@ -457,10 +457,10 @@ pub struct ColumnData {
 impl ColumnData {
     /// Picks the successful node values out of a column's results (the GUI's
     /// `ColumnResults`, or what `Evaluator::evaluate` sent for the column).
-    pub fn from_results(results: &HashMap<NodeKind, Arc<NodeResult>>) -> Self {
+    pub fn from_results<R: AsRef<NodeResult>>(results: &HashMap<NodeKind, R>) -> Self {
         let mut d = ColumnData::default();
         for r in results.values() {
-            match &r.value {
+            match &r.as_ref().value {
                 Ok(NodeValue::Points(v)) => d.points = Some(v.clone()),
                 Ok(NodeValue::Spectrum(v)) => d.spectrum = Some(v.clone()),
                 Ok(NodeValue::Reconstruction(v)) => d.reconstruction = Some(v.clone()),

@@ -1,6 +1,6 @@
 //! What each node computes, as plain data for the panels.
 
-use super::graph::{key_of, NodeKey, NodeKind, NodeResult};
+use super::graph::{NodeKind, NodeResult};
 use super::{ReconMode, Scene};
 use crate::core::cancel::Cancel;
 use glam::DVec2;
@@ -149,144 +149,61 @@ pub enum NodeValue {
     Theorem(Arc<crate::core::signal::theorem::TheoremView>),
 }
 
-/// What a node computes.
-#[derive(Debug, Clone, Copy)]
-pub enum Job {
-    Points,
-    Statistics,
-    Spectrum,
-    Samples,
-    Reconstruction,
-    Reference,
-    Error,
-    Response,
-    Convergence,
-    Theorem,
+/// The results of a node's declared inputs, by kind.
+pub type Deps = HashMap<NodeKind, Arc<NodeResult>>;
+
+/// What a job returns: its value and the accuracy reached, or the error that stopped it.
+pub type Output = Result<(NodeValue, Option<String>), String>;
+
+/// A coarse result a node publishes while it refines (step `step` of `steps`; the last step
+/// is the node's final result and is returned, not published).
+pub struct Partial {
+    pub value: NodeValue,
+    pub accuracy: Option<String>,
+    pub step: usize,
+    pub steps: usize,
 }
 
-type Output = Result<(NodeValue, Option<String>), String>;
-type Done = HashMap<NodeKind, Arc<NodeResult>>;
+/// Everything a job sees: the scene, its column, its declared inputs' results, its own
+/// cancellation token, and where to publish coarse results.
+pub struct JobCtx<'a> {
+    pub scene: &'a Scene,
+    pub column: usize,
+    pub deps: &'a Deps,
+    pub cancel: &'a Cancel,
+    pub progress: &'a (dyn Fn(Partial) + Sync),
+}
 
-/// The nodes column `c` needs, with their keys, in dependency order.
-pub fn column_nodes(scene: &Scene, c: usize) -> Vec<(NodeKey, Job)> {
-    let col = &scene.columns[c];
-    let mut out = Vec::new();
-    let panels = scene.panels;
-    let fx = scene.effects;
-    let recon_on = panels.zoneplate && fx.reconstruction;
-    // Imported points are keyed by a hash of their bits; a pattern by its parameters, N, seed.
-    let imported = col.points.as_ref().map(|p| p.content_hash());
-    let points = match imported {
-        Some(h) => key_of(NodeKind::Points, &("imported", h), &[]),
-        None => key_of(NodeKind::Points, &(&col.pattern, scene.n, col.seed), &[]),
-    };
-    let recon_uses_points = recon_on && scene.recon.mode == ReconMode::Scattered;
-    let needs_points = panels.pattern || recon_uses_points;
-    if needs_points {
-        out.push((points, Job::Points));
+impl JobCtx<'_> {
+    fn col(&self) -> &super::Column {
+        &self.scene.columns[self.column]
     }
-    if panels.pattern && fx.statistics {
-        out.push((
-            key_of(NodeKind::Statistics, &(), &[points]),
-            Job::Statistics,
-        ));
-    }
-    if panels.spectrum {
-        // The spectrum regenerates realizations r > 0 itself, so it depends on the pattern's
-        // parameters rather than on the points node.
-        let key = match imported {
-            // One realization of a file: K does not matter (see `scene::import`).
-            Some(_) => {
-                let s = scene.spectrum;
-                key_of(
-                    NodeKind::Spectrum,
-                    &(s.size, s.tolerance, s.exact, s.mask_dc),
-                    &[points],
-                )
-            }
-            None => key_of(
-                NodeKind::Spectrum,
-                &(&col.pattern, scene.n, col.seed, &scene.spectrum),
-                &[],
-            ),
-        };
-        out.push((key, Job::Spectrum));
-    }
-    if recon_on {
-        let (recon, samples) = match scene.recon.mode {
-            ReconMode::Scattered => {
-                let samples = key_of(NodeKind::Samples, &scene.signal, &[points]);
-                out.push((samples, Job::Samples));
-                (
-                    key_of(
-                        NodeKind::Reconstruction,
-                        &(&scene.filter, scene.recon.size),
-                        &[samples],
-                    ),
-                    Some(samples),
-                )
-            }
-            ReconMode::Resample { grid } => (
-                key_of(
-                    NodeKind::Reconstruction,
-                    &(grid, &scene.signal, &scene.filter, scene.recon.size),
-                    &[],
-                ),
-                None,
-            ),
-            ReconMode::Supersample { spp } => (
-                key_of(
-                    NodeKind::Reconstruction,
-                    &(
-                        &col.pattern,
-                        col.seed,
-                        spp,
-                        &scene.signal,
-                        &scene.filter,
-                        scene.recon.size,
-                    ),
-                    &[],
-                ),
-                None,
-            ),
-        };
-        let _ = samples;
-        out.push((recon, Job::Reconstruction));
-        if fx.error {
-            let reference = key_of(NodeKind::Reference, &(&scene.signal, scene.recon.size), &[]);
-            out.push((reference, Job::Reference));
-            out.push((
-                key_of(NodeKind::Error, &(), &[recon, reference]),
-                Job::Error,
-            ));
+}
+
+impl NodeValue {
+    /// Approximate heap bytes held by the value (what the cache budget counts).
+    pub fn bytes(&self) -> usize {
+        let img = |i: &ImageData| i.values.len() * 4;
+        let pairs = |v: &Vec<[f64; 2]>| v.len() * 16;
+        match self {
+            NodeValue::Points(p) => p.points.len() * 16 + p.gpu.len() * 8,
+            NodeValue::Statistics(_) => std::mem::size_of::<StatsData>(),
+            NodeValue::Spectrum(s) => img(&s.image) + pairs(&s.raps) + pairs(&s.anisotropy),
+            NodeValue::Samples(v) => v.len() * 8,
+            NodeValue::Reconstruction(r) => img(&r.image),
+            NodeValue::Reference(r) => img(&r.image) + r.method.len(),
+            NodeValue::Error(e) => img(&e.image),
+            NodeValue::Response(r) => img(&r.image) + pairs(&r.kernel) + pairs(&r.magnitude),
+            NodeValue::Convergence(c) => c.len() * std::mem::size_of::<ConvergencePoint>(),
+            NodeValue::Theorem(t) => t.approx_bytes(),
         }
     }
-    if panels.filter {
-        out.push((
-            key_of(NodeKind::Response, &scene.filter, &[]),
-            Job::Response,
-        ));
-    }
-    if panels.cost && fx.convergence {
-        out.push((
-            key_of(
-                NodeKind::Convergence,
-                &(&col.pattern, col.seed, &scene.signal, &scene.filter),
-                &[],
-            ),
-            Job::Convergence,
-        ));
-    }
-    // Column-independent: keyed by its settings alone, listed for column 0 only.
-    if panels.theorem && c == 0 {
-        out.push((key_of(NodeKind::Theorem, &scene.theorem, &[]), Job::Theorem));
-    }
-    out
 }
 
-fn theorem(scene: &Scene) -> Output {
-    let v =
-        crate::core::signal::theorem::compute_view(&scene.theorem).map_err(|e| e.to_string())?;
+pub(super) fn theorem(ctx: &JobCtx) -> Output {
+    ctx.cancel.check().map_err(|e| e.to_string())?;
+    let v = crate::core::signal::theorem::compute_view(&ctx.scene.theorem)
+        .map_err(|e| e.to_string())?;
     let e = &v.errors;
     let accuracy = Some(format!(
         "band ±{:.3} cycles/unit, tail ≤ {:.1e}",
@@ -295,7 +212,7 @@ fn theorem(scene: &Scene) -> Output {
     Ok((NodeValue::Theorem(Arc::new(v)), accuracy))
 }
 
-fn dep(done: &Done, kind: NodeKind) -> Result<&NodeValue, String> {
+fn dep(done: &Deps, kind: NodeKind) -> Result<&NodeValue, String> {
     match done.get(&kind).map(|r| &r.value) {
         Some(Ok(v)) => Ok(v),
         Some(Err(e)) => Err(format!("{} failed: {e}", kind.name())),
@@ -303,7 +220,7 @@ fn dep(done: &Done, kind: NodeKind) -> Result<&NodeValue, String> {
     }
 }
 
-fn points_of(done: &Done) -> Result<Arc<PointsData>, String> {
+fn points_of(done: &Deps) -> Result<Arc<PointsData>, String> {
     match dep(done, NodeKind::Points)? {
         NodeValue::Points(p) => Ok(p.clone()),
         _ => Err("points node has the wrong type".into()),
@@ -314,26 +231,8 @@ fn ms(d: Duration) -> f64 {
     d.as_secs_f64() * 1e3
 }
 
-impl Job {
-    /// Computes the node for column `c` given the results of its dependencies.
-    pub fn run(self, scene: &Scene, c: usize, done: &Done, cancel: &Cancel) -> Output {
-        match self {
-            Job::Points => points(scene, c, cancel),
-            Job::Statistics => statistics(done, cancel),
-            Job::Spectrum => spectrum(scene, c, cancel),
-            Job::Samples => samples(scene, done),
-            Job::Reconstruction => reconstruction(scene, c, done, cancel),
-            Job::Reference => reference(scene, cancel),
-            Job::Error => error(done),
-            Job::Response => response(scene),
-            Job::Convergence => convergence(scene, c, cancel),
-            Job::Theorem => theorem(scene),
-        }
-    }
-}
-
-fn points(scene: &Scene, c: usize, cancel: &Cancel) -> Output {
-    let col = &scene.columns[c];
+pub(super) fn points(ctx: &JobCtx) -> Output {
+    let (scene, col, cancel) = (ctx.scene, ctx.col(), ctx.cancel);
     if let Some(imp) = &col.points {
         let points = imp.to_dvec();
         let gpu = points.iter().map(|p| [p.x as f32, p.y as f32]).collect();
@@ -363,7 +262,8 @@ fn points(scene: &Scene, c: usize, cancel: &Cancel) -> Output {
     ))
 }
 
-fn statistics(done: &Done, cancel: &Cancel) -> Output {
+pub(super) fn statistics(ctx: &JobCtx) -> Output {
+    let (done, cancel) = (ctx.deps, ctx.cancel);
     let p = points_of(done)?;
     let s = crate::core::metrics::statistics(&p.points, cancel).map_err(|e| e.to_string())?;
     let md = s.min_distance.as_ref();
@@ -380,9 +280,9 @@ fn statistics(done: &Done, cancel: &Cancel) -> Output {
     ))
 }
 
-fn samples(scene: &Scene, done: &Done) -> Output {
-    let p = points_of(done)?;
-    let v = crate::core::recon::sample_signal(&scene.signal, &p.points, &Cancel::never())
+pub(super) fn samples(ctx: &JobCtx) -> Output {
+    let p = points_of(ctx.deps)?;
+    let v = crate::core::recon::sample_signal(&ctx.scene.signal, &p.points, ctx.cancel)
         .map_err(|e| e.to_string())?;
     Ok((NodeValue::Samples(Arc::new(v)), None))
 }
@@ -392,7 +292,8 @@ fn image_from_pixels(w: usize, pixels: &[f64]) -> ImageData {
     ImageData::from_y_up(w, w, |i| pixels[i] as f32)
 }
 
-fn reconstruction(scene: &Scene, c: usize, done: &Done, cancel: &Cancel) -> Output {
+pub(super) fn reconstruction(ctx: &JobCtx) -> Output {
+    let (scene, c, done, cancel) = (ctx.scene, ctx.column, ctx.deps, ctx.cancel);
     let w = scene.recon.size;
     let r = match scene.recon.mode {
         ReconMode::Scattered => {
@@ -431,7 +332,8 @@ fn reconstruction(scene: &Scene, c: usize, done: &Done, cancel: &Cancel) -> Outp
     ))
 }
 
-fn reference(scene: &Scene, cancel: &Cancel) -> Output {
+pub(super) fn reference(ctx: &JobCtx) -> Output {
+    let (scene, cancel) = (ctx.scene, ctx.cancel);
     let w = scene.recon.size;
     let r = crate::core::recon::reference_image_with(
         &scene.signal,
@@ -458,7 +360,8 @@ fn reference(scene: &Scene, cancel: &Cancel) -> Output {
     ))
 }
 
-fn error(done: &Done) -> Output {
+pub(super) fn error(ctx: &JobCtx) -> Output {
+    let done = ctx.deps;
     let (recon, reference) = match (
         dep(done, NodeKind::Reconstruction)?,
         dep(done, NodeKind::Reference)?,
@@ -502,8 +405,9 @@ pub const RESPONSE_OMEGA_MAX: f64 = 1.5;
 /// Side of the 2D response image.
 pub const RESPONSE_IMAGE_SIZE: usize = 96;
 
-fn response(scene: &Scene) -> Output {
-    let f2 = &scene.filter;
+pub(super) fn response(ctx: &JobCtx) -> Output {
+    let (f2, cancel) = (&ctx.scene.filter, ctx.cancel);
+    cancel.check().map_err(|e| e.to_string())?;
     let f = &f2.filter;
     let r = f.radius();
     let kernel: Vec<[f64; 2]> = (0..=400)
@@ -530,7 +434,10 @@ fn response(scene: &Scene) -> Output {
     let n = RESPONSE_IMAGE_SIZE;
     // Row 0 of the response image is the most negative ω_y: flip so ω_y points up.
     let image = ImageData::from_y_up(n, n, |i| (image[i].abs() / norm) as f32);
-    let m = f2.metrics().map_err(|e| e.to_string())?;
+    cancel.check().map_err(|e| e.to_string())?;
+    let m = f2
+        .metrics_with(crate::core::filter::metrics::OMEGA_MAX, cancel)
+        .map_err(|e| e.to_string())?;
     Ok((
         NodeValue::Response(Arc::new(ResponseData {
             kernel,
@@ -562,7 +469,8 @@ fn imported_needs_pattern(c: usize, what: &str) -> String {
     )
 }
 
-fn convergence(scene: &Scene, c: usize, cancel: &Cancel) -> Output {
+pub(super) fn convergence(ctx: &JobCtx) -> Output {
+    let (scene, c, cancel) = (ctx.scene, ctx.column, ctx.cancel);
     let col = &scene.columns[c];
     if col.points.is_some() {
         return Err(imported_needs_pattern(c, "the convergence curve"));
@@ -592,16 +500,17 @@ fn convergence(scene: &Scene, c: usize, cancel: &Cancel) -> Output {
     Ok((NodeValue::Convergence(Arc::new(points)), None))
 }
 
-fn spectrum(scene: &Scene, c: usize, cancel: &Cancel) -> Output {
-    use crate::core::spectrum::{
-        average_periodogram, radial_average, DcMode, Method, SpectrumRequest,
-    };
-    let col = &scene.columns[c];
+pub(super) fn spectrum(ctx: &JobCtx) -> Output {
+    use crate::core::spectrum::{average_periodogram_progressive, DcMode, Method, SpectrumRequest};
+    let (scene, cancel) = (ctx.scene, ctx.cancel);
+    let col = ctx.col();
     let mut s = scene.spectrum;
-    let imported = col.points.as_ref().map(|p| Arc::new(p.to_dvec()));
-    let n_points = imported.as_ref().map_or(scene.n, |p| p.len());
+    // Realization 0 is the points node's set: the points the pattern panel shows.
+    let points0 = points_of(ctx.deps)?;
+    let imported = col.points.is_some();
+    let n_points = points0.points.len();
     let asked_k = s.realizations;
-    if imported.is_some() {
+    if imported {
         s.realizations = 1;
     }
     let req = SpectrumRequest {
@@ -622,24 +531,67 @@ fn spectrum(scene: &Scene, c: usize, cancel: &Cancel) -> Output {
         // Two rows of the exact DFT: a measured error at ~2·N·M multiply-adds.
         error_check_budget: 2 * (n_points as u64) * (s.size as u64),
     };
-    // Realization 0 is the point set the pattern panel shows (the column's own seed).
     let first = crate::core::rng::derive_seed(col.seed, 0);
-    let (pattern, n, seed) = (col.pattern, scene.n, col.seed);
-    let (spec, report) = match &imported {
-        Some(pts) => average_periodogram(
-            &req,
-            seed,
-            |_| Ok::<_, crate::core::pattern::PatternError>(pts.as_ref().clone()),
-            cancel,
-        ),
-        None => average_periodogram(
-            &req,
-            seed,
-            move |sd| pattern.generate(n, if sd == first { seed } else { sd }),
-            cancel,
-        ),
-    }
+    let (pattern, n) = (col.pattern, scene.n);
+    let k = req.realizations;
+    let mut on_partial = |spec: &crate::core::spectrum::Spectrum, done: usize| {
+        if let Ok(data) = spectrum_data(spec, Vec::new()) {
+            (ctx.progress)(Partial {
+                value: NodeValue::Spectrum(Arc::new(data)),
+                accuracy: Some(format!(
+                    "mean of {done} of {k} realizations, rel. noise ≈ {:.2}",
+                    1.0 / (done as f64).sqrt()
+                )),
+                step: done,
+                steps: k,
+            });
+        }
+    };
+    let (spec, report) = average_periodogram_progressive(
+        &req,
+        col.seed,
+        move |sd| {
+            if sd == first || imported {
+                Ok(points0.points.clone())
+            } else {
+                pattern.generate(n, sd)
+            }
+        },
+        cancel,
+        crate::core::spectrum::average::PARTIAL_INTERVAL,
+        &mut on_partial,
+    )
     .map_err(|e| e.to_string())?;
+    let stages = report
+        .stages
+        .iter()
+        .map(|(name, d)| (name.to_string(), ms(*d)))
+        .collect();
+    let data = spectrum_data(&spec, stages)?;
+    let accuracy = match (report.tolerance, report.error) {
+        (Some(tol), Some(e)) => Some(format!(
+            "rel. L2 error {:.1e} (asked {tol:.0e}, {} freq.)",
+            e.relative_l2, e.frequencies
+        )),
+        (Some(tol), None) => Some(format!("asked {tol:.0e}")),
+        (None, _) => Some("exact DFT".into()),
+    };
+    let accuracy = if imported && asked_k > 1 {
+        Some(format!(
+            "imported points: one realization (K = 1, scene asks {asked_k}); {}",
+            accuracy.unwrap_or_default()
+        ))
+    } else {
+        accuracy
+    };
+    Ok((NodeValue::Spectrum(Arc::new(data)), accuracy))
+}
+
+/// The display data of a periodogram: log image, auto range, RAPS and anisotropy.
+fn spectrum_data(
+    spec: &crate::core::spectrum::Spectrum,
+    stages: Vec<(String, f64)>,
+) -> Result<SpectrumData, String> {
     let m = spec.m;
     let log = spec.to_display_image();
     let mut sorted: Vec<f32> = log.iter().copied().filter(|v| v.is_finite()).collect();
@@ -651,43 +603,19 @@ fn spectrum(scene: &Scene, c: usize, cancel: &Cancel) -> Output {
             .unwrap_or(0.0)
     };
     let auto_range = (pick(0.02), pick(0.998).max(pick(0.02) + 1e-3));
-    let bins = radial_average(&spec).map_err(|e| e.to_string())?;
+    let bins = crate::core::spectrum::radial_average(spec).map_err(|e| e.to_string())?;
     let raps = bins.iter().map(|b| [b.radius, b.mean_power]).collect();
     let anisotropy = bins
         .iter()
         .filter(|b| b.anisotropy_db.is_finite())
         .map(|b| [b.radius, b.anisotropy_db])
         .collect();
-    let stages = report
-        .stages
-        .iter()
-        .map(|(name, d)| (name.to_string(), ms(*d)))
-        .collect();
-    let accuracy = match (report.tolerance, report.error) {
-        (Some(tol), Some(e)) => Some(format!(
-            "rel. L2 error {:.1e} (asked {tol:.0e}, {} freq.)",
-            e.relative_l2, e.frequencies
-        )),
-        (Some(tol), None) => Some(format!("asked {tol:.0e}")),
-        (None, _) => Some("exact DFT".into()),
-    };
-    let accuracy = if imported.is_some() && asked_k > 1 {
-        Some(format!(
-            "imported points: one realization (K = 1, scene asks {asked_k}); {}",
-            accuracy.unwrap_or_default()
-        ))
-    } else {
-        accuracy
-    };
-    Ok((
-        NodeValue::Spectrum(Arc::new(SpectrumData {
-            // Row iy = ky − k_min: flip so that ky points up.
-            image: ImageData::from_y_up(m, m, |i| log[i]),
-            auto_range,
-            raps,
-            anisotropy,
-            stages,
-        })),
-        accuracy,
-    ))
+    Ok(SpectrumData {
+        // Row iy = ky − k_min: flip so that ky points up.
+        image: ImageData::from_y_up(m, m, |i| log[i]),
+        auto_range,
+        raps,
+        anisotropy,
+        stages,
+    })
 }

@@ -1,34 +1,39 @@
-//! The compute graph: nodes keyed by a hash of their inputs, cached, evaluated on demand.
+//! The compute graph: a node table, stable keys and the per-column plan.
 //!
 //! ```text
-//! Points(pattern, n, seed) ─┬─> Spectrum(points, size, tolerance, realizations)
+//! Points(pattern, n, seed) ─┬─> Spectrum(points; size, tolerance, realizations)
 //!                           ├─> Statistics(points)
-//!                           └─> Samples(points, signal) ─> Reconstruction(filter, size) ─┐
+//!                           └─> Samples(points; signal) ─> Reconstruction(filter, size) ─┐
 //!                                             Reference(signal, size) ─────────────────> Error
-//! Filter ─> Response
+//! Filter ─> Response         Convergence(pattern, seed, signal, filter)    Theorem(settings)
 //! ```
 //!
-//! [`plan`] lists, for each column, the nodes that the visible panels and the effects that are
-//! on need; a hidden panel or an effect that is off adds no node. A node's key hashes its own
-//! parameters and its inputs' keys, so a change invalidates exactly its dependents, and two
-//! columns with equal inputs share one evaluation. [`Evaluator`] counts evaluations per node
-//! kind so tests can check what was (not) computed.
+//! Every node kind has **one entry** in [`NODES`]: whether a visible panel or an effect asks
+//! for it ([`NodeDef::shown`]), which other nodes and which scene fields it reads
+//! ([`NodeDef::inputs`]), and the job that computes it ([`NodeDef::run`]). [`plan`] derives
+//! from the table, per column, the nodes to compute (the shown ones plus their inputs,
+//! transitively), in dependency order, with their keys; the job of a node gets exactly the
+//! results of the inputs it declared. Adding a node is one table entry and one job function.
+//!
+//! **Keys.** A node's key is the BLAKE3 hash of its kind, the RON text of the scene fields it
+//! reads (every field and float bit; streamed into the hasher, never shared by default) and
+//! the keys of its input nodes; a change therefore invalidates exactly its dependents, two
+//! columns with equal inputs share one key (one evaluation), and keys are stable across runs,
+//! builds and platforms (the on-disk cache relies on it). A field that cannot be serialised
+//! makes no key: the node (and its dependents) reports that error instead of running.
 
-use super::Scene;
-use crate::core::cancel::Cancel;
+use super::compute::{self, Deps, JobCtx, Output};
+use super::{ReconMode, Scene};
 use serde::Serialize;
-use std::collections::HashMap;
-use std::hash::{Hash, Hasher};
-use std::sync::atomic::{AtomicUsize, Ordering};
-use std::sync::{Arc, Mutex};
-use std::time::{Duration, Instant};
+use std::fmt::Write as _;
+use std::time::Duration;
 
 pub use super::compute::{
-    column_nodes, ConvergencePoint, ErrorData, ImageData, Job, NodeValue, PointsData, ReconData,
-    ReferenceData, ResponseData, SpectrumData, StatsData,
+    ConvergencePoint, ErrorData, ImageData, NodeValue, PointsData, ReconData, ReferenceData,
+    ResponseData, SpectrumData, StatsData,
 };
 
-/// The kinds of node.
+/// The kinds of node, in an order where every node comes after its inputs.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize)]
 pub enum NodeKind {
     Points,
@@ -45,7 +50,7 @@ pub enum NodeKind {
 }
 
 impl NodeKind {
-    /// Every kind, in evaluation order.
+    /// Every kind, in dependency (evaluation) order.
     pub const ALL: [NodeKind; 10] = [
         NodeKind::Points,
         NodeKind::Statistics,
@@ -61,41 +66,85 @@ impl NodeKind {
 
     /// Display name.
     pub fn name(self) -> &'static str {
-        match self {
-            NodeKind::Points => "points",
-            NodeKind::Statistics => "statistics",
-            NodeKind::Spectrum => "spectrum",
-            NodeKind::Samples => "samples",
-            NodeKind::Reconstruction => "reconstruction",
-            NodeKind::Reference => "reference",
-            NodeKind::Error => "error",
-            NodeKind::Response => "filter response",
-            NodeKind::Convergence => "convergence",
-            NodeKind::Theorem => "sampling theorem",
-        }
+        self.def().name
+    }
+
+    /// This kind's entry in the node table.
+    pub fn def(self) -> &'static NodeDef {
+        &NODES[self as usize]
     }
 }
 
-/// A node's identity: its kind and a hash of everything it depends on.
+/// A node's identity: its kind and the BLAKE3 hash of everything it depends on.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub struct NodeKey {
     pub kind: NodeKind,
-    pub hash: u64,
+    pub hash: [u8; 32],
 }
 
-/// Hashes `inputs` (through their RON text, which covers every field and float bit) with the
-/// keys of the nodes they depend on.
-pub fn key_of(kind: NodeKind, inputs: &impl Serialize, deps: &[NodeKey]) -> NodeKey {
-    let mut h = std::collections::hash_map::DefaultHasher::new();
-    kind.hash(&mut h);
-    ron::to_string(inputs).unwrap_or_default().hash(&mut h);
+impl NodeKey {
+    /// The hash as 64 lowercase hex digits (file names of the disk cache).
+    pub fn hex(&self) -> String {
+        let mut s = String::with_capacity(64);
+        for b in self.hash {
+            let _ = write!(s, "{b:02x}");
+        }
+        s
+    }
+}
+
+/// Why a node's key could not be made.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("{kind} node: its inputs cannot be keyed: {message}")]
+pub struct KeyError {
+    pub kind: &'static str,
+    pub message: String,
+}
+
+/// A `fmt::Write` that feeds BLAKE3 (RON text is streamed, never built in memory).
+struct HashWriter(blake3::Hasher);
+
+impl std::fmt::Write for HashWriter {
+    fn write_str(&mut self, s: &str) -> std::fmt::Result {
+        self.0.update(s.as_bytes());
+        Ok(())
+    }
+}
+
+/// A hasher fed with a node's kind and the RON text of its scene fields.
+fn fields_hasher(
+    kind: NodeKind,
+    fields: &(impl Serialize + ?Sized),
+) -> Result<blake3::Hasher, KeyError> {
+    let mut w = HashWriter(blake3::Hasher::new());
+    w.0.update(b"samplescope-node-v1\0");
+    w.0.update(kind.name().as_bytes());
+    w.0.update(b"\0");
+    ron::ser::to_writer(&mut w, fields).map_err(|e| KeyError {
+        kind: kind.name(),
+        message: e.to_string(),
+    })?;
+    w.0.update(b"\0");
+    Ok(w.0)
+}
+
+fn finish_key(kind: NodeKind, mut h: blake3::Hasher, deps: &[NodeKey]) -> NodeKey {
     for d in deps {
-        d.hash(&mut h);
+        h.update(&d.hash);
     }
     NodeKey {
         kind,
-        hash: h.finish(),
+        hash: *h.finalize().as_bytes(),
     }
+}
+
+/// The key of a `kind` node whose scene fields are `fields` and whose input nodes have `deps`.
+pub fn key_of(
+    kind: NodeKind,
+    fields: &(impl Serialize + ?Sized),
+    deps: &[NodeKey],
+) -> Result<NodeKey, KeyError> {
+    Ok(finish_key(kind, fields_hasher(kind, fields)?, deps))
 }
 
 /// A node's result: its value or the error that stopped it, what it cost, and its accuracy.
@@ -108,135 +157,299 @@ pub struct NodeResult {
     pub accuracy: Option<String>,
 }
 
+impl NodeResult {
+    /// A result that is only an error.
+    pub fn error(message: String) -> Self {
+        NodeResult {
+            value: Err(message),
+            wall: Duration::ZERO,
+            accuracy: None,
+        }
+    }
+
+    /// Approximate heap bytes held (the cache budget counts these).
+    pub fn bytes(&self) -> usize {
+        let base = std::mem::size_of::<Self>() + self.accuracy.as_ref().map_or(0, |s| s.len());
+        base + match &self.value {
+            Ok(v) => v.bytes(),
+            Err(e) => e.len(),
+        }
+    }
+}
+
+/// What a node reads: the nodes it takes results from and its scene fields (hashed).
+pub struct Inputs {
+    pub nodes: Vec<NodeKind>,
+    fields: Result<FieldsOf, KeyError>,
+}
+
+/// The scene fields of a node, already fed to the key's hasher.
+struct FieldsOf {
+    kind: NodeKind,
+    hasher: blake3::Hasher,
+}
+
+impl Inputs {
+    /// A `kind` node with input nodes `nodes` and scene fields `fields` (anything serialisable).
+    pub fn new(kind: NodeKind, nodes: &[NodeKind], fields: impl Serialize) -> Self {
+        Inputs {
+            nodes: nodes.to_vec(),
+            fields: fields_hasher(kind, &fields).map(|hasher| FieldsOf { kind, hasher }),
+        }
+    }
+
+    fn key(&self, deps: &[NodeKey]) -> Result<NodeKey, KeyError> {
+        match &self.fields {
+            Ok(f) => Ok(finish_key(f.kind, f.hasher.clone(), deps)),
+            Err(e) => Err(e.clone()),
+        }
+    }
+}
+
+/// One row of the node table.
+pub struct NodeDef {
+    pub kind: NodeKind,
+    /// Display name.
+    pub name: &'static str,
+    /// Whether a visible panel or an effect that is on asks for this node in column `c`
+    /// (nodes that only feed others say `false`; [`plan`] adds inputs itself).
+    pub shown: fn(&Scene, usize) -> bool,
+    /// The input nodes and scene fields of this node in column `c` of the scene.
+    pub inputs: fn(&Scene, usize) -> Inputs,
+    /// The job: computes the value from the scene, the column and the declared inputs.
+    pub run: fn(&JobCtx) -> Output,
+    /// Whether its result is worth keeping on disk across runs (slow, plain-image results).
+    pub disk_cached: bool,
+}
+
+fn recon_on(s: &Scene) -> bool {
+    s.panels.zoneplate && s.effects.reconstruction
+}
+
+/// The node table, indexed by `NodeKind as usize`.
+pub static NODES: [NodeDef; 10] = [
+    NodeDef {
+        kind: NodeKind::Points,
+        name: "points",
+        shown: |s, _| s.panels.pattern,
+        inputs: |s, c| {
+            let col = &s.columns[c];
+            match &col.points {
+                // Imported points are keyed by their bits, a pattern by its parameters, N, seed.
+                Some(p) => Inputs::new(NodeKind::Points, &[], ("imported", p.content_digest())),
+                None => Inputs::new(NodeKind::Points, &[], (&col.pattern, s.n, col.seed)),
+            }
+        },
+        run: compute::points,
+        disk_cached: false,
+    },
+    NodeDef {
+        kind: NodeKind::Statistics,
+        name: "statistics",
+        shown: |s, _| s.panels.pattern && s.effects.statistics,
+        inputs: |_, _| Inputs::new(NodeKind::Statistics, &[NodeKind::Points], ()),
+        run: compute::statistics,
+        disk_cached: false,
+    },
+    NodeDef {
+        kind: NodeKind::Spectrum,
+        name: "spectrum",
+        shown: |s, _| s.panels.spectrum,
+        // Realization 0 is the points node's set; realizations r > 0 are generated from the
+        // pattern (an imported file has one realization: K does not matter, see `import`).
+        inputs: |s, c| {
+            let col = &s.columns[c];
+            let sp = s.spectrum;
+            match &col.points {
+                Some(_) => Inputs::new(
+                    NodeKind::Spectrum,
+                    &[NodeKind::Points],
+                    (sp.size, sp.tolerance, sp.exact, sp.mask_dc),
+                ),
+                None => Inputs::new(
+                    NodeKind::Spectrum,
+                    &[NodeKind::Points],
+                    (&col.pattern, s.n, col.seed, sp),
+                ),
+            }
+        },
+        run: compute::spectrum,
+        disk_cached: false,
+    },
+    NodeDef {
+        kind: NodeKind::Samples,
+        name: "samples",
+        shown: |_, _| false,
+        inputs: |s, _| Inputs::new(NodeKind::Samples, &[NodeKind::Points], &s.signal),
+        run: compute::samples,
+        disk_cached: false,
+    },
+    NodeDef {
+        kind: NodeKind::Reconstruction,
+        name: "reconstruction",
+        shown: |s, _| recon_on(s),
+        inputs: |s, c| {
+            let col = &s.columns[c];
+            let (f, w) = (&s.filter, s.recon.size);
+            match s.recon.mode {
+                ReconMode::Scattered => Inputs::new(
+                    NodeKind::Reconstruction,
+                    &[NodeKind::Points, NodeKind::Samples],
+                    (f, w),
+                ),
+                ReconMode::Resample { grid } => {
+                    Inputs::new(NodeKind::Reconstruction, &[], (grid, &s.signal, f, w))
+                }
+                ReconMode::Supersample { spp } => Inputs::new(
+                    NodeKind::Reconstruction,
+                    &[],
+                    (&col.pattern, col.seed, spp, &s.signal, f, w),
+                ),
+            }
+        },
+        run: compute::reconstruction,
+        disk_cached: false,
+    },
+    NodeDef {
+        kind: NodeKind::Reference,
+        name: "reference",
+        shown: |s, _| recon_on(s) && s.effects.error,
+        inputs: |s, _| Inputs::new(NodeKind::Reference, &[], (&s.signal, s.recon.size)),
+        run: compute::reference,
+        disk_cached: true,
+    },
+    NodeDef {
+        kind: NodeKind::Error,
+        name: "error",
+        shown: |s, _| recon_on(s) && s.effects.error,
+        inputs: |_, _| {
+            Inputs::new(
+                NodeKind::Error,
+                &[NodeKind::Reconstruction, NodeKind::Reference],
+                (),
+            )
+        },
+        run: compute::error,
+        disk_cached: false,
+    },
+    NodeDef {
+        kind: NodeKind::Response,
+        name: "filter response",
+        shown: |s, _| s.panels.filter,
+        inputs: |s, _| Inputs::new(NodeKind::Response, &[], &s.filter),
+        run: compute::response,
+        disk_cached: false,
+    },
+    NodeDef {
+        kind: NodeKind::Convergence,
+        name: "convergence",
+        shown: |s, _| s.panels.cost && s.effects.convergence,
+        inputs: |s, c| {
+            let col = &s.columns[c];
+            Inputs::new(
+                NodeKind::Convergence,
+                &[],
+                (&col.pattern, col.seed, &s.signal, &s.filter),
+            )
+        },
+        run: compute::convergence,
+        disk_cached: false,
+    },
+    NodeDef {
+        kind: NodeKind::Theorem,
+        name: "sampling theorem",
+        // Column-independent: keyed by its settings alone, listed for column 0 only.
+        shown: |s, c| s.panels.theorem && c == 0,
+        inputs: |s, _| Inputs::new(NodeKind::Theorem, &[], &s.theorem),
+        run: compute::theorem,
+        disk_cached: false,
+    },
+];
+
+/// One node of a column's plan.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PlannedNode {
+    pub kind: NodeKind,
+    /// Its key, or why none could be made (then it is reported as that error, never run).
+    pub key: Result<NodeKey, KeyError>,
+    /// Its input nodes (kind and key), as declared by the table.
+    pub deps: Vec<(NodeKind, NodeKey)>,
+}
+
 /// The nodes one column needs, in dependency order.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ColumnPlan {
-    pub nodes: Vec<NodeKey>,
+    pub nodes: Vec<PlannedNode>,
+}
+
+impl ColumnPlan {
+    /// The keys of the nodes that have one.
+    pub fn keys(&self) -> impl Iterator<Item = NodeKey> + '_ {
+        self.nodes
+            .iter()
+            .filter_map(|n| n.key.as_ref().ok().copied())
+    }
+}
+
+/// The plan of column `c`: the nodes the scene shows plus their inputs, transitively, in
+/// dependency order, each with its key.
+pub fn column_plan(scene: &Scene, c: usize) -> ColumnPlan {
+    let inputs: Vec<Inputs> = NODES.iter().map(|d| (d.inputs)(scene, c)).collect();
+    // Wanted: shown, or an input of a wanted node (inputs come earlier in NodeKind order).
+    let mut wanted = [false; NodeKind::ALL.len()];
+    for d in NODES.iter().rev() {
+        let i = d.kind as usize;
+        if (d.shown)(scene, c) || wanted[i] {
+            wanted[i] = true;
+            for k in &inputs[i].nodes {
+                debug_assert!((*k as usize) < i, "inputs come first in NodeKind order");
+                wanted[*k as usize] = true;
+            }
+        }
+    }
+    let mut keys: [Option<Result<NodeKey, KeyError>>; NodeKind::ALL.len()] = Default::default();
+    let mut nodes = Vec::new();
+    for kind in NodeKind::ALL {
+        let i = kind as usize;
+        if !wanted[i] {
+            continue;
+        }
+        let mut deps = Vec::new();
+        let mut failed = None;
+        for &k in &inputs[i].nodes {
+            match &keys[k as usize] {
+                Some(Ok(key)) => deps.push((k, *key)),
+                Some(Err(e)) => failed = Some(e.clone()),
+                None => {
+                    failed = Some(KeyError {
+                        kind: kind.name(),
+                        message: format!("input {} is not planned", k.name()),
+                    })
+                }
+            }
+        }
+        let dep_keys: Vec<NodeKey> = deps.iter().map(|(_, k)| *k).collect();
+        let key = match failed {
+            Some(e) => Err(e),
+            None => inputs[i].key(&dep_keys),
+        };
+        keys[i] = Some(key.clone());
+        nodes.push(PlannedNode { kind, key, deps });
+    }
+    ColumnPlan { nodes }
 }
 
 /// Lists, per column, the nodes that the scene's visible panels and effects need.
 pub fn plan(scene: &Scene) -> Vec<ColumnPlan> {
     (0..scene.columns.len())
-        .map(|c| ColumnPlan {
-            nodes: column_nodes(scene, c).into_iter().map(|(k, _)| k).collect(),
-        })
+        .map(|c| column_plan(scene, c))
         .collect()
 }
 
-/// Evaluation counters and the node cache.
-#[derive(Default)]
-pub struct Evaluator {
-    cache: Mutex<HashMap<NodeKey, (Arc<NodeResult>, u64)>>,
-    counts: [AtomicUsize; NodeKind::ALL.len()],
-    tick: AtomicUsize,
+/// Runs the job of `kind` for column `c` of `scene` with the given input results.
+pub fn run_node(kind: NodeKind, ctx: &JobCtx) -> Output {
+    (kind.def().run)(ctx)
 }
 
-/// How many cached results are kept beyond those of the latest scene.
-const CACHE_EXTRA: usize = 48;
-
-impl Evaluator {
-    /// How many times nodes of `kind` were evaluated (cache hits do not count).
-    pub fn count(&self, kind: NodeKind) -> usize {
-        self.counts[kind as usize].load(Ordering::Relaxed)
-    }
-
-    /// Every counter, by kind.
-    pub fn counts(&self) -> Vec<(NodeKind, usize)> {
-        NodeKind::ALL.iter().map(|&k| (k, self.count(k))).collect()
-    }
-
-    /// Resets every counter to zero.
-    pub fn reset_counts(&self) {
-        for c in &self.counts {
-            c.store(0, Ordering::Relaxed);
-        }
-    }
-
-    /// A cached result, if any.
-    pub fn cached(&self, key: &NodeKey) -> Option<Arc<NodeResult>> {
-        let cache = self.cache.lock().ok()?;
-        cache.get(key).map(|(r, _)| r.clone())
-    }
-
-    /// Evaluates every node the scene needs, column by column, calling `sink` with each result
-    /// (cached or fresh). Stops early, without caching partial results, when `cancel` fires.
-    pub fn evaluate(
-        &self,
-        scene: &Scene,
-        cancel: &Cancel,
-        sink: &mut dyn FnMut(usize, NodeKind, Arc<NodeResult>),
-    ) {
-        let tick = self.tick.fetch_add(1, Ordering::Relaxed) as u64 + 1;
-        for column in 0..scene.columns.len() {
-            let mut done: HashMap<NodeKind, Arc<NodeResult>> = HashMap::new();
-            for (key, job) in column_nodes(scene, column) {
-                if cancel.is_cancelled() {
-                    return;
-                }
-                let result = match self.lookup(&key, tick) {
-                    Some(r) => r,
-                    None => {
-                        let start = Instant::now();
-                        let outcome =
-                            std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
-                                job.run(scene, column, &done, cancel)
-                            }));
-                        if cancel.is_cancelled() {
-                            return;
-                        }
-                        self.counts[key.kind as usize].fetch_add(1, Ordering::Relaxed);
-                        let (value, accuracy) = match outcome {
-                            Ok(Ok((v, acc))) => (Ok(v), acc),
-                            Ok(Err(e)) => (Err(e), None),
-                            Err(panic) => (Err(panic_message(panic)), None),
-                        };
-                        let r = Arc::new(NodeResult {
-                            value,
-                            wall: start.elapsed(),
-                            accuracy,
-                        });
-                        if let Ok(mut cache) = self.cache.lock() {
-                            cache.insert(key, (r.clone(), tick));
-                        }
-                        r
-                    }
-                };
-                done.insert(key.kind, result.clone());
-                sink(column, key.kind, result);
-            }
-        }
-        self.trim(tick);
-    }
-
-    fn lookup(&self, key: &NodeKey, tick: u64) -> Option<Arc<NodeResult>> {
-        let mut cache = self.cache.lock().ok()?;
-        let entry = cache.get_mut(key)?;
-        entry.1 = tick;
-        Some(entry.0.clone())
-    }
-
-    fn trim(&self, tick: u64) {
-        if let Ok(mut cache) = self.cache.lock() {
-            let mut old: Vec<(NodeKey, u64)> = cache
-                .iter()
-                .filter(|(_, (_, t))| *t < tick)
-                .map(|(k, (_, t))| (*k, *t))
-                .collect();
-            if old.len() > CACHE_EXTRA {
-                old.sort_by_key(|(_, t)| *t);
-                for (k, _) in &old[..old.len() - CACHE_EXTRA] {
-                    cache.remove(k);
-                }
-            }
-        }
-    }
-}
-
-fn panic_message(panic: Box<dyn std::any::Any + Send>) -> String {
-    let text = panic
-        .downcast_ref::<String>()
-        .cloned()
-        .or_else(|| panic.downcast_ref::<&str>().map(|s| s.to_string()))
-        .unwrap_or_else(|| "unknown panic".into());
-    format!("internal error (panic): {text}")
-}
+/// The results of a node's inputs, by kind.
+pub type InputResults = Deps;

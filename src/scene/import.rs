@@ -23,7 +23,6 @@ use crate::core::pointset::{
 };
 use glam::DVec2;
 use serde::{Deserialize, Serialize};
-use std::hash::{Hash, Hasher};
 use std::path::{Path, PathBuf};
 
 /// Points for a column, read from `path` or given inline.
@@ -91,15 +90,16 @@ impl ImportedPoints {
         self.points.iter().map(|&[x, y]| DVec2::new(x, y)).collect()
     }
 
-    /// A hash of the points' bits and count (the key of the points node).
-    pub fn content_hash(&self) -> u64 {
-        let mut h = std::collections::hash_map::DefaultHasher::new();
-        self.points.len().hash(&mut h);
+    /// BLAKE3 digest of the points' count and bits, as 64 hex digits (the key of the points
+    /// node: stable across runs and platforms).
+    pub fn content_digest(&self) -> String {
+        let mut h = blake3::Hasher::new();
+        h.update(&(self.points.len() as u64).to_le_bytes());
         for &[x, y] in &self.points {
-            x.to_bits().hash(&mut h);
-            y.to_bits().hash(&mut h);
+            h.update(&x.to_bits().to_le_bytes());
+            h.update(&y.to_bits().to_le_bytes());
         }
-        h.finish()
+        h.finalize().to_hex().to_string()
     }
 
     /// A short label: the file name, or "inline points".

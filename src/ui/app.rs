@@ -5,7 +5,7 @@ use super::gpu::{self, Colormap};
 use super::lecture;
 use super::panels::{self, ViewState};
 use crate::core::pattern::Pattern;
-use crate::engine::Engine;
+use crate::engine::{Engine, Progress, Update};
 use crate::scene::graph::{NodeKind, NodeResult};
 use crate::scene::{Column, ReconMode, Scene, BUILTIN, MAX_COLUMNS};
 use eframe::egui;
@@ -13,8 +13,51 @@ use std::collections::HashMap;
 use std::sync::Arc;
 use std::time::{Duration, Instant};
 
+/// A result on screen, with the generation and the scene snapshot it was computed for (its
+/// panel's labels and saved figures come from that scene, never from a newer one).
+#[derive(Clone)]
+pub struct Shown {
+    pub result: Arc<NodeResult>,
+    pub scene: Arc<Scene>,
+    pub generation: u64,
+    /// `Some` while the node refines (a coarse result is on screen).
+    pub progress: Option<Progress>,
+}
+
+impl std::ops::Deref for Shown {
+    type Target = NodeResult;
+    fn deref(&self) -> &NodeResult {
+        &self.result
+    }
+}
+
+impl AsRef<NodeResult> for Shown {
+    fn as_ref(&self) -> &NodeResult {
+        &self.result
+    }
+}
+
+impl From<Update> for Shown {
+    fn from(u: Update) -> Self {
+        Shown {
+            result: u.result,
+            scene: u.scene,
+            generation: u.generation,
+            progress: u.progress,
+        }
+    }
+}
+
 /// Results of one column, by node kind.
-pub type ColumnResults = HashMap<NodeKind, Arc<NodeResult>>;
+pub type ColumnResults = HashMap<NodeKind, Shown>;
+
+/// Every column's results of one generation that finished, with its scene.
+#[derive(Clone)]
+pub struct CompleteResults {
+    pub scene: Arc<Scene>,
+    pub generation: u64,
+    pub columns: Vec<ColumnResults>,
+}
 
 /// The samplescope GUI application.
 pub struct SamplescopeApp {
@@ -24,8 +67,11 @@ pub struct SamplescopeApp {
     pub scene_name: String,
     /// The engine evaluating the scene.
     pub engine: Engine,
-    /// Latest results per column.
+    /// Latest results per column (possibly of different generations while recomputing).
     pub results: Vec<ColumnResults>,
+    /// The results of the latest generation that finished: one consistent snapshot (saved
+    /// figures come from it while a recompute runs).
+    pub complete: Option<CompleteResults>,
     /// Display state (ranges, zoom, overlays).
     pub view: ViewState,
     /// Whether the wgpu pipelines are installed (else images are colour-mapped on the CPU).
@@ -76,6 +122,7 @@ impl SamplescopeApp {
             scene_name: BUILTIN[0].0.to_string(),
             engine,
             results: Vec::new(),
+            complete: None,
             view: ViewState::default(),
             gpu,
             scene_error: None,
@@ -128,6 +175,7 @@ impl SamplescopeApp {
         self.scene_name = name;
         self.scene_error = None;
         self.results.clear();
+        self.complete = None;
         self.motion_clock.reset();
     }
 
@@ -154,8 +202,31 @@ impl SamplescopeApp {
         }
         for u in self.engine.poll() {
             if let Some(col) = self.results.get_mut(u.column) {
-                col.insert(u.kind, u.result);
+                col.insert(u.kind, Shown::from(u));
             }
+        }
+        let generation = self.engine.generation();
+        if self.engine.is_idle()
+            && self.engine.failure().is_none()
+            && self.complete.as_ref().map(|c| c.generation) != Some(generation)
+        {
+            // Every node of the finished generation was delivered again (cache hits too),
+            // so the results now all belong to it; drop any leftovers of older ones.
+            for col in &mut self.results {
+                col.retain(|_, r| r.generation == generation);
+            }
+            let scene = self
+                .results
+                .iter()
+                .flat_map(|c| c.values())
+                .map(|r| r.scene.clone())
+                .next()
+                .unwrap_or_else(|| Arc::new(shown_scene(&self.scene, self.submitted.as_ref())));
+            self.complete = Some(CompleteResults {
+                scene,
+                generation,
+                columns: self.results.clone(),
+            });
         }
     }
 
@@ -283,16 +354,23 @@ impl SamplescopeApp {
         if let Some(e) = &self.scene_error {
             ui.colored_label(egui::Color32::from_rgb(200, 40, 40), e);
         }
+        if let Some(e) = self.engine.failure() {
+            ui.colored_label(egui::Color32::from_rgb(200, 40, 40), format!("⚠ {e}"));
+        }
     }
 
     /// What the figure writer needs: the scene, its name, every column's data and the
-    /// display choices of the panels.
+    /// display choices of the panels. Data and labels come from one generation: the latest
+    /// that finished (while a recompute runs, the picture before it), else what is on screen.
     pub fn figure_snapshot(&self) -> figures::Snapshot {
+        let (scene, columns) = match &self.complete {
+            Some(c) => (c.scene.as_ref().clone(), &c.columns),
+            None => (self.scene.clone(), &self.results),
+        };
         figures::Snapshot {
-            scene: self.scene.clone(),
+            scene,
             scene_name: figures::scene_stem(&self.scene_name),
-            columns: self
-                .results
+            columns: columns
                 .iter()
                 .map(crate::export::figure::ColumnData::from_results)
                 .collect(),
@@ -560,7 +638,11 @@ impl eframe::App for SamplescopeApp {
         }
         if self.scene.panels.theorem {
             // Column-independent: its node is computed for column 0 only.
-            let result = self.results.first().and_then(|c| c.get(&NodeKind::Theorem));
+            let result = self
+                .results
+                .first()
+                .and_then(|c| c.get(&NodeKind::Theorem))
+                .map(|r| &r.result);
             egui::Panel::bottom("samplescope-theorem")
                 .resizable(true)
                 .default_size(520.0)
@@ -610,4 +692,9 @@ impl eframe::App for SamplescopeApp {
         eframe::set_value(storage, STORAGE_VIEW, &self.view);
         eframe::set_value(storage, STORAGE_SCENE_NAME, &self.scene_name);
     }
+}
+
+/// The scene last submitted (the shown frame of a moving scene), else the edited one.
+fn shown_scene(scene: &Scene, submitted: Option<&Scene>) -> Scene {
+    submitted.unwrap_or(scene).clone()
 }

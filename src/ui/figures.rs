@@ -515,7 +515,7 @@ mod tests {
     #[test]
     fn theorem_figures_save_from_column_zero_and_other_columns_composites_skip_them() {
         use crate::core::cancel::Cancel;
-        use crate::scene::graph::Evaluator;
+        use crate::engine::Evaluator;
         let text = r#"(title: "GUI theorem figures",
             columns: [(pattern: (kind: "random"), seed: 1), (pattern: (kind: "random"), seed: 2)],
             n: 16,

@@ -1,17 +1,17 @@
 //! The panels of a column. Each takes plain data computed by the engine and draws it.
 
-use super::app::ColumnResults;
+use super::app::{ColumnResults, Shown};
 use super::figures;
 use super::gpu::{self, Colormap, DisplayRange, FloatImage};
+use crate::engine::Evaluator;
 use crate::export::figure::PanelKind;
-use crate::scene::graph::{Evaluator, ImageData, NodeKind, NodeResult, NodeValue};
+use crate::scene::graph::{ImageData, NodeKind, NodeValue};
 use crate::scene::{Panels, Scene};
 use eframe::egui::{self, Color32, Pos2, Rect, Stroke, Vec2};
 use eframe::egui_wgpu;
 use egui_plot::{Line, Plot, VLine};
 use serde::{Deserialize, Serialize};
 use std::collections::HashMap;
-use std::sync::Arc;
 
 /// Which image the zone-plate panel shows.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
@@ -103,11 +103,26 @@ pub fn screen_from_unit(rect: Rect, p: [f64; 2]) -> Pos2 {
     )
 }
 
-fn result_of(col: Option<&ColumnResults>, kind: NodeKind) -> Option<&Arc<NodeResult>> {
+fn result_of(col: Option<&ColumnResults>, kind: NodeKind) -> Option<&Shown> {
     col.and_then(|c| c.get(&kind))
 }
 
-fn time_label(ui: &mut egui::Ui, r: &NodeResult) {
+/// The node's wall time and accuracy; while it refines, a progress bar with
+/// "refining i/n" and its current error estimate.
+fn time_label(ui: &mut egui::Ui, r: &Shown) {
+    if let Some(p) = r.progress {
+        let text = match &r.accuracy {
+            Some(a) => format!("refining {}/{}, {a}", p.step, p.steps),
+            None => format!("refining {}/{}", p.step, p.steps),
+        };
+        ui.add(
+            egui::ProgressBar::new(p.step as f32 / p.steps.max(1) as f32)
+                .desired_height(4.0)
+                .desired_width(ui.available_width().min(260.0)),
+        );
+        ui.small(text);
+        return;
+    }
     let show = ui.ctx().data(|d| {
         d.get_temp::<bool>(egui::Id::NULL.with(SHOW_TIMINGS))
             .unwrap_or(true)
@@ -175,12 +190,14 @@ pub fn columns_ui(
                                     Some(p) => {
                                         format!("{} · N = {}", column.title(), p.points.len())
                                     }
-                                    None => format!(
-                                        "{} · N = {} · seed {}",
-                                        column.title(),
-                                        scene.n,
-                                        column.seed
-                                    ),
+                                    // Labelled from the scene the shown points were
+                                    // computed for (a recompute may be running).
+                                    None => {
+                                        let lab = result_of(col, NodeKind::Points)
+                                            .map_or(scene, |r| r.scene.as_ref());
+                                        let c = lab.columns.get(ci).unwrap_or(column);
+                                        format!("{} · N = {} · seed {}", c.title(), lab.n, c.seed)
+                                    }
                                 });
                                 figures::column_menu_ui(ui, ci);
                             });
@@ -513,10 +530,9 @@ fn spectrum_panel(
     side: f32,
 ) {
     ui.horizontal_wrapped(|ui| {
-        ui.label(format!(
-            "Periodogram {}² (log10 P, centred)",
-            scene.spectrum.size
-        ));
+        let size = result_of(col, NodeKind::Spectrum)
+            .map_or(scene.spectrum.size, |r| r.scene.spectrum.size);
+        ui.label(format!("Periodogram {size}² (log10 P, centred)"));
         figures::panel_menu_ui(ui, ci, &[PanelKind::Spectrum, PanelKind::Raps]);
     });
     let Some(r) = result_of(col, NodeKind::Spectrum) else {
@@ -600,7 +616,8 @@ fn zoneplate_panel(
     side: f32,
 ) {
     ui.horizontal_wrapped(|ui| {
-        ui.label(format!("{} {}²", scene.signal.name(), scene.recon.size));
+        let lab = result_of(col, NodeKind::Reconstruction).map_or(scene, |r| r.scene.as_ref());
+        ui.label(format!("{} {}²", lab.signal.name(), lab.recon.size));
         ui.selectable_value(&mut view.zone_image, ZoneImage::Reconstruction, "recon");
         ui.selectable_value(&mut view.zone_image, ZoneImage::Reference, "reference");
         ui.selectable_value(&mut view.zone_image, ZoneImage::Error, "error");

@@ -1031,6 +1031,34 @@ pub struct TheoremView {
     pub vdc: Vec<RadicalInverseRow>,
 }
 
+impl TheoremView {
+    /// Approximate heap bytes of the view's curves (for cache budgets).
+    pub fn approx_bytes(&self) -> usize {
+        let v = |c: &Vec<[f64; 2]>| c.len() * 16;
+        let sp = &self.spectrum;
+        let nested = |c: &Vec<(i64, Vec<[f64; 2]>)>| c.iter().map(|(_, x)| 8 + v(x)).sum::<usize>();
+        let p = &self.pair;
+        std::mem::size_of::<Self>()
+            + v(&self.signal)
+            + v(&self.samples)
+            + v(&self.reconstruction)
+            + v(&sp.original)
+            + nested(&sp.replicas)
+            + v(&sp.sampled)
+            + v(&sp.gain)
+            + v(&sp.reconstructed)
+            + nested(&sp.lines)
+            + v(&sp.reconstructed_lines)
+            + v(&p.spatial)
+            + v(&p.re)
+            + v(&p.im)
+            + v(&p.magnitude)
+            + v(&p.impulses_x)
+            + p.impulses_omega.len() * 24
+            + self.vdc.len() * std::mem::size_of::<RadicalInverseRow>()
+    }
+}
+
 /// Computes the whole view from validated settings.
 pub fn compute_view(s: &TheoremSettings) -> Result<TheoremView, TheoremError> {
     s.validate()?;

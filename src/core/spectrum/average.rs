@@ -139,6 +139,9 @@ struct Realization {
 
 const STAGE_NAMES: [&str; 5] = ["generate", "spread", "fft", "deconvolve", "error-check"];
 
+/// Least time between two partial results of [`average_periodogram_progressive`].
+pub const PARTIAL_INTERVAL: Duration = Duration::from_millis(60);
+
 /// The mean periodogram of K point sets `generate(derive_seed(seed, r))`, r = 0..K, with the
 /// method of `req`:
 ///
@@ -161,6 +164,27 @@ pub fn average_periodogram<G, E>(
     seed: u64,
     generate: G,
     cancel: &Cancel,
+) -> Result<(Spectrum, SpectrumReport), SpectrumError>
+where
+    G: Fn(u64) -> Result<Vec<DVec2>, E> + Sync,
+    E: Into<Box<dyn std::error::Error + Send + Sync>>,
+{
+    average_periodogram_progressive(req, seed, generate, cancel, Duration::MAX, &mut |_, _| {})
+}
+
+/// [`average_periodogram`] that also reports the running average: after each group of
+/// realizations, while more remain and at least `min_interval` has passed since the start or
+/// the last report (the engine uses [`PARTIAL_INTERVAL`]), `on_partial(mean of the first d
+/// realizations, d)` is called. The returned
+/// spectrum is bit-identical to [`average_periodogram`]'s (the partial means are copies; the
+/// running sum is untouched).
+pub fn average_periodogram_progressive<G, E>(
+    req: &SpectrumRequest,
+    seed: u64,
+    generate: G,
+    cancel: &Cancel,
+    min_interval: Duration,
+    on_partial: &mut dyn FnMut(&Spectrum, usize),
 ) -> Result<(Spectrum, SpectrumReport), SpectrumError>
 where
     G: Fn(u64) -> Result<Vec<DVec2>, E> + Sync,
@@ -237,7 +261,21 @@ where
     let mut average_time = Duration::ZERO;
     let mut error = None;
     let (mut n_min, mut n_max) = (usize::MAX, 0);
+    let mut last_partial = Instant::now();
     for g0 in (0..k).step_by(group) {
+        let done = g0;
+        if done > 0 && last_partial.elapsed() >= min_interval {
+            let inv = 1.0 / done as f64;
+            let partial = Spectrum {
+                m,
+                power: acc.iter().map(|a| a * inv).collect(),
+                n_points: n_min,
+                realizations: done,
+                dc: req.dc,
+            };
+            on_partial(&partial, done);
+            last_partial = Instant::now();
+        }
         cancel.check()?;
         let results: Vec<Result<Realization, SpectrumError>> =
             (g0..(g0 + group).min(k)).into_par_iter().map(one).collect();

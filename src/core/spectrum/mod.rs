@@ -57,8 +57,8 @@ pub mod quadrature;
 pub mod radial;
 
 pub use average::{
-    analyze_points, average_periodogram, DcMode, ErrorCheck, Method, SpectrumReport,
-    SpectrumRequest, DEFAULT_ERROR_CHECK_BUDGET,
+    analyze_points, average_periodogram, average_periodogram_progressive, DcMode, ErrorCheck,
+    Method, SpectrumReport, SpectrumRequest, DEFAULT_ERROR_CHECK_BUDGET,
 };
 pub use dft::{exact_field_rows, periodogram_exact, periodogram_naive};
 pub use nufft::{

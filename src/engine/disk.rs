@@ -1,0 +1,50 @@
+//! Reference images on disk: a [`NodeResult`] of the reference node to and from the bytes of
+//! [`DiskCache`] ([`ImagePayload`]), keyed by the node key.
+//!
+//! Only complete, successful results are stored. A file that does not decode (corrupt,
+//! foreign, another version) is ignored and the node is computed again.
+
+use super::disk_cache::{DiskCache, ImagePayload};
+use crate::scene::graph::{ImageData, NodeKey, NodeResult, NodeValue, ReferenceData};
+use std::sync::Arc;
+use std::time::Duration;
+
+/// The cached result of `key`, if a valid one is on disk.
+pub(crate) fn load(disk: &DiskCache, key: &NodeKey) -> Option<NodeResult> {
+    let bytes = disk.get(key.kind.name(), &key.hash)?;
+    let p = ImagePayload::from_bytes(&bytes)?;
+    let (w, h) = (p.width as usize, p.height as usize);
+    if p.values.len() != w.checked_mul(h)? {
+        return None;
+    }
+    Some(NodeResult {
+        value: Ok(NodeValue::Reference(Arc::new(ReferenceData {
+            image: ImageData::new(w, h, p.values),
+            error_estimate: p.error_estimate,
+            method: p.method,
+        }))),
+        // The same accuracy text as when computed: a render from the cache writes the same
+        // bytes as one that computed the reference.
+        wall: Duration::ZERO,
+        accuracy: p.accuracy,
+    })
+}
+
+/// Stores a successful reference result under `key`; failures to write are reported on
+/// stderr once per result and otherwise ignored (the cache is an optimisation).
+pub(crate) fn store(disk: &DiskCache, key: &NodeKey, result: &NodeResult) {
+    let Ok(NodeValue::Reference(r)) = &result.value else {
+        return;
+    };
+    let payload = ImagePayload {
+        width: r.image.width as u32,
+        height: r.image.height as u32,
+        values: r.image.values.as_ref().clone(),
+        error_estimate: r.error_estimate,
+        method: r.method.clone(),
+        accuracy: result.accuracy.clone(),
+    };
+    if let Err(e) = disk.put(key.kind.name(), &key.hash, &payload.to_bytes()) {
+        eprintln!("samplescope: disk cache: {e}");
+    }
+}
