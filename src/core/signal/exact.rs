@@ -100,10 +100,35 @@ impl DoubleDouble {
         DoubleDouble { hi, lo }
     }
 
+    /// `self / b` for an `f64` b ≠ 0, relative error ≲ 4·2⁻¹⁰⁶ (long division: q₁ = hi/b, the
+    /// remainder `self − q₁·b` formed exactly with [`two_prod`], q₂ = remainder/b).
+    #[inline]
+    pub fn div_f64(self, b: f64) -> Self {
+        let q1 = self.hi / b;
+        let (p, e) = two_prod(q1, b);
+        // hi − p is exact (Sterbenz: p is within a rounding of hi).
+        let r = ((self.hi - p) - e) + self.lo;
+        let (hi, lo) = fast_two_sum(q1, r / b);
+        DoubleDouble { hi, lo }
+    }
+
     /// The nearest `f64` (to within one rounding).
     #[inline]
     pub fn to_f64(self) -> f64 {
         self.hi + self.lo
+    }
+}
+
+impl std::ops::Neg for DoubleDouble {
+    type Output = DoubleDouble;
+
+    /// `−self`, exact.
+    #[inline]
+    fn neg(self) -> Self {
+        DoubleDouble {
+            hi: -self.hi,
+            lo: -self.lo,
+        }
     }
 }
 
@@ -374,6 +399,28 @@ mod tests {
         assert_eq!(rem2(x), 0.5);
         let y = DoubleDouble { hi: 3.0, lo: -0.25 };
         assert_eq!(rem2(y), 0.75);
+    }
+
+    #[test]
+    fn double_double_div_f64_is_a_double_double_accurate_quotient() {
+        // 1/3 = hi + lo to ~2⁻¹⁰⁶: 3·(hi + lo) − 1 must vanish to double-double accuracy.
+        let q = DoubleDouble::from_f64(1.0).div_f64(3.0);
+        let back = q.mul_f64(3.0) + DoubleDouble::from_f64(-1.0);
+        assert!(back.to_f64().abs() < 1e-31, "{back:?}");
+        assert!(q.lo != 0.0);
+        // An exact quotient stays exact; a double-double numerator keeps its low part.
+        let x = DoubleDouble { hi: 6.0, lo: 3e-17 };
+        let y = x.div_f64(2.0);
+        assert_eq!((y.hi, y.lo), (3.0, 1.5e-17));
+        // (2⁶⁰ + 5)/7 against exact integer arithmetic: 7·q must give back the numerator.
+        let n = DoubleDouble {
+            hi: 2f64.powi(60),
+            lo: 5.0,
+        };
+        let q = n.div_f64(7.0);
+        let r = q.mul_f64(7.0) + (-n);
+        assert!(r.to_f64().abs() < 1e-12, "{r:?}");
+        assert_eq!((-q).hi, -q.hi);
     }
 
     #[test]
