@@ -1,6 +1,7 @@
 //! Reference images: exact area coverage against a closed form, brute-force supersampling and
-//! scanline integration; exact integrals against quadrature; supersampled references and their
-//! error estimates.
+//! scanline integration; exact integrals against quadrature; the zone plate's and chirp's
+//! separable quadrature against brute-force 2D (1D) Gauss–Legendre and supersampling, and its
+//! error bound; supersampled references and their error estimates.
 
 use glam::DVec2;
 use samplescope::core::cancel::Cancel;
@@ -9,11 +10,13 @@ use samplescope::core::recon::coverage::{
 };
 use samplescope::core::recon::{
     reference_image, reference_image_with, reference_supersampled, rmse, ReconError,
-    ReferenceMethod, ReferenceOptions,
+    ReferenceImage, ReferenceMethod, ReferenceOptions,
 };
 use samplescope::core::rng::Rng;
+use samplescope::core::signal::exact::{rem2, sin_pi, DoubleDouble};
 use samplescope::core::signal::{
-    Grating, Polygon, PolygonShape, Signal, Square, StepEdge, SumOfSines, ZonePlate,
+    Checkerboard, Chirp, Grating, Polygon, PolygonShape, Signal, Square, StepEdge, SumOfSines,
+    ZonePlate,
 };
 
 /// Closed form of area{q ∈ [0,1]² : n·q < c} for nₓ, n_y ≠ 0 (inclusion–exclusion of the
@@ -257,27 +260,31 @@ fn sum_of_sines_and_square_exact_integrals_match_quadrature() {
 }
 
 #[test]
-fn zone_plate_reference_is_supersampled_with_shrinking_estimate() {
+fn zone_plate_supersampled_reference_has_shrinking_estimate() {
+    // The supersampled path, explicitly (the zone plate's default reference is quadrature).
     let z = Signal::ZonePlate(ZonePlate {
         k: 200.0,
         ..Default::default()
     });
     let c = Cancel::never();
     let e = |s: usize| {
-        let r = reference_image_with(&z, 32, &ReferenceOptions { strata: s, seed: 1 }, &c).unwrap();
+        let r =
+            reference_supersampled(&z, 32, &ReferenceOptions { strata: s, seed: 1 }, &c).unwrap();
         assert_eq!(r.method, ReferenceMethod::Supersampled { strata: s });
         r.error_estimate.unwrap()
     };
     let (e2, e4, e8) = (e(2), e(4), e(8));
     assert!(e4 < e2 && e8 < e4, "{e2:e} {e4:e} {e8:e}");
     // Same options → same bits.
-    let a = reference_image_with(&z, 16, &ReferenceOptions::default(), &c).unwrap();
-    let b = reference_image_with(&z, 16, &ReferenceOptions::default(), &c).unwrap();
-    assert!(a
-        .pixels
-        .iter()
-        .zip(&b.pixels)
-        .all(|(x, y)| x.to_bits() == y.to_bits()));
+    let a = reference_supersampled(&z, 16, &ReferenceOptions::default(), &c).unwrap();
+    let b = reference_supersampled(&z, 16, &ReferenceOptions::default(), &c).unwrap();
+    assert!(same_bits(&a.pixels, &b.pixels));
+    // The default reference of the zone plate and the chirp is the separable quadrature.
+    for sig in [z, Signal::Chirp(Chirp::default())] {
+        let r = reference_image(&sig, 16).unwrap();
+        assert_eq!(r.method, ReferenceMethod::SeparableQuadrature { nodes: 20 });
+        assert!(r.error_estimate.unwrap() < 1e-13, "{:?}", r.error_estimate);
+    }
 }
 
 #[test]
@@ -288,7 +295,7 @@ fn unresolved_zone_plate_reports_large_error_estimate() {
         k: 20_000.0,
         ..Default::default()
     });
-    let r = reference_image_with(
+    let r = reference_supersampled(
         &z,
         16,
         &ReferenceOptions { strata: 2, seed: 5 },
@@ -296,25 +303,32 @@ fn unresolved_zone_plate_reports_large_error_estimate() {
     )
     .unwrap();
     assert!(r.error_estimate.unwrap() > 0.05, "{:?}", r.error_estimate);
+    // The quadrature resolves it (≈ 900 cycles per pixel at the corners), with a tiny bound.
+    let q = reference_image(&z, 16).unwrap();
+    assert!(q.error_estimate.unwrap() < 1e-13, "{:?}", q.error_estimate);
 }
 
 #[test]
 fn reference_rejects_bad_input() {
     let z = Signal::default();
+    let board = Signal::Checkerboard(Checkerboard::default());
     let c = Cancel::never();
-    let err = |r: Result<samplescope::core::recon::ReferenceImage, ReconError>| match r {
+    let err = |r: Result<ReferenceImage, ReconError>| match r {
         Err(e) => e.to_string(),
         Ok(_) => panic!("accepted"),
     };
     assert!(err(reference_image(&z, 0)).starts_with("w = 0: must be an integer in 1..=8192"));
+    assert!(err(reference_image(&board, 0)).starts_with("w = 0"));
+    assert!(err(reference_image(&Signal::Chirp(Chirp::default()), 8193)).starts_with("w = 8193"));
+    // Strata are checked where they are used: supersampled references.
     assert!(err(reference_image_with(
-        &z,
+        &board,
         8,
         &ReferenceOptions { strata: 0, seed: 0 },
         &c
     ))
     .starts_with("strata = 0"));
-    assert!(err(reference_image_with(
+    assert!(err(reference_supersampled(
         &z,
         8,
         &ReferenceOptions {
@@ -324,15 +338,342 @@ fn reference_rejects_bad_input() {
         &c
     ))
     .starts_with("strata = 65"));
-    let bad = Signal::ZonePlate(ZonePlate {
-        k: f64::INFINITY,
-        ..Default::default()
+    for k in [f64::INFINITY, f64::NAN, 2e12] {
+        let bad = Signal::ZonePlate(ZonePlate {
+            k,
+            ..Default::default()
+        });
+        assert!(
+            matches!(reference_image(&bad, 8), Err(ReconError::Signal(_))),
+            "k = {k}"
+        );
+    }
+    assert!(err(reference_image(
+        &Signal::ZonePlate(ZonePlate {
+            k: f64::INFINITY,
+            ..Default::default()
+        }),
+        8
+    ))
+    .starts_with("zone-plate.k = inf"));
+    let nan_chirp = Signal::Chirp(Chirp {
+        f0: f64::NAN,
+        f1: 3.0,
     });
-    assert!(err(reference_image(&bad, 8)).starts_with("zone-plate.k = inf"));
+    assert!(matches!(
+        reference_image(&nan_chirp, 8),
+        Err(ReconError::Signal(_))
+    ));
+    // A valid but huge K: the quadrature's work is counted first and refused, for any W.
+    for (k, cx, w) in [
+        (1e12, 0.5, 8),
+        (-1e12, 0.5, 1),
+        (5e9, 0.5, 64),
+        (1e9, 2.0, 8),
+    ] {
+        let huge = Signal::ZonePlate(ZonePlate { k, cx, cy: 0.5 });
+        let t = std::time::Instant::now();
+        match reference_image(&huge, w) {
+            Err(ReconError::TooMuchWork { work, max, .. }) => assert!(work > max),
+            other => panic!("K = {k}, W = {w}: {other:?}"),
+        }
+        assert!(
+            t.elapsed().as_secs_f64() < 1.0,
+            "the work is counted and refused before any is done"
+        );
+    }
     let cancelled = Cancel::new();
     cancelled.cancel();
-    assert_eq!(
-        reference_image_with(&z, 8, &ReferenceOptions::default(), &cancelled).unwrap_err(),
-        ReconError::Cancelled
-    );
+    for sig in [z, board, Signal::Chirp(Chirp::default())] {
+        assert_eq!(
+            reference_image_with(&sig, 8, &ReferenceOptions::default(), &cancelled).unwrap_err(),
+            ReconError::Cancelled
+        );
+    }
+}
+
+fn same_bits(a: &[f64], b: &[f64]) -> bool {
+    a.len() == b.len() && a.iter().zip(b).all(|(x, y)| x.to_bits() == y.to_bits())
+}
+
+/// n-point Gauss–Legendre (node, weight) on [0, 1], by Newton's method on the Legendre
+/// recurrence (independent of the crate's tables).
+fn gauss_legendre(n: usize) -> Vec<(f64, f64)> {
+    let legendre = |x: f64| {
+        let (mut p0, mut p1) = (1.0, x);
+        for k in 2..=n {
+            let p2 = ((2 * k - 1) as f64 * x * p1 - (k - 1) as f64 * p0) / k as f64;
+            p0 = p1;
+            p1 = p2;
+        }
+        (p1, n as f64 * (x * p1 - p0) / (x * x - 1.0))
+    };
+    let rule: Vec<(f64, f64)> = (1..=n)
+        .map(|i| {
+            let mut x = (std::f64::consts::PI * (i as f64 - 0.25) / (n as f64 + 0.5)).cos();
+            for _ in 0..100 {
+                let (p, dp) = legendre(x);
+                let dx = p / dp;
+                x -= dx;
+                if dx.abs() < 1e-17 {
+                    break;
+                }
+            }
+            let (_, dp) = legendre(x);
+            ((1.0 - x) / 2.0, 1.0 / ((1.0 - x * x) * dp * dp))
+        })
+        .collect();
+    let total: f64 = rule.iter().map(|r| r.1).sum();
+    assert!((total - 1.0).abs() < 1e-14, "weights sum to {total}");
+    rule
+}
+
+/// Brute-force nodes of one pixel interval, in pixel units: offsets τ ∈ [0, 1] as double-
+/// doubles and weights summing to 1; 24-point Gauss–Legendre on ⌈F/0.75⌉ subintervals, F the
+/// largest local frequency on the interval in cycles per pixel.
+fn brute_nodes(cycles_per_pixel: f64) -> Vec<(DoubleDouble, f64)> {
+    let rule = gauss_legendre(24);
+    let m = ((cycles_per_pixel / 0.75).ceil() as usize).max(1);
+    let mf = m as f64;
+    let mut out = Vec::with_capacity(m * 24);
+    for s in 0..m {
+        for &(t, w) in &rule {
+            let tau = DoubleDouble::from_f64(s as f64).div_f64(mf)
+                + DoubleDouble::from_f64(t).div_f64(mf);
+            out.push((tau, w / mf));
+        }
+    }
+    out
+}
+
+/// Neumaier-compensated sum.
+#[derive(Default)]
+struct Sum {
+    s: f64,
+    c: f64,
+}
+
+impl Sum {
+    fn add(&mut self, x: f64) {
+        let t = self.s + x;
+        if self.s.abs() >= x.abs() {
+            self.c += (self.s - t) + x;
+        } else {
+            self.c += (x - t) + self.s;
+        }
+        self.s = t;
+    }
+    fn get(&self) -> f64 {
+        self.s + self.c
+    }
+}
+
+/// Largest local frequency of the zone plate along one axis over pixel interval i, in cycles
+/// per pixel: |K|·max|x − c|/W.
+fn zone_cycles(k: f64, c: f64, i: usize, w: usize) -> f64 {
+    let (a, b) = (i as f64 / w as f64 - c, (i + 1) as f64 / w as f64 - c);
+    k.abs() * a.abs().max(b.abs()) / w as f64
+}
+
+/// Zone-plate pixel mean by brute-force 2D tensor Gauss–Legendre, two ways: `naive` evaluates
+/// the signal itself at `f64` points; the other forms the 2D phase K(u² + v²) from
+/// double-double node positions (no separation, no shared code with the crate's quadrature).
+fn brute_zone_pixel(z: &ZonePlate, w: usize, i: usize, j: usize, naive: bool) -> f64 {
+    let wf = w as f64;
+    let nx = brute_nodes(zone_cycles(z.k, z.cx, i, w));
+    let ny = brute_nodes(zone_cycles(z.k, z.cy, j, w));
+    let sig = Signal::ZonePlate(*z);
+    // ξ = X − cW in pixel units, and ξ².
+    let sq = |idx: usize, c: f64, nodes: &[(DoubleDouble, f64)]| -> Vec<(DoubleDouble, f64, f64)> {
+        let base = DoubleDouble::from_f64(idx as f64) + (-DoubleDouble::prod(c, wf));
+        nodes
+            .iter()
+            .map(|&(tau, wt)| {
+                let xi = base + tau;
+                ((xi * xi), wt, (idx as f64 + tau.to_f64()) / wf)
+            })
+            .collect()
+    };
+    let xs = sq(i, z.cx, &nx);
+    let ys = sq(j, z.cy, &ny);
+    let mut total = Sum::default();
+    for &(v2, wy, y) in &ys {
+        let mut row = Sum::default();
+        for &(u2, wx, x) in &xs {
+            let f = if naive {
+                sig.eval(DVec2::new(x, y))
+            } else {
+                let t = rem2((u2 + v2).mul_f64(z.k).div_f64(wf * wf));
+                0.5 * (1.0 + sin_pi(t))
+            };
+            row.add(wx * f);
+        }
+        total.add(wy * row.get());
+    }
+    total.get()
+}
+
+/// A zone plate, W and the pixels (i, j) to check.
+type ZoneCase = (ZonePlate, usize, Vec<(usize, usize)>);
+
+/// The zone plates of the quadrature tests: (plate, W, pixels), pixels including the one
+/// holding the centre, its neighbours and corners at the highest local frequency.
+fn zone_cases() -> Vec<ZoneCase> {
+    vec![
+        (
+            ZonePlate {
+                k: 256.0,
+                cx: 0.5,
+                cy: 0.5,
+            },
+            64,
+            vec![(31, 31), (32, 32), (32, 31), (0, 0), (63, 0), (10, 50)],
+        ),
+        (
+            ZonePlate {
+                k: 2000.0,
+                cx: 0.5,
+                cy: 0.5,
+            },
+            37,
+            vec![(18, 18), (19, 18), (0, 0), (36, 36), (36, 3)],
+        ),
+        (
+            ZonePlate {
+                k: -700.0,
+                cx: 0.31,
+                cy: 0.62,
+            },
+            50,
+            vec![(15, 31), (16, 30), (0, 49), (49, 0), (49, 49)],
+        ),
+        (
+            ZonePlate {
+                k: 600.0,
+                cx: -0.4,
+                cy: 1.3,
+            },
+            24,
+            vec![(0, 23), (12, 12), (23, 0)],
+        ),
+    ]
+}
+
+#[test]
+fn zone_plate_quadrature_matches_brute_force_2d_gauss_legendre_and_bounds_its_error() {
+    // (a) against the signal itself on a 2D tensor rule: ≤ 1e-11 (the naive rule's own error
+    //     is the f64 rounding of its node positions, ≈ 2πK|u|·2⁻⁵³ per node);
+    // (c) against the double-double 2D rule (error ≈ 10⁻¹⁵): the reported bound holds.
+    let mut worst_bound_ratio: f64 = 0.0;
+    for (z, w, pixels) in zone_cases() {
+        let r = reference_image(&Signal::ZonePlate(z), w).unwrap();
+        assert_eq!(r.method, ReferenceMethod::SeparableQuadrature { nodes: 20 });
+        let bound = r.error_estimate.unwrap();
+        assert!(bound > 0.0 && bound < 1e-13, "{z:?}: bound {bound:e}");
+        let (mut max_naive, mut max_dd): (f64, f64) = (0.0, 0.0);
+        for (i, j) in pixels {
+            let got = r.pixels[j * w + i];
+            let naive = brute_zone_pixel(&z, w, i, j, true);
+            let dd = brute_zone_pixel(&z, w, i, j, false);
+            assert!(
+                (got - naive).abs() <= 1e-11,
+                "{z:?} W {w} pixel ({i},{j}): {got} vs naive {naive}"
+            );
+            max_naive = max_naive.max((got - naive).abs());
+            max_dd = max_dd.max((got - dd).abs());
+        }
+        eprintln!(
+            "K {} c ({}, {}) W {w}: max |quadrature − naive 2D GL| {max_naive:.2e}, \
+             − double-double 2D GL {max_dd:.2e}, reported bound {bound:.2e}",
+            z.k, z.cx, z.cy
+        );
+        assert!(max_dd <= bound, "{z:?}: error {max_dd:e} > bound {bound:e}");
+        worst_bound_ratio = worst_bound_ratio.max(max_dd / bound);
+    }
+    eprintln!("largest error/bound: {worst_bound_ratio:.3}");
+}
+
+#[test]
+fn zone_plate_quadrature_agrees_with_supersampled_reference_within_its_estimate() {
+    // (b) W = 64: the supersampled reference's RMS difference from the quadrature is within
+    // the supersampled estimate (its own error), at K = 256 (resolved: ≤ 5.6 cycles per pixel
+    // … 16 samples) and K = 2000 (up to 22 cycles per pixel: the estimate is large).
+    let w = 64;
+    let c = Cancel::never();
+    for k in [256.0, 2000.0] {
+        let sig = Signal::ZonePlate(ZonePlate {
+            k,
+            ..Default::default()
+        });
+        let q = reference_image(&sig, w).unwrap();
+        let ss = reference_supersampled(&sig, w, &ReferenceOptions::default(), &c).unwrap();
+        let diff = rmse(&q.pixels, &ss.pixels).unwrap();
+        let est = ss.error_estimate.unwrap();
+        eprintln!(
+            "K = {k}: RMS(quadrature − supersampled) {diff:.3e}, supersampled estimate {est:.3e}, \
+             quadrature bound {:.1e}; times {:?} vs {:?}",
+            q.error_estimate.unwrap(),
+            q.wall_time,
+            ss.wall_time
+        );
+        assert!(diff <= est, "K = {k}: {diff:e} > {est:e}");
+        // Not vacuous: the two agree to the supersampling noise, not by chance.
+        assert!(diff > 1e-5, "K = {k}: {diff:e}");
+    }
+}
+
+#[test]
+fn chirp_quadrature_matches_brute_force_and_supersampling() {
+    // (d) the chirp's 1D quadrature against a 1D 24-point composite rule evaluated two ways
+    // (the signal at f64 points: ≤ 1e-11; double-double phase: within the reported bound),
+    // every row equal, and the supersampled reference within its estimate.
+    let c = Cancel::never();
+    for (chirp, w) in [
+        (Chirp::default(), 64),
+        (Chirp { f0: 3.0, f1: 900.0 }, 40),
+        (Chirp { f0: 700.0, f1: 5.0 }, 33),
+    ] {
+        let sig = Signal::Chirp(chirp);
+        let r = reference_image(&sig, w).unwrap();
+        assert_eq!(r.method, ReferenceMethod::SeparableQuadrature { nodes: 20 });
+        let bound = r.error_estimate.unwrap();
+        assert!(bound > 0.0 && bound < 1e-13, "{chirp:?}: {bound:e}");
+        let wf = w as f64;
+        let a1 = DoubleDouble::from_f64(2.0 * chirp.f0);
+        let a2 = DoubleDouble::diff(chirp.f1, chirp.f0);
+        let (mut max_naive, mut max_dd): (f64, f64) = (0.0, 0.0);
+        for i in 0..w {
+            let f = |x: f64| chirp.frequency_at(x);
+            let cycles = f(i as f64 / wf).max(f((i + 1) as f64 / wf)) / wf;
+            let (mut naive, mut dd) = (Sum::default(), Sum::default());
+            for (tau, wt) in brute_nodes(cycles) {
+                let x = (i as f64 + tau.to_f64()) / wf;
+                naive.add(wt * sig.eval1(x));
+                // x = (i + τ)/W in double-double; phase/π = 2f₀x + (f₁ − f₀)x².
+                let xd = (DoubleDouble::from_f64(i as f64) + tau).div_f64(wf);
+                let t = rem2(xd * a1 + xd * xd * a2);
+                dd.add(wt * 0.5 * (1.0 + sin_pi(t)));
+            }
+            let got = r.pixels[i];
+            assert!(
+                (got - naive.get()).abs() <= 1e-11,
+                "{chirp:?} column {i}: {got} vs {}",
+                naive.get()
+            );
+            max_naive = max_naive.max((got - naive.get()).abs());
+            max_dd = max_dd.max((got - dd.get()).abs());
+            for j in 1..w {
+                assert_eq!(r.pixels[j * w + i].to_bits(), got.to_bits());
+            }
+        }
+        let ss = reference_supersampled(&sig, w, &ReferenceOptions::default(), &c).unwrap();
+        let diff = rmse(&r.pixels, &ss.pixels).unwrap();
+        let est = ss.error_estimate.unwrap();
+        eprintln!(
+            "{chirp:?} W {w}: max error vs naive {max_naive:.2e}, vs double-double {max_dd:.2e}, \
+             bound {bound:.2e}; RMS vs supersampled {diff:.2e} (estimate {est:.2e})"
+        );
+        assert!(max_dd <= bound, "{chirp:?}: {max_dd:e} > {bound:e}");
+        assert!(diff <= est, "{chirp:?}: {diff:e} > {est:e}");
+    }
 }

@@ -342,14 +342,14 @@ pub(super) fn reference(ctx: &JobCtx) -> Output {
         cancel,
     )
     .map_err(|e| e.to_string())?;
-    let method = match r.method {
-        crate::core::recon::ReferenceMethod::ExactArea => "exact area coverage".to_string(),
-        crate::core::recon::ReferenceMethod::ExactIntegral => "exact pixel integral".to_string(),
-        crate::core::recon::ReferenceMethod::Supersampled { strata } => {
-            format!("{0}×{0} jittered supersampling", 2 * strata)
+    let method = r.method.label();
+    let accuracy = r.error_estimate.map(|e| {
+        if r.method.estimate_is_bound() {
+            format!("own error ≤ {e:.1e}")
+        } else {
+            format!("own RMS error ≈ {e:.1e}")
         }
-    };
-    let accuracy = r.error_estimate.map(|e| format!("own RMS error ≈ {e:.1e}"));
+    });
     Ok((
         NodeValue::Reference(Arc::new(ReferenceData {
             image: image_from_pixels(w, &r.pixels),

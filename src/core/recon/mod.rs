@@ -23,8 +23,9 @@
 //!   [`ZERO_WEIGHT_FILL`] (½, mid grey), flagged in [`Reconstruction::mask`] and counted in
 //!   [`Reconstruction::zero_weight`]. No output is ever NaN.
 //! - **Reference images** ([`reference`](mod@reference)) are box-prefiltered: the mean of the signal over each
-//!   pixel square, exact where a closed form exists (area coverage, integrals) and estimated by
-//!   stratified supersampling, with an error estimate, otherwise.
+//!   pixel square, exact where a closed form exists (area coverage, integrals), by separable
+//!   Gauss–Legendre quadrature with an error bound for the zone plate and the chirp, and
+//!   estimated by stratified supersampling, with an error estimate, otherwise.
 //! - **Errors** ([`ErrorReport`]) are measured over every pixel (zero-weight pixels count with
 //!   their fill value): RMSE = √(mean (I − R)²) and PSNR = 10 log₁₀(1/MSE) dB (peak 1).
 //! - **Cost and cancellation.** Every routine checks a [`Cancel`] token once per output row (or
