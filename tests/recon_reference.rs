@@ -1,7 +1,7 @@
 //! Reference images: exact area coverage against a closed form, brute-force supersampling and
 //! scanline integration; exact integrals against quadrature; the zone plate's and chirp's
 //! separable quadrature against brute-force 2D (1D) Gauss–Legendre and supersampling, and its
-//! error bound; supersampled references and their error estimates.
+//! error bound; supersampled references, their error estimates and the progressive variant.
 
 use glam::DVec2;
 use samplescope::core::cancel::Cancel;
@@ -9,8 +9,8 @@ use samplescope::core::recon::coverage::{
     clip_half_plane, half_planes, polygon_area, unit_square_coverage, UNIT_SQUARE,
 };
 use samplescope::core::recon::{
-    reference_image, reference_image_with, reference_supersampled, rmse, ReconError,
-    ReferenceImage, ReferenceMethod, ReferenceOptions,
+    reference_image, reference_image_progressive, reference_image_with, reference_supersampled,
+    rmse, ReconError, ReferenceImage, ReferenceMethod, ReferenceOptions,
 };
 use samplescope::core::rng::Rng;
 use samplescope::core::signal::exact::{rem2, sin_pi, DoubleDouble};
@@ -676,4 +676,118 @@ fn chirp_quadrature_matches_brute_force_and_supersampling() {
         assert!(max_dd <= bound, "{chirp:?}: {max_dd:e} > {bound:e}");
         assert!(diff <= est, "{chirp:?}: {diff:e} > {est:e}");
     }
+}
+
+#[test]
+fn progressive_reference_reuses_the_first_pass_and_returns_the_same_bits() {
+    let board = Signal::Checkerboard(Checkerboard::default());
+    let c = Cancel::never();
+    for (w, opts) in [
+        (24, ReferenceOptions::default()),
+        (17, ReferenceOptions { strata: 3, seed: 9 }),
+        (8, ReferenceOptions { strata: 1, seed: 2 }),
+    ] {
+        let mut steps: Vec<(ReferenceImage, usize, usize)> = Vec::new();
+        let got = reference_image_progressive(&board, w, &opts, &c, &mut |img, k, n| {
+            steps.push((img.clone(), k, n))
+        })
+        .unwrap();
+        let plain = reference_image_with(&board, w, &opts, &c).unwrap();
+        let ss = reference_supersampled(&board, w, &opts, &c).unwrap();
+        for other in [&plain, &ss] {
+            assert!(same_bits(&got.pixels, &other.pixels), "W {w} {opts:?}");
+            assert_eq!(
+                got.error_estimate.map(f64::to_bits),
+                other.error_estimate.map(f64::to_bits)
+            );
+            assert_eq!(got.method, other.method);
+        }
+        assert_eq!(
+            got.method,
+            ReferenceMethod::Supersampled {
+                strata: opts.strata
+            }
+        );
+        assert_eq!(steps.len(), 1, "one intermediate image");
+        let (coarse, k, n) = &steps[0];
+        assert_eq!((*k, *n), (1, 2));
+        assert_eq!(
+            coarse.method,
+            ReferenceMethod::Jittered {
+                strata: opts.strata
+            }
+        );
+        assert_eq!(coarse.w, w);
+        // The returned estimate RMS(I_s − I_2s) is made from exactly this first pass.
+        let mse = coarse
+            .pixels
+            .iter()
+            .zip(&got.pixels)
+            .map(|(a, b)| (a - b) * (a - b))
+            .sum::<f64>()
+            / (w * w) as f64;
+        assert_eq!(mse.sqrt().to_bits(), got.error_estimate.unwrap().to_bits());
+        assert_eq!(coarse.error_estimate.is_none(), opts.strata == 1);
+    }
+    // Exact and quadrature references have one pass: no callback, the same image.
+    for sig in [
+        Signal::ZonePlate(ZonePlate::default()),
+        Signal::Chirp(Chirp::default()),
+        Signal::Polygon(Polygon::default()),
+        Signal::Grating(Grating::default()),
+    ] {
+        let mut calls = 0;
+        let got = reference_image_progressive(
+            &sig,
+            20,
+            &ReferenceOptions::default(),
+            &c,
+            &mut |_, _, _| calls += 1,
+        )
+        .unwrap();
+        assert_eq!(calls, 0, "{}", sig.name());
+        let plain = reference_image(&sig, 20).unwrap();
+        assert!(same_bits(&got.pixels, &plain.pixels));
+        assert_eq!(got.method, plain.method);
+    }
+}
+
+#[test]
+fn first_pass_standard_error_is_a_conservative_estimate() {
+    // The checkerboard at W = 16: I_s (s = 4) against a 32×32 + 64×64 supersampled "truth"
+    // (own RMS error ≈ its estimate, far below I_s's). The per-pixel standard error must not
+    // under-estimate I_s's RMS error, nor exceed it by more than the stratification gain
+    // (measured below; jittered sampling beats the i.i.d. σ/√N by a few times here).
+    let board = Signal::Checkerboard(Checkerboard::default());
+    let c = Cancel::never();
+    let w = 16;
+    let truth = reference_supersampled(
+        &board,
+        w,
+        &ReferenceOptions {
+            strata: 32,
+            seed: 77,
+        },
+        &c,
+    )
+    .unwrap();
+    let mut first = None;
+    reference_image_progressive(
+        &board,
+        w,
+        &ReferenceOptions { strata: 4, seed: 5 },
+        &c,
+        &mut |img, _, _| first = Some(img.clone()),
+    )
+    .unwrap();
+    let first = first.unwrap();
+    let actual = rmse(&first.pixels, &truth.pixels).unwrap();
+    let est = first.error_estimate.unwrap();
+    eprintln!(
+        "first pass 4×4: actual RMS error {actual:.3e}, standard-error estimate {est:.3e}; \
+         truth's own estimate {:.1e}",
+        truth.error_estimate.unwrap()
+    );
+    assert!(est >= actual, "{est:e} < {actual:e}");
+    assert!(est < 10.0 * actual, "{est:e} vs {actual:e}");
 }

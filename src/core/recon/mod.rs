@@ -47,8 +47,8 @@ mod accum;
 pub use convergence::{convergence_curve, ConvergenceCurve, ConvergencePoint, DEFAULT_SPP_LIST};
 pub use grid::{resample_grid, sample_grid};
 pub use reference::{
-    reference_image, reference_image_with, reference_supersampled, ReferenceImage, ReferenceMethod,
-    ReferenceOptions,
+    reference_image, reference_image_progressive, reference_image_with, reference_supersampled,
+    ReferenceImage, ReferenceMethod, ReferenceOptions,
 };
 pub use scattered::{reconstruct_scattered, reconstruct_scattered_gather, sample_signal};
 pub use supersample::{supersample, Jittered, PatternProvider, SampleProvider, UniformGrid};

@@ -95,6 +95,15 @@
 //! the error of the returned I_2s about threefold: a conservative estimate. Cost: 5s² signal
 //! evaluations per pixel. When the signal is not resolved even at 2s strata per pixel (a zone
 //! plate with K·ρ ≫ 2sW) the two differ, and ε says so.
+//!
+//! **Progressive.** [`reference_image_progressive`] hands out I_s (method
+//! [`ReferenceMethod::Jittered`]) as soon as it is done, then computes I_2s and returns exactly
+//! what [`reference_image_with`] returns (which is the progressive function with a no-op
+//! callback). I_s's own estimate is the per-pixel standard error √(mean over pixels of s²ₚ/N),
+//! N = s² and s²ₚ the sample variance of pixel p's N values: with one uniform point per stratum,
+//! E[s²ₚ] = N/(N − 1)·(σₚ² − Var(Īₚ)) ≥ σₚ² ≥ N·Var(Īₚ) (σₚ² the variance of f over the pixel;
+//! stratification gives Var(Īₚ) ≤ σₚ²/N, often much less), so the estimate is conservative in
+//! expectation, by the stratification gain; `None` when s = 1.
 
 use super::coverage::{half_planes, pixel_coverage};
 use super::{check_cancel, check_size, check_work, ReconError, MAX_W};
@@ -129,6 +138,12 @@ pub enum ReferenceMethod {
         /// s, the strata per axis of the coarser pass.
         strata: usize,
     },
+    /// One pass of `strata`×`strata` jittered samples per pixel: the intermediate image of a
+    /// progressive supersampled reference ([`reference_image_progressive`]).
+    Jittered {
+        /// s, the strata per axis.
+        strata: usize,
+    },
 }
 
 impl ReferenceMethod {
@@ -142,6 +157,9 @@ impl ReferenceMethod {
             }
             ReferenceMethod::Supersampled { strata } => {
                 format!("{0}×{0} jittered supersampling", 2 * strata)
+            }
+            ReferenceMethod::Jittered { strata } => {
+                format!("{strata}×{strata} jittered supersampling (first pass)")
             }
         }
     }
@@ -206,6 +224,23 @@ pub fn reference_image_with(
     options: &ReferenceOptions,
     cancel: &Cancel,
 ) -> Result<ReferenceImage, ReconError> {
+    reference_image_progressive(signal, w, options, cancel, &mut |_, _, _| {})
+}
+
+/// [`reference_image_with`], handing out intermediate images: `on_step(image, k, n)` is called
+/// after pass k of n for every pass but the last, whose image is the return value. A
+/// supersampled reference calls it once, with the s×s pass I_s ([`ReferenceMethod::Jittered`],
+/// its estimate described in the module docs), then returns I_2s; exact and quadrature
+/// references have one pass and never call it. The result is bit for bit that of
+/// [`reference_image_with`] (which calls this with a no-op): the first pass is computed once
+/// and reused.
+pub fn reference_image_progressive(
+    signal: &Signal,
+    w: usize,
+    options: &ReferenceOptions,
+    cancel: &Cancel,
+    on_step: &mut dyn FnMut(&ReferenceImage, usize, usize),
+) -> Result<ReferenceImage, ReconError> {
     signal.validate()?;
     check_size("w", w, 1, MAX_W)?;
     let start = Instant::now();
@@ -247,7 +282,9 @@ pub fn reference_image_with(
                 Some(bound),
             )
         }
-        Signal::Checkerboard(_) => return reference_supersampled(signal, w, options, cancel),
+        Signal::Checkerboard(_) => {
+            return supersampled(signal, w, options, cancel, on_step);
+        }
     };
     Ok(ReferenceImage {
         w,
@@ -312,6 +349,17 @@ pub fn reference_supersampled(
     options: &ReferenceOptions,
     cancel: &Cancel,
 ) -> Result<ReferenceImage, ReconError> {
+    supersampled(signal, w, options, cancel, &mut |_, _, _| {})
+}
+
+/// [`reference_supersampled`], handing I_s to `on_step(·, 1, 2)` before computing I_2s.
+fn supersampled(
+    signal: &Signal,
+    w: usize,
+    options: &ReferenceOptions,
+    cancel: &Cancel,
+    on_step: &mut dyn FnMut(&ReferenceImage, usize, usize),
+) -> Result<ReferenceImage, ReconError> {
     signal.validate()?;
     check_size("w", w, 1, MAX_W)?;
     check_size("strata", options.strata, 1, MAX_STRATA)?;
@@ -321,9 +369,23 @@ pub fn reference_supersampled(
         (w * w) as u128 * 5 * (s * s) as u128,
     )?;
     let start = Instant::now();
-    let coarse = jittered_image(signal, w, s, derive_seed(options.seed, 0), cancel)?;
-    let fine = jittered_image(signal, w, 2 * s, derive_seed(options.seed, 1), cancel)?;
+    let (coarse, variance) = jittered_image(signal, w, s, derive_seed(options.seed, 0), cancel)?;
+    // Mean over pixels of s²ₚ/N (module docs); undefined for one sample per pixel.
+    let coarse_estimate = (s > 1).then(|| {
+        let n = (s * s) as f64;
+        (variance.iter().sum::<f64>() / n / (w * w) as f64).sqrt()
+    });
+    let coarse = ReferenceImage {
+        w,
+        pixels: coarse,
+        error_estimate: coarse_estimate,
+        method: ReferenceMethod::Jittered { strata: s },
+        wall_time: start.elapsed(),
+    };
+    on_step(&coarse, 1, 2);
+    let (fine, _) = jittered_image(signal, w, 2 * s, derive_seed(options.seed, 1), cancel)?;
     let mse = coarse
+        .pixels
         .iter()
         .zip(&fine)
         .map(|(a, b)| (a - b) * (a - b))
@@ -338,28 +400,38 @@ pub fn reference_supersampled(
     })
 }
 
-/// Mean of `s×s` jittered samples per pixel; pixel k uses `Rng::new(derive_seed(seed, k))`.
+/// Mean of `s×s` jittered samples per pixel, and each pixel's sample variance
+/// (Σ(v − mean)²/(N − 1), N = s²; 0 when N = 1); pixel k uses `Rng::new(derive_seed(seed, k))`.
 fn jittered_image(
     signal: &Signal,
     w: usize,
     s: usize,
     seed: u64,
     cancel: &Cancel,
-) -> Result<Vec<f64>, ReconError> {
+) -> Result<(Vec<f64>, Vec<f64>), ReconError> {
     let sw = (s * w) as f64;
     let inv = 1.0 / (s * s) as f64;
-    per_pixel(w, cancel, |i, j| {
+    let both = per_pixel(w, cancel, |i, j| {
         let mut rng = Rng::new(derive_seed(seed, (j * w + i) as u64));
-        let mut sum = 0.0;
+        let (mut sum, mut sum2) = (0.0, 0.0);
         for b in 0..s {
             for a in 0..s {
                 let x = ((i * s + a) as f64 + rng.next_f64()) / sw;
                 let y = ((j * s + b) as f64 + rng.next_f64()) / sw;
-                sum += signal.eval(DVec2::new(x, y));
+                let v = signal.eval(DVec2::new(x, y));
+                sum += v;
+                sum2 += v * v;
             }
         }
-        sum * inv
-    })
+        let mean = sum * inv;
+        let variance = if s > 1 {
+            ((sum2 - sum * mean) / (s * s - 1) as f64).max(0.0)
+        } else {
+            0.0
+        };
+        (mean, variance)
+    })?;
+    Ok(both.into_iter().unzip())
 }
 
 /// Fills a W×W image with `f(i, j)`, parallel over rows, cancellable every row.
