@@ -29,10 +29,18 @@ fn temp_dir(name: &str) -> PathBuf {
     dir
 }
 
+/// The disk cache of these tests' renders (never the user's).
+fn cache_dir() -> PathBuf {
+    PathBuf::from(env!("CARGO_TARGET_TMPDIR"))
+        .join(format!("render_cli-cache-{}", std::process::id()))
+}
+
 fn render(args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_samplescope"))
         .arg("render")
         .args(args)
+        .env("SAMPLESCOPE_CACHE_DIR", cache_dir())
+        .env_remove("SAMPLESCOPE_NO_CACHE")
         .output()
         .expect("run samplescope")
 }
@@ -74,15 +82,21 @@ fn render_twice_gives_byte_identical_files() {
     let dir = temp_dir("twice");
     let scene = dir.join("small.ron");
     std::fs::write(&scene, SCENE).unwrap();
-    let (a, b) = (dir.join("a"), dir.join("b"));
-    for out in [&a, &b] {
-        let o = render(&[
+    // a computes the references (and stores them on disk), b takes them from the disk cache,
+    // c computes them again with --no-cache: all three write the same bytes.
+    let (a, b, c) = (dir.join("a"), dir.join("b"), dir.join("c"));
+    for (i, out) in [&a, &b, &c].into_iter().enumerate() {
+        let mut args = vec![
             scene.to_str().unwrap(),
             "--out",
             out.to_str().unwrap(),
             "--scale",
             "1",
-        ]);
+        ];
+        if i == 2 {
+            args.push("--no-cache");
+        }
+        let o = render(&args);
         assert!(o.status.success(), "{}", stderr(&o));
         // One printed line per written file.
         let printed = String::from_utf8(o.stdout).unwrap();
@@ -91,6 +105,15 @@ fn render_twice_gives_byte_identical_files() {
             assert!(Path::new(line).is_file(), "{line}");
         }
     }
+    let cached = std::fs::read_dir(cache_dir())
+        .unwrap()
+        .filter(|e| {
+            let n = e.as_ref().unwrap().file_name();
+            n.to_string_lossy().starts_with("reference-")
+        })
+        .count();
+    assert!(cached >= 1, "no reference image in the disk cache");
+    same_files(&a, &c, &[]);
     let names = same_files(
         &a,
         &b,

@@ -278,7 +278,7 @@ fn keys_are_stable_distinct_and_change_with_their_inputs_only() {
     assert_ne!(k, graph::key_of(NodeKind::Samples, &43u32, &[]).unwrap());
     assert_ne!(k, graph::key_of(NodeKind::Points, &42u32, &[]).unwrap());
     let mut h = blake3::Hasher::new();
-    h.update(b"samplescope-node-v1\0samples\042\0");
+    h.update(b"samplescope-node-v1\x00samples\x0042\x00");
     assert_eq!(k.hash, *h.finalize().as_bytes());
 }
 
@@ -400,14 +400,14 @@ fn a_dead_engine_says_so_and_nothing_waits_forever() {
 
 #[test]
 fn slow_nodes_publish_coarse_results_then_the_exact_final_one() {
-    // 64 realizations of a 128² spectrum take well over the partial interval on 2 cores.
+    // 128 realizations of a 256² spectrum of 4096 points take well over the partial interval.
     let mut s = Scene::builtin_default();
     s.panels.pattern = false;
     s.panels.zoneplate = false;
     s.panels.filter = false;
-    s.n = 2048;
-    s.spectrum.size = 128;
-    s.spectrum.realizations = 64;
+    s.n = 4096;
+    s.spectrum.size = 256;
+    s.spectrum.realizations = 128;
     let mut engine = Engine::with_evaluator(Evaluator::default(), Arc::new(|| {}));
     engine.submit(&s);
     let updates = engine.wait(Duration::from_secs(300));
@@ -424,7 +424,7 @@ fn slow_nodes_publish_coarse_results_then_the_exact_final_one() {
     );
     for u in &spectra[..spectra.len() - 1] {
         let p = u.progress.unwrap();
-        assert!(p.step < p.steps && p.steps == 64);
+        assert!(p.step < p.steps && p.steps == 128);
         assert!(u.result.accuracy.as_deref().unwrap().contains("rel. noise"));
     }
     // The final result is exactly what a plain evaluation computes.
@@ -461,5 +461,115 @@ fn engine_delivers_the_latest_generation_only() {
     match &points.result.value {
         Ok(samplescope::scene::graph::NodeValue::Points(p)) => assert_eq!(p.points.len(), 700),
         other => panic!("{other:?}"),
+    }
+}
+
+fn temp_dir(name: &str) -> std::path::PathBuf {
+    let d = std::env::temp_dir().join(format!("samplescope-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    d
+}
+
+fn reference_of(eval: &Evaluator, s: &Scene) -> Vec<f32> {
+    let mut out = None;
+    eval.evaluate(s, &Cancel::never(), &mut |_, k, r| {
+        if k == NodeKind::Reference {
+            match &r.value {
+                Ok(NodeValue::Reference(d)) => out = Some(d.image.values.as_ref().clone()),
+                other => panic!("{other:?}"),
+            }
+        }
+    });
+    out.expect("reference delivered")
+}
+
+#[test]
+fn reference_images_persist_on_disk_and_a_corrupt_file_is_recomputed() {
+    use samplescope::engine::disk_cache::DiskCache;
+    let dir = temp_dir("disk-cache");
+    let mut s = small(Scene::builtin_default());
+    // The checkerboard's reference is supersampled: worth keeping.
+    s.signal = samplescope::core::signal::Signal::Checkerboard(Default::default());
+    s.recon.size = 64;
+    let open = || {
+        Evaluator::new(
+            1 << 30,
+            Some(DiskCache::open(dir.clone(), 1 << 30).unwrap()),
+        )
+    };
+    let first = open();
+    let a = reference_of(&first, &s);
+    assert_eq!(first.count(NodeKind::Reference), 1);
+    // A new process (fresh evaluator, empty memory cache) finds it on disk: no evaluation,
+    // same bits.
+    let second = open();
+    let b = reference_of(&second, &s);
+    assert_eq!(second.count(NodeKind::Reference), 0, "not taken from disk");
+    assert!(a.iter().zip(&b).all(|(x, y)| x.to_bits() == y.to_bits()));
+    // Corrupt every entry: the next evaluator ignores them and computes again, same bits.
+    for e in std::fs::read_dir(&dir).unwrap() {
+        let p = e.unwrap().path();
+        let mut bytes = std::fs::read(&p).unwrap();
+        let mid = bytes.len() / 2;
+        bytes[mid] ^= 0x40;
+        std::fs::write(&p, bytes).unwrap();
+    }
+    let third = open();
+    let c = reference_of(&third, &s);
+    assert_eq!(
+        third.count(NodeKind::Reference),
+        1,
+        "a corrupt file was trusted"
+    );
+    assert!(a.iter().zip(&c).all(|(x, y)| x.to_bits() == y.to_bits()));
+    // Without a disk cache nothing is read.
+    let none = Evaluator::default();
+    reference_of(&none, &s);
+    assert_eq!(none.count(NodeKind::Reference), 1);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn parallel_and_serial_evaluation_give_the_same_bits() {
+    let mut s = small(Scene::builtin_default());
+    s.columns.push(s.columns[0].clone());
+    s.columns[1].seed = 9;
+    s.effects.statistics = true;
+    let collect = |serial: bool| {
+        let eval = Evaluator::default();
+        let mut out: Vec<(usize, NodeKind, String)> = Vec::new();
+        let mut sink = |c: usize, k: NodeKind, r: Arc<NodeResult>| {
+            out.push((c, k, bits(r.value.as_ref().unwrap())));
+        };
+        if serial {
+            eval.evaluate_serial(&s, &Cancel::never(), &mut sink);
+        } else {
+            eval.evaluate(&s, &Cancel::never(), &mut sink);
+        }
+        out.sort_by_key(|a| (a.0, a.1));
+        out
+    };
+    let (p, q) = (collect(false), collect(true));
+    assert_eq!(p.len(), q.len());
+    for (a, b) in p.iter().zip(&q) {
+        assert_eq!((a.0, a.1), (b.0, b.1));
+        assert!(a.2 == b.2, "{:?} column {} differs", a.1, a.0);
+    }
+}
+
+/// The computed numbers of a value (not its timings or upload versions), printed exactly.
+fn bits(v: &NodeValue) -> String {
+    let img = |i: &graph::ImageData| format!("{:?}", i.values);
+    match v {
+        NodeValue::Points(p) => format!("{:?}", p.points),
+        NodeValue::Statistics(s) => format!("{s:?}"),
+        NodeValue::Spectrum(s) => format!("{} {:?} {:?}", img(&s.image), s.raps, s.anisotropy),
+        NodeValue::Samples(s) => format!("{s:?}"),
+        NodeValue::Reconstruction(r) => img(&r.image),
+        NodeValue::Reference(r) => format!("{} {:?}", img(&r.image), r.error_estimate),
+        NodeValue::Error(e) => format!("{} {}", img(&e.image), e.rmse),
+        NodeValue::Response(r) => format!("{} {:?} {:?}", img(&r.image), r.magnitude, r.metrics),
+        NodeValue::Convergence(c) => format!("{:?}", c.iter().map(|p| p.rmse).collect::<Vec<_>>()),
+        NodeValue::Theorem(t) => format!("{:?}", t.errors),
     }
 }

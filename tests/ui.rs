@@ -196,3 +196,78 @@ fn save_menu_writes_the_panel_figure_with_scene_pattern_n_and_seed_in_its_name()
     assert!(text.iter().any(|t| t.contains("jitter")), "{text:?}");
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+#[test]
+fn a_figure_saved_during_a_recompute_has_labels_and_pixels_of_one_scene() {
+    use samplescope::export::figure::PanelKind;
+    use samplescope::ui::figures::{Done, Output, Request, Target};
+    let mut h = harness();
+    // A slow recompute: 64 spectrum realizations and a new N.
+    h.state_mut().scene.spectrum.realizations = 64;
+    h.state_mut().scene.n = 1000;
+    h.step();
+    let check = |app: &SamplescopeApp, when: &str| {
+        let snap = app.figure_snapshot();
+        let points = snap.columns[0]
+            .points
+            .as_ref()
+            .expect("points in the snapshot");
+        assert_eq!(
+            snap.scene.n,
+            points.points.len(),
+            "{when}: the labels' N and the drawn points differ"
+        );
+        snap
+    };
+    let mut mid = false;
+    for _ in 0..200 {
+        h.step();
+        let app = h.state();
+        if app.engine.is_idle() {
+            break;
+        }
+        // Mid-recompute (the new points may be on screen already): the saved figure is the
+        // last complete picture, N = 4096 with 4096 points.
+        let snap = check(app, "during the recompute");
+        mid |= snap.scene.n == 4096;
+        let dir = std::env::temp_dir().join(format!("samplescope-ui-mid-{}", std::process::id()));
+        let req = Request {
+            target: Target::Panel {
+                column: 0,
+                kind: PanelKind::Pattern,
+            },
+            output: Output::Png { scale: 1 },
+        };
+        match snap.run(req, &dir) {
+            Done::Written(p) => {
+                let name = p.file_name().unwrap().to_string_lossy().into_owned();
+                assert!(name.contains(&format!("_n{}_", snap.scene.n)), "{name}");
+            }
+            Done::Failed(e) => panic!("{e}"),
+            Done::Clipboard(..) => panic!("not a file"),
+        }
+        let _ = std::fs::remove_dir_all(&dir);
+        std::thread::sleep(Duration::from_millis(10));
+    }
+    assert!(mid, "never saw the recompute in flight");
+    settle(&mut h);
+    let snap = check(h.state(), "after the recompute");
+    assert_eq!(snap.scene.n, 1000);
+}
+
+#[test]
+fn a_dead_engine_shows_a_banner() {
+    let mut h = harness();
+    h.state().engine.crash_for_test();
+    h.state_mut().scene.n = 777;
+    for _ in 0..50 {
+        h.step();
+        if h.state().engine.failure().is_some() {
+            break;
+        }
+        std::thread::sleep(Duration::from_millis(10));
+    }
+    h.run_steps(2);
+    assert!(h.state().engine.failure().is_some());
+    h.get_by_label_contains("compute engine stopped");
+}

@@ -37,6 +37,25 @@ use std::time::{Duration, Instant};
 /// Default size bound of the on-disk cache of reference images: 1 GiB.
 pub const DISK_CACHE_BYTES: u64 = 1 << 30;
 
+/// Allowed memory budgets, MiB.
+pub const MEMORY_MIB: std::ops::RangeInclusive<usize> = 16..=1 << 20;
+
+/// The memory cache budget in bytes from the value of `SAMPLESCOPE_MEMORY_MIB` (MiB, in
+/// [`MEMORY_MIB`]); [`cache::DEFAULT_BUDGET`] when unset.
+pub fn memory_budget(value: Option<&str>) -> Result<usize, String> {
+    let Some(v) = value else {
+        return Ok(cache::DEFAULT_BUDGET);
+    };
+    match v.trim().parse::<usize>() {
+        Ok(m) if MEMORY_MIB.contains(&m) => Ok(m << 20),
+        _ => Err(format!(
+            "SAMPLESCOPE_MEMORY_MIB = {v:?}: must be an integer in {}..={} (MiB)",
+            MEMORY_MIB.start(),
+            MEMORY_MIB.end()
+        )),
+    }
+}
+
 /// The on-disk cache of reference images at [`disk_cache::DiskCache::default_dir`] (the
 /// platform cache directory, or `$SAMPLESCOPE_CACHE_DIR`), bounded by [`DISK_CACHE_BYTES`];
 /// `None` when `SAMPLESCOPE_NO_CACHE` is set or no directory can be used (a warning says why).
@@ -286,10 +305,14 @@ impl Engine {
     /// the disk cache at [`disk_cache::DiskCache::default_dir`] unless `SAMPLESCOPE_NO_CACHE`
     /// is set). `repaint` is called whenever a result is ready.
     pub fn new(repaint: Repaint) -> Engine {
-        Engine::with_evaluator(
-            Evaluator::new(cache::DEFAULT_BUDGET, default_disk_cache()),
-            repaint,
-        )
+        let budget = match memory_budget(std::env::var("SAMPLESCOPE_MEMORY_MIB").ok().as_deref()) {
+            Ok(b) => b,
+            Err(e) => {
+                eprintln!("samplescope: {e}; using the default of 1024 MiB");
+                cache::DEFAULT_BUDGET
+            }
+        };
+        Engine::with_evaluator(Evaluator::new(budget, default_disk_cache()), repaint)
     }
 
     /// Starts the coordinator on `evaluator`'s caches.
@@ -436,5 +459,21 @@ impl Engine {
 impl Drop for Engine {
     fn drop(&mut self) {
         let _ = self.events.send(Event::Shutdown);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn memory_budget_parses_mib_and_names_the_variable_and_range() {
+        assert_eq!(super::memory_budget(None), Ok(super::cache::DEFAULT_BUDGET));
+        assert_eq!(super::memory_budget(Some("64")), Ok(64 << 20));
+        for bad in ["0", "15", "abc", "-5", "1e3", "", "1048577"] {
+            let e = super::memory_budget(Some(bad)).unwrap_err();
+            assert!(
+                e.contains("SAMPLESCOPE_MEMORY_MIB") && e.contains("16..=1048576"),
+                "{e}"
+            );
+        }
     }
 }

@@ -291,7 +291,6 @@ impl Scheduler {
                         cancel: cancel.clone(),
                     },
                 );
-                self.shared.counts[p.kind as usize].fetch_add(1, Ordering::Relaxed);
                 spawn_job(
                     self.shared.clone(),
                     self.events.clone(),
@@ -354,8 +353,8 @@ impl Scheduler {
         self.shared.cache().insert(key, result.clone());
         if let Some(active) = self.active.as_mut() {
             if let Some(&i) = active.index.get(&key) {
-                if !active.ready.contains_key(&key) {
-                    active.ready.insert(key, result.clone());
+                if let std::collections::hash_map::Entry::Vacant(e) = active.ready.entry(key) {
+                    e.insert(result.clone());
                     deliver(active, &active.nodes[i], result, None, sink);
                 }
             }
@@ -412,6 +411,8 @@ fn spawn_job(
                 return;
             }
         }
+        // Counted once it really computes (a disk-cache hit is not an evaluation).
+        shared.counts[key.kind as usize].fetch_add(1, Ordering::Relaxed);
         let progress_events = Mutex::new(events.clone());
         let progress = move |partial: Partial| {
             let tx = progress_events.lock().unwrap_or_else(|e| e.into_inner());

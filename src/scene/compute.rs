@@ -335,29 +335,39 @@ pub(super) fn reconstruction(ctx: &JobCtx) -> Output {
 pub(super) fn reference(ctx: &JobCtx) -> Output {
     let (scene, cancel) = (ctx.scene, ctx.cancel);
     let w = scene.recon.size;
-    let r = crate::core::recon::reference_image_with(
+    let data = |r: &crate::core::recon::ReferenceImage| {
+        let accuracy = r.error_estimate.map(|e| {
+            if r.method.estimate_is_bound() {
+                format!("own error ≤ {e:.1e}")
+            } else {
+                format!("own RMS error ≈ {e:.1e}")
+            }
+        });
+        let value = NodeValue::Reference(Arc::new(ReferenceData {
+            image: image_from_pixels(w, &r.pixels),
+            error_estimate: r.error_estimate,
+            method: r.method.label(),
+        }));
+        (value, accuracy)
+    };
+    // A supersampled reference shows its s×s pass first, then the 2s×2s one.
+    let r = crate::core::recon::reference_image_progressive(
         &scene.signal,
         w,
         &crate::core::recon::ReferenceOptions::default(),
         cancel,
+        &mut |img, step, steps| {
+            let (value, accuracy) = data(img);
+            (ctx.progress)(Partial {
+                value,
+                accuracy,
+                step,
+                steps,
+            });
+        },
     )
     .map_err(|e| e.to_string())?;
-    let method = r.method.label();
-    let accuracy = r.error_estimate.map(|e| {
-        if r.method.estimate_is_bound() {
-            format!("own error ≤ {e:.1e}")
-        } else {
-            format!("own RMS error ≈ {e:.1e}")
-        }
-    });
-    Ok((
-        NodeValue::Reference(Arc::new(ReferenceData {
-            image: image_from_pixels(w, &r.pixels),
-            error_estimate: r.error_estimate,
-            method,
-        })),
-        accuracy,
-    ))
+    Ok(data(&r))
 }
 
 pub(super) fn error(ctx: &JobCtx) -> Output {
@@ -479,25 +489,36 @@ pub(super) fn convergence(ctx: &JobCtx) -> Output {
         pattern: col.pattern,
         seed: col.seed,
     };
-    let curve = crate::core::recon::convergence_curve(
+    let plain = |points: &[crate::core::recon::ConvergencePoint]| -> Vec<ConvergencePoint> {
+        points
+            .iter()
+            .map(|p| ConvergencePoint {
+                spp: p.spp,
+                rmse: p.rmse,
+                millis: ms(p.time),
+            })
+            .collect()
+    };
+    let steps = CONVERGENCE_SPP.len();
+    // The curve grows one spp level at a time on screen.
+    let curve = crate::core::recon::convergence_curve_progressive(
         &scene.signal,
         &provider,
         &CONVERGENCE_SPP,
         CONVERGENCE_SIZE,
         &scene.filter,
         cancel,
+        &mut |points| {
+            (ctx.progress)(Partial {
+                value: NodeValue::Convergence(Arc::new(plain(points))),
+                accuracy: Some(format!("{} of {steps} spp levels", points.len())),
+                step: points.len(),
+                steps,
+            })
+        },
     )
     .map_err(|e| e.to_string())?;
-    let points = curve
-        .points
-        .iter()
-        .map(|p| ConvergencePoint {
-            spp: p.spp,
-            rmse: p.rmse,
-            millis: ms(p.time),
-        })
-        .collect();
-    Ok((NodeValue::Convergence(Arc::new(points)), None))
+    Ok((NodeValue::Convergence(Arc::new(plain(&curve.points))), None))
 }
 
 pub(super) fn spectrum(ctx: &JobCtx) -> Output {

@@ -355,7 +355,10 @@ impl SamplescopeApp {
             ui.colored_label(egui::Color32::from_rgb(200, 40, 40), e);
         }
         if let Some(e) = self.engine.failure() {
-            ui.colored_label(egui::Color32::from_rgb(200, 40, 40), format!("⚠ {e}"));
+            ui.colored_label(
+                egui::Color32::from_rgb(200, 40, 40),
+                format!("Engine failure: {e}"),
+            );
         }
     }
 

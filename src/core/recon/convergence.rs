@@ -57,6 +57,24 @@ where
     K: ReconKernel + ?Sized,
     P: SampleProvider + ?Sized,
 {
+    convergence_curve_progressive(signal, provider, spp_list, w, kernel, cancel, &mut |_| {})
+}
+
+/// [`convergence_curve`], handing out the curve so far: `on_points(points)` is called after
+/// each spp level but the last (whose curve is the return value). Same result, bit for bit.
+pub fn convergence_curve_progressive<K, P>(
+    signal: &Signal,
+    provider: &P,
+    spp_list: &[usize],
+    w: usize,
+    kernel: &K,
+    cancel: &Cancel,
+    on_points: &mut dyn FnMut(&[ConvergencePoint]),
+) -> Result<ConvergenceCurve, ReconError>
+where
+    K: ReconKernel + ?Sized,
+    P: SampleProvider + ?Sized,
+{
     check_size("spp_list.len()", spp_list.len(), 1, 64)?;
     for &spp in spp_list {
         check_size("spp", spp, 1, MAX_SPP)?;
@@ -72,6 +90,9 @@ where
             psnr: e.psnr,
             time: r.wall_time,
         });
+        if points.len() < spp_list.len() {
+            on_points(&points);
+        }
     }
     Ok(ConvergenceCurve {
         points,

@@ -44,7 +44,10 @@ pub mod supersample;
 
 mod accum;
 
-pub use convergence::{convergence_curve, ConvergenceCurve, ConvergencePoint, DEFAULT_SPP_LIST};
+pub use convergence::{
+    convergence_curve, convergence_curve_progressive, ConvergenceCurve, ConvergencePoint,
+    DEFAULT_SPP_LIST,
+};
 pub use grid::{resample_grid, sample_grid};
 pub use reference::{
     reference_image, reference_image_progressive, reference_image_with, reference_supersampled,
