@@ -1,16 +1,24 @@
-//! Splatting vs per-pixel gathering of scattered samples.
+//! Splatting vs per-pixel gathering of scattered samples; the zone plate's reference image.
 //!
 //! Target: 65 536 samples, 5×5 taps each (kernel radius 1.25 sample spacings = 2.5 px), onto a
 //! 512×512 image in ≤ 5 ms on one core, i.e. ≤ 3 ns per tap. Both algorithms run on a
 //! one-thread rayon pool so the ratio compares one core with one core. A summary table (best
 //! of 15 runs, wall and on-CPU time) is printed after the criterion measurements.
+//!
+//! Group `reference`: the 512² zone plate reference (K = 256, `ZonePlate::default()`) by
+//! separable Gauss–Legendre quadrature, against 8×8 + 16×16 jittered supersampling
+//! (`reference_supersampled`, default options) in the same run, both on the global rayon pool
+//! (all cores). A table of medians and the ratio (also at K = 64, the default scene's
+//! `default.ron`, and K = 2000) follows, printed only when
+//! the command line's filter selects the group (`cargo bench --bench recon -- reference`).
 
-use criterion::{criterion_group, criterion_main, Criterion};
+use criterion::{criterion_group, criterion_main, Criterion, SamplingMode};
 use glam::DVec2;
 use samplescope::core::cancel::Cancel;
 use samplescope::core::recon::kernels::{GaussianKernel, NonSeparable, TentKernel};
 use samplescope::core::recon::{
-    reconstruct_scattered, reconstruct_scattered_gather, sample_signal, ReconKernel,
+    reconstruct_scattered, reconstruct_scattered_gather, reference_image, reference_supersampled,
+    rmse, sample_signal, ReconKernel, ReferenceOptions,
 };
 use samplescope::core::rng::Rng;
 use samplescope::core::signal::{Signal, ZonePlate};
@@ -207,5 +215,114 @@ fn bench(c: &mut Criterion) {
     println!("target: splat ≤ 5 ms (≤ 3 ns per tap) for the separable tent");
 }
 
-criterion_group!(benches, bench);
+/// Whether the criterion filter on the command line (`cargo bench --bench recon -- FILTER`)
+/// selects one of `ids` (a substring match, as for plain-word filters; no filter selects all).
+/// The values of criterion's value-taking flags are not filters.
+fn selected(ids: &[&str]) -> bool {
+    const WITH_VALUE: [&str; 16] = [
+        "--save-baseline",
+        "-s",
+        "--baseline",
+        "-b",
+        "--load-baseline",
+        "--sample-size",
+        "--warm-up-time",
+        "--measurement-time",
+        "--nresamples",
+        "--noise-threshold",
+        "--confidence-level",
+        "--significance-level",
+        "--plotting-backend",
+        "--output-format",
+        "--profile-time",
+        "--color",
+    ];
+    let mut args = std::env::args().skip(1);
+    let mut filters = Vec::new();
+    while let Some(a) = args.next() {
+        if WITH_VALUE.contains(&a.as_str()) {
+            args.next();
+        } else if !a.starts_with('-') {
+            filters.push(a);
+        }
+    }
+    filters.is_empty()
+        || filters
+            .iter()
+            .any(|f| ids.iter().any(|id| id.contains(f.as_str())))
+}
+
+/// Median wall time of `reps` ≥ 1 runs of `f` in ms, and the last run's result.
+fn median_ms<T>(reps: usize, f: impl Fn() -> T) -> (f64, T) {
+    let mut t = Vec::with_capacity(reps);
+    let mut last = None;
+    for _ in 0..reps {
+        let s = Instant::now();
+        let r = black_box(f());
+        t.push(s.elapsed().as_secs_f64() * 1e3);
+        last = Some(r);
+    }
+    t.sort_by(f64::total_cmp);
+    (t[reps / 2], last.expect("reps ≥ 1"))
+}
+
+fn bench_reference(c: &mut Criterion) {
+    let cancel = Cancel::never();
+    let opts = ReferenceOptions::default();
+    let plate = |k: f64| {
+        Signal::ZonePlate(ZonePlate {
+            k,
+            ..ZonePlate::default()
+        })
+    };
+    // The signal's default zone plate: K = 256, centre (½, ½).
+    let z = Signal::ZonePlate(ZonePlate::default());
+    let ids = [
+        "reference/zone plate 512 K=256 quadrature",
+        "reference/zone plate 512 K=256 supersampled",
+    ];
+    let mut group = c.benchmark_group("reference");
+    group.sample_size(10);
+    // One iteration per sample: the supersampled reference takes seconds.
+    group.sampling_mode(SamplingMode::Flat);
+    group.bench_function("zone plate 512 K=256 quadrature", |b| {
+        b.iter(|| black_box(reference_image(&z, W).expect("ok")))
+    });
+    group.bench_function("zone plate 512 K=256 supersampled", |b| {
+        b.iter(|| black_box(reference_supersampled(&z, W, &opts, &cancel).expect("ok")))
+    });
+    group.finish();
+    if !selected(&ids) {
+        return;
+    }
+    println!();
+    println!(
+        "zone plate reference, {W}², {} threads: separable 20-point Gauss–Legendre vs 8×8 + 16×16 \
+         jittered supersampling (medians of 21 and 3 runs)",
+        rayon::current_num_threads()
+    );
+    println!(
+        "{:<8} {:>14} {:>16} {:>10} {:>12} {:>12} {:>16}",
+        "K", "quadrature ms", "supersampled ms", "speedup", "bound", "ss estimate", "RMS(q − ss)"
+    );
+    for k in [64.0, 256.0, 2000.0] {
+        let sig = plate(k);
+        let (fast, q) = median_ms(21, || reference_image(&sig, W).expect("ok"));
+        let (slow, ss) = median_ms(3, || {
+            reference_supersampled(&sig, W, &opts, &cancel).expect("ok")
+        });
+        println!(
+            "{:<8} {:>14.3} {:>16.1} {:>9.0}x {:>12.1e} {:>12.2e} {:>16.2e}",
+            k,
+            fast,
+            slow,
+            slow / fast,
+            q.error_estimate.expect("bound"),
+            ss.error_estimate.expect("estimate"),
+            rmse(&q.pixels, &ss.pixels).expect("same size")
+        );
+    }
+}
+
+criterion_group!(benches, bench, bench_reference);
 criterion_main!(benches);
