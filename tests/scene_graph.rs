@@ -269,16 +269,15 @@ fn keys_are_stable_distinct_and_change_with_their_inputs_only() {
     ] {
         assert_ne!(key(&a, k), key(&b, k), "{k:?}");
     }
-    // Keys are BLAKE3 over fixed text: the same on every run and platform. This value is the
-    // key of `Samples` fields `42u32` with no inputs; it changes only if the key format does
-    // (which must also invalidate the disk cache).
+    // Keys are BLAKE3 over fixed text: the same on every run and platform. This is the key
+    // of `Samples` (algorithm version 1) with fields `42u32` and no inputs.
     let k = graph::key_of(NodeKind::Samples, &42u32, &[]).unwrap();
     let again = graph::key_of(NodeKind::Samples, &42u32, &[]).unwrap();
     assert_eq!(k, again);
     assert_ne!(k, graph::key_of(NodeKind::Samples, &43u32, &[]).unwrap());
     assert_ne!(k, graph::key_of(NodeKind::Points, &42u32, &[]).unwrap());
     let mut h = blake3::Hasher::new();
-    h.update(b"samplescope-node-v1\x00samples\x0042\x00");
+    h.update(b"samplescope-node-v1\x00samples\x00\x01\x00\x00\x0042\x00");
     assert_eq!(k.hash, *h.finalize().as_bytes());
 }
 

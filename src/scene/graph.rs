@@ -15,8 +15,8 @@
 //! transitively), in dependency order, with their keys; the job of a node gets exactly the
 //! results of the inputs it declared. Adding a node is one table entry and one job function.
 //!
-//! **Keys.** A node's key is the BLAKE3 hash of its kind, the RON text of the scene fields it
-//! reads (every field and float bit; streamed into the hasher, never shared by default) and
+//! **Keys.** A node's key is the BLAKE3 hash of its kind, its algorithm's version
+//! ([`NodeDef::version`]), the RON text of the scene fields it reads (every field and float bit; streamed into the hasher, never shared by default) and
 //! the keys of its input nodes; a change therefore invalidates exactly its dependents, two
 //! columns with equal inputs share one key (one evaluation), and keys are stable across runs,
 //! builds and platforms (the on-disk cache relies on it). A field that cannot be serialised
@@ -120,6 +120,7 @@ fn fields_hasher(
     w.0.update(b"samplescope-node-v1\0");
     w.0.update(kind.name().as_bytes());
     w.0.update(b"\0");
+    w.0.update(&kind.def().version.to_le_bytes());
     ron::ser::to_writer(&mut w, fields).map_err(|e| KeyError {
         kind: kind.name(),
         message: e.to_string(),
@@ -220,6 +221,10 @@ pub struct NodeDef {
     pub run: fn(&JobCtx) -> Output,
     /// Whether its result is worth keeping on disk across runs (slow, plain-image results).
     pub disk_cached: bool,
+    /// The version of the job's algorithm, part of the key: bump it whenever the job computes
+    /// different numbers for the same inputs, so that no cache (the disk cache above all)
+    /// serves results of the old algorithm.
+    pub version: u32,
 }
 
 fn recon_on(s: &Scene) -> bool {
@@ -242,6 +247,7 @@ pub static NODES: [NodeDef; 10] = [
         },
         run: compute::points,
         disk_cached: false,
+        version: 1,
     },
     NodeDef {
         kind: NodeKind::Statistics,
@@ -250,6 +256,7 @@ pub static NODES: [NodeDef; 10] = [
         inputs: |_, _| Inputs::new(NodeKind::Statistics, &[NodeKind::Points], ()),
         run: compute::statistics,
         disk_cached: false,
+        version: 1,
     },
     NodeDef {
         kind: NodeKind::Spectrum,
@@ -275,6 +282,7 @@ pub static NODES: [NodeDef; 10] = [
         },
         run: compute::spectrum,
         disk_cached: false,
+        version: 1,
     },
     NodeDef {
         kind: NodeKind::Samples,
@@ -283,6 +291,7 @@ pub static NODES: [NodeDef; 10] = [
         inputs: |s, _| Inputs::new(NodeKind::Samples, &[NodeKind::Points], s.signal),
         run: compute::samples,
         disk_cached: false,
+        version: 1,
     },
     NodeDef {
         kind: NodeKind::Reconstruction,
@@ -309,6 +318,7 @@ pub static NODES: [NodeDef; 10] = [
         },
         run: compute::reconstruction,
         disk_cached: false,
+        version: 1,
     },
     NodeDef {
         kind: NodeKind::Reference,
@@ -317,6 +327,8 @@ pub static NODES: [NodeDef; 10] = [
         inputs: |s, _| Inputs::new(NodeKind::Reference, &[], (&s.signal, s.recon.size)),
         run: compute::reference,
         disk_cached: true,
+        // 2: separable quadrature for the zone plate and the chirp.
+        version: 2,
     },
     NodeDef {
         kind: NodeKind::Error,
@@ -331,6 +343,7 @@ pub static NODES: [NodeDef; 10] = [
         },
         run: compute::error,
         disk_cached: false,
+        version: 1,
     },
     NodeDef {
         kind: NodeKind::Response,
@@ -339,6 +352,7 @@ pub static NODES: [NodeDef; 10] = [
         inputs: |s, _| Inputs::new(NodeKind::Response, &[], s.filter),
         run: compute::response,
         disk_cached: false,
+        version: 1,
     },
     NodeDef {
         kind: NodeKind::Convergence,
@@ -354,6 +368,7 @@ pub static NODES: [NodeDef; 10] = [
         },
         run: compute::convergence,
         disk_cached: false,
+        version: 1,
     },
     NodeDef {
         kind: NodeKind::Theorem,
@@ -363,6 +378,7 @@ pub static NODES: [NodeDef; 10] = [
         inputs: |s, _| Inputs::new(NodeKind::Theorem, &[], s.theorem),
         run: compute::theorem,
         disk_cached: false,
+        version: 1,
     },
 ];
 

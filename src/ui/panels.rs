@@ -702,16 +702,20 @@ fn zoneplate_panel(
     if let Some(Ok(NodeValue::Error(e))) = result_of(col, NodeKind::Error).map(|r| &r.value) {
         ui.small(format!("RMSE {:.4} · PSNR {:.2} dB", e.rmse, e.psnr));
     }
-    if let Some(Ok(NodeValue::Reference(rf))) =
-        result_of(col, NodeKind::Reference).map(|r| &r.value)
-    {
-        ui.small(format!(
-            "reference: {}{}",
-            rf.method,
-            rf.error_estimate
-                .map(|e| format!(", own error ≈ {e:.1e}"))
-                .unwrap_or_default()
-        ));
+    if let Some(r) = result_of(col, NodeKind::Reference) {
+        if let Ok(NodeValue::Reference(rf)) = &r.value {
+            // The node's own words: "≤" for a bound, "≈" for an estimate.
+            let own = r.accuracy.as_ref().map(|a| format!(", {a}"));
+            let refining = r
+                .progress
+                .map(|p| format!(" (refining {}/{})", p.step, p.steps));
+            ui.small(format!(
+                "reference: {}{}{}",
+                rf.method,
+                own.unwrap_or_default(),
+                refining.unwrap_or_default()
+            ));
+        }
     }
 }
 
