@@ -572,3 +572,62 @@ fn bits(v: &NodeValue) -> String {
         NodeValue::Theorem(t) => format!("{:?}", t.errors),
     }
 }
+
+#[test]
+fn heavy_supersampling_previews_at_a_sixteenth_then_gives_the_plain_result() {
+    let mut s = Scene::builtin_default();
+    s.panels.pattern = false;
+    s.panels.spectrum = false;
+    s.panels.filter = false;
+    s.effects.error = false;
+    s.recon.mode = samplescope::scene::ReconMode::Supersample { spp: 64 };
+    s.recon.size = 256; // 4.2 M samples: over the preview threshold
+    let mut engine = Engine::with_evaluator(Evaluator::default(), Arc::new(|| {}));
+    engine.submit(&s);
+    let updates = engine.wait(Duration::from_secs(300));
+    let recon: Vec<_> = updates
+        .iter()
+        .filter(|u| u.kind == NodeKind::Reconstruction)
+        .collect();
+    assert_eq!(recon.len(), 2, "one preview, one final");
+    assert_eq!(recon[0].progress.map(|p| (p.step, p.steps)), Some((1, 2)));
+    assert!(recon[0]
+        .result
+        .accuracy
+        .as_deref()
+        .unwrap()
+        .contains("4 of 64 spp"));
+    assert!(recon[1].progress.is_none());
+    // Reference: the plain supersampling at the full spp (same bits) and at 4 spp.
+    let sup = |spp| {
+        let provider = samplescope::core::recon::PatternProvider {
+            pattern: s.columns[0].pattern,
+            seed: s.columns[0].seed,
+        };
+        samplescope::core::recon::supersample(
+            &s.signal,
+            256,
+            spp,
+            &provider,
+            &s.filter,
+            &Cancel::never(),
+        )
+        .unwrap()
+    };
+    let image = |u: &samplescope::engine::Update| match &u.result.value {
+        Ok(NodeValue::Reconstruction(r)) => r.image.values.clone(),
+        other => panic!("{other:?}"),
+    };
+    for (u, spp) in [(recon[0], 4), (recon[1], 64)] {
+        let want = sup(spp);
+        let got = image(u);
+        // Rows are flipped for display (row 0 at the top).
+        for j in 0..256 {
+            for i in 0..256 {
+                let a = got[(255 - j) * 256 + i];
+                let b = want.pixels[j * 256 + i] as f32;
+                assert_eq!(a.to_bits(), b.to_bits(), "spp {spp}, pixel ({i},{j})");
+            }
+        }
+    }
+}

@@ -318,6 +318,32 @@ pub(super) fn reconstruction(ctx: &JobCtx) -> Output {
                 pattern: col.pattern,
                 seed: col.seed,
             };
+            // A heavy supersampling (over PREVIEW_SAMPLES samples) shows a preview at 1/16
+            // of the samples per pixel first (6 % extra work), then the full image.
+            let preview_spp = spp / PREVIEW_DIVISOR;
+            if preview_spp >= 1 && w * w * spp > PREVIEW_SAMPLES {
+                let p = crate::core::recon::supersample(
+                    &scene.signal,
+                    w,
+                    preview_spp,
+                    &provider,
+                    &scene.filter,
+                    cancel,
+                )
+                .map_err(|e| e.to_string())?;
+                (ctx.progress)(Partial {
+                    value: NodeValue::Reconstruction(Arc::new(ReconData {
+                        image: image_from_pixels(w, &p.pixels),
+                        zero_weight: p.zero_weight,
+                    })),
+                    accuracy: Some(format!(
+                        "preview at {preview_spp} of {spp} spp: noise ≳ {}× the final's",
+                        (PREVIEW_DIVISOR as f64).sqrt()
+                    )),
+                    step: 1,
+                    steps: 2,
+                });
+            }
             crate::core::recon::supersample(&scene.signal, w, spp, &provider, &scene.filter, cancel)
                 .map_err(|e| e.to_string())?
         }
@@ -331,6 +357,11 @@ pub(super) fn reconstruction(ctx: &JobCtx) -> Output {
         accuracy,
     ))
 }
+
+/// Supersampled reconstructions of more samples than this show a preview first.
+const PREVIEW_SAMPLES: usize = 2 << 20;
+/// The preview's samples per pixel are the full spp over this.
+const PREVIEW_DIVISOR: usize = 16;
 
 pub(super) fn reference(ctx: &JobCtx) -> Output {
     let (scene, cancel) = (ctx.scene, ctx.cancel);

@@ -193,6 +193,71 @@ impl<'k, K: ReconKernel + ?Sized> Accum<'k, K> {
         }
     }
 
+    /// Splats every sample of `samples` (pixel units), in parallel over bands of output rows:
+    /// each band visits the samples in the given order and adds only to its own rows, so every
+    /// pixel receives the same terms in the same order as [`Self::splat`] called on each sample
+    /// in turn — the same bits, whatever the number of bands or threads (a test checks this
+    /// against the serial loop). Cancellable every 4096 samples per band.
+    pub(crate) fn splat_all(
+        &mut self,
+        samples: &[(DVec2, f64)],
+        cancel: &crate::core::cancel::Cancel,
+    ) -> Result<(), ReconError> {
+        use rayon::prelude::*;
+        let w = self.w;
+        // Several bands per thread balance uneven sample densities.
+        let bands = (4 * rayon::current_num_threads()).clamp(1, 64).min(w);
+        let rows = w.div_ceil(bands);
+        let (kernel, separable, s, r_px) = (self.kernel, self.separable, self.inv_scale, self.r_px);
+        self.cells
+            .par_chunks_mut(rows * w)
+            .enumerate()
+            .try_for_each(|(b, band)| {
+                let (row0, row1) = (b * rows, b * rows + band.len() / w);
+                let mut hx = Vec::new();
+                let mut hy = Vec::new();
+                for (k, &(x, v)) in samples.iter().enumerate() {
+                    if k % 4096 == 0 && cancel.is_cancelled() {
+                        return Err(ReconError::Cancelled);
+                    }
+                    let Some((j0, j1)) = pixel_range(x.y, r_px, w) else {
+                        continue;
+                    };
+                    let (j0, j1) = (j0.max(row0), j1.min(row1 - 1));
+                    if j1 < j0 {
+                        continue;
+                    }
+                    let Some((i0, i1)) = pixel_range(x.x, r_px, w) else {
+                        continue;
+                    };
+                    let nx = i1 - i0 + 1;
+                    if separable {
+                        hx.clear();
+                        hx.extend(
+                            (i0..=i1).map(|i| kernel.factor(offset(i, x.x, s)).unwrap_or(0.0)),
+                        );
+                        hy.clear();
+                        hy.extend(
+                            (j0..=j1).map(|j| kernel.factor(offset(j, x.y, s)).unwrap_or(0.0)),
+                        );
+                        splat_rows(band, w, i0, j0 - row0, &hx, &hy, v);
+                    } else {
+                        for j in j0..=j1 {
+                            let dy = offset(j, x.y, s);
+                            let base = (j - row0) * w + i0;
+                            let row = &mut band[base..base + nx];
+                            for (a, cell) in row.iter_mut().enumerate() {
+                                let wt = kernel.weight(DVec2::new(offset(i0 + a, x.x, s), dy));
+                                cell[0] += wt * v;
+                                cell[1] += wt;
+                            }
+                        }
+                    }
+                }
+                Ok(())
+            })
+    }
+
     /// Normalises every pixel; zero-weight pixels get the fill value and are flagged.
     pub(crate) fn finish(
         self,

@@ -53,7 +53,10 @@ pub use reference::{
     reference_image, reference_image_progressive, reference_image_with, reference_supersampled,
     ReferenceImage, ReferenceMethod, ReferenceOptions,
 };
-pub use scattered::{reconstruct_scattered, reconstruct_scattered_gather, sample_signal};
+pub use scattered::{
+    reconstruct_scattered, reconstruct_scattered_gather, reconstruct_scattered_serial,
+    sample_signal,
+};
 pub use supersample::{supersample, Jittered, PatternProvider, SampleProvider, UniformGrid};
 
 use crate::core::cancel::{Cancel, Cancelled};

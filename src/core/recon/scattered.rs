@@ -123,6 +123,28 @@ pub fn reconstruct_scattered<K: ReconKernel + ?Sized>(
     // Splat tile by tile (a stable counting sort of the samples): the same sums, added in an
     // order that keeps the W×W accumulator's working set in cache.
     let sorted = tile_sorted(points, values, w);
+    check_cancel(cancel)?;
+    acc.splat_all(&sorted, cancel)?;
+    acc.finish(points.len(), start.elapsed())
+}
+
+/// [`reconstruct_scattered`] with the serial splat loop, one sample after the other: the
+/// reference of the banded parallel splat (same bits expected).
+pub fn reconstruct_scattered_serial<K: ReconKernel + ?Sized>(
+    points: &[DVec2],
+    values: &[f64],
+    w: usize,
+    kernel: &K,
+    cancel: &Cancel,
+) -> Result<Reconstruction, ReconError> {
+    let start = Instant::now();
+    let (support, scale_px) = check_inputs(points, values, w, kernel)?;
+    let mut acc = Accum::new(w, kernel, support, scale_px);
+    check_work(
+        "scattered splatting",
+        splat_work(points.len(), acc.r_px(), w),
+    )?;
+    let sorted = tile_sorted(points, values, w);
     for (k, &(x, v)) in sorted.iter().enumerate() {
         if k % 4096 == 0 {
             check_cancel(cancel)?;
