@@ -1,6 +1,6 @@
 //! Switching to each shipped scene with cold caches, as a user who picks it from the menu:
 //! the time until every visible panel shows a result (a coarse one counts) and until the final
-//! refined picture, through the engine the app uses; beside it the serial reference (the same
+//! refined picture (every node final, the error readouts included), through the engine the app uses; beside it the serial reference (the same
 //! jobs one after the other on one thread, to the final picture).
 //!
 //! Targets on 2 cores: first complete picture ≤ 300 ms, final ≤ 1.5 s, for every scene.
@@ -22,11 +22,22 @@ const FINAL_TARGET_MS: f64 = 1500.0;
 /// (first complete picture, final picture) of `scene` through a fresh engine.
 fn switch(scene: &Scene) -> (Duration, Duration) {
     let mut engine = Engine::with_evaluator(Evaluator::default(), Arc::new(|| {}));
-    // What "every visible panel has a result" means: every shown node of every column.
+    // "Every visible panel has a result": the node that draws each visible panel (pattern:
+    // points; periodogram: spectrum; zone plate: reconstruction; filter: response; cost view:
+    // convergence; sampling theorem: theorem), a coarse result counts. The zone plate's RMSE
+    // line (the error node) follows with the final reference.
+    const PANEL_NODES: [NodeKind; 6] = [
+        NodeKind::Points,
+        NodeKind::Spectrum,
+        NodeKind::Reconstruction,
+        NodeKind::Response,
+        NodeKind::Convergence,
+        NodeKind::Theorem,
+    ];
     let mut want: HashSet<(usize, NodeKind)> = HashSet::new();
     for (c, p) in graph::plan(scene).iter().enumerate() {
         for n in &p.nodes {
-            if (n.kind.def().shown)(scene, c) {
+            if (n.kind.def().shown)(scene, c) && PANEL_NODES.contains(&n.kind) {
                 want.insert((c, n.kind));
             }
         }

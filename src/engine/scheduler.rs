@@ -2,9 +2,9 @@
 //!
 //! It is a state machine driven by [`Event`]s (a new scene; a job's coarse result; a job's end)
 //! on one thread — the engine's coordinator thread, or the caller of
-//! [`super::Evaluator::evaluate`]. Jobs run on rayon's global pool, so independent nodes (of
-//! different columns, and within a column the response, reference, spectrum and samples)
-//! run concurrently, and each node's own parallel loops share the same threads.
+//! [`super::Evaluator::evaluate`]. Each job runs on a thread of its own, so independent nodes
+//! (of different columns, and within a column the response, reference, spectrum and samples)
+//! run concurrently, and their parallel loops share rayon's pool piece by piece.
 //!
 //! Invariants:
 //! - a node whose inputs are ready is started at once, unless a job for its key is running;
@@ -394,69 +394,86 @@ fn spawn_job(
     deps: HashMap<NodeKind, Arc<NodeResult>>,
     cancel: Cancel,
 ) {
-    rayon::spawn(move || {
-        let start = Instant::now();
-        let def = key.kind.def();
-        if def.disk_cached {
-            if let Some(r) = shared
-                .disk
-                .as_ref()
-                .and_then(|d| super::disk::load(d, &key))
-            {
-                let _ = events.send(Event::Done {
-                    job,
-                    key,
-                    result: Some(r),
-                });
-                return;
-            }
-        }
-        // Counted once it really computes (a disk-cache hit is not an evaluation).
-        shared.counts[key.kind as usize].fetch_add(1, Ordering::Relaxed);
-        let progress_events = Mutex::new(events.clone());
-        let progress = move |partial: Partial| {
-            let tx = progress_events.lock().unwrap_or_else(|e| e.into_inner());
-            let _ = tx.send(Event::Progress {
-                key,
-                partial,
-                wall: start.elapsed(),
-            });
-        };
-        let ctx = JobCtx {
-            scene: &scene,
-            column,
-            deps: &deps,
-            cancel: &cancel,
-            progress: &progress,
-        };
-        let outcome = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| (def.run)(&ctx)));
-        let result = match outcome {
-            // A job that stopped because it was cancelled leaves nothing to keep; one that
-            // completed is kept even if its key has left the plan meanwhile.
-            Err(_) | Ok(Err(_)) if cancel.is_cancelled() => None,
-            Ok(Ok((value, accuracy))) => Some(NodeResult {
-                value: Ok(value),
-                wall: start.elapsed(),
-                accuracy,
-            }),
-            Ok(Err(e)) => Some(NodeResult {
-                value: Err(e),
-                wall: start.elapsed(),
-                accuracy: None,
-            }),
-            Err(panic) => Some(NodeResult {
-                value: Err(panic_message(panic)),
-                wall: start.elapsed(),
-                accuracy: None,
-            }),
-        };
-        if let (Some(r), Some(d)) = (&result, shared.disk.as_ref()) {
+    // Each job drives its node on a thread of its own; the node's parallel loops run on
+    // rayon's pool. (Jobs spawned *into* the pool would let a worker that waits inside one
+    // node's parallel loop pick up a whole other node, delaying the first by that node's full
+    // time; from outside the pool, nodes share the workers loop piece by loop piece.)
+    let failed_events = events.clone();
+    let spawned = std::thread::Builder::new()
+        .name(format!("samplescope-{}", key.kind.name()))
+        .spawn(move || {
+            let start = Instant::now();
+            let def = key.kind.def();
             if def.disk_cached {
-                super::disk::store(d, &key, r);
+                if let Some(r) = shared
+                    .disk
+                    .as_ref()
+                    .and_then(|d| super::disk::load(d, &key))
+                {
+                    let _ = events.send(Event::Done {
+                        job,
+                        key,
+                        result: Some(r),
+                    });
+                    return;
+                }
             }
-        }
-        let _ = events.send(Event::Done { job, key, result });
-    });
+            // Counted once it really computes (a disk-cache hit is not an evaluation).
+            shared.counts[key.kind as usize].fetch_add(1, Ordering::Relaxed);
+            let progress_events = Mutex::new(events.clone());
+            let progress = move |partial: Partial| {
+                let tx = progress_events.lock().unwrap_or_else(|e| e.into_inner());
+                let _ = tx.send(Event::Progress {
+                    key,
+                    partial,
+                    wall: start.elapsed(),
+                });
+            };
+            let ctx = JobCtx {
+                scene: &scene,
+                column,
+                deps: &deps,
+                cancel: &cancel,
+                progress: &progress,
+            };
+            let outcome =
+                std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| (def.run)(&ctx)));
+            let result = match outcome {
+                // A job that stopped because it was cancelled leaves nothing to keep; one that
+                // completed is kept even if its key has left the plan meanwhile.
+                Err(_) | Ok(Err(_)) if cancel.is_cancelled() => None,
+                Ok(Ok((value, accuracy))) => Some(NodeResult {
+                    value: Ok(value),
+                    wall: start.elapsed(),
+                    accuracy,
+                }),
+                Ok(Err(e)) => Some(NodeResult {
+                    value: Err(e),
+                    wall: start.elapsed(),
+                    accuracy: None,
+                }),
+                Err(panic) => Some(NodeResult {
+                    value: Err(panic_message(panic)),
+                    wall: start.elapsed(),
+                    accuracy: None,
+                }),
+            };
+            if let (Some(r), Some(d)) = (&result, shared.disk.as_ref()) {
+                if def.disk_cached {
+                    super::disk::store(d, &key, r);
+                }
+            }
+            let _ = events.send(Event::Done { job, key, result });
+        });
+    if let Err(e) = spawned {
+        let _ = failed_events.send(Event::Done {
+            job,
+            key,
+            result: Some(NodeResult::error(format!(
+                "cannot start a thread for the job: {e}"
+            ))),
+        });
+    }
 }
 
 fn panic_message(panic: Box<dyn std::any::Any + Send>) -> String {
