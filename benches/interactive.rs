@@ -117,6 +117,22 @@ fn slider_change(c: &mut Criterion) {
         print!("{}={} ", k.name(), par.eval.count(k));
     }
     println!();
+    // Each recomputed node's own wall time (serial run: no contention between nodes).
+    ser.i += 1;
+    let mut s = ser.scene.clone();
+    s.columns[0].pattern.set("amount", "0.123456789").ok();
+    print!("node wall times (serial):");
+    ser.eval.evaluate_serial(&s, &Cancel::never(), &mut |_, k, r| {
+        print!(" {} {:.2} ms;", k.name(), r.wall.as_secs_f64() * 1e3);
+        if let Ok(samplescope::scene::graph::NodeValue::Spectrum(d)) = &r.value {
+            print!(" (stages:");
+            for (name, ms) in &d.stages {
+                print!(" {name} {ms:.2}");
+            }
+            print!(")");
+        }
+    });
+    println!();
 
     c.bench_function("interactive/slider_change_default_scene", |b| {
         b.iter(|| par.step())
