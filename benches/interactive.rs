@@ -122,16 +122,17 @@ fn slider_change(c: &mut Criterion) {
     let mut s = ser.scene.clone();
     s.columns[0].pattern.set("amount", "0.123456789").ok();
     print!("node wall times (serial):");
-    ser.eval.evaluate_serial(&s, &Cancel::never(), &mut |_, k, r| {
-        print!(" {} {:.2} ms;", k.name(), r.wall.as_secs_f64() * 1e3);
-        if let Ok(samplescope::scene::graph::NodeValue::Spectrum(d)) = &r.value {
-            print!(" (stages:");
-            for (name, ms) in &d.stages {
-                print!(" {name} {ms:.2}");
+    ser.eval
+        .evaluate_serial(&s, &Cancel::never(), &mut |_, k, r| {
+            print!(" {} {:.2} ms;", k.name(), r.wall.as_secs_f64() * 1e3);
+            if let Ok(samplescope::scene::graph::NodeValue::Spectrum(d)) = &r.value {
+                print!(" (stages:");
+                for (name, ms) in &d.stages {
+                    print!(" {name} {ms:.2}");
+                }
+                print!(")");
             }
-            print!(")");
-        }
-    });
+        });
     println!();
 
     c.bench_function("interactive/slider_change_default_scene", |b| {
