@@ -681,6 +681,8 @@ impl eframe::App for SamplescopeApp {
         let requests = figures::take_requests(&ctx);
         if !requests.is_empty() {
             let snapshot = self.figure_snapshot();
+            self.saver.note = (!self.engine.is_idle() && self.complete.is_some())
+                .then(|| "the last complete picture: a recompute is running".to_string());
             let dir = std::path::PathBuf::from(self.view.figure_dir.trim());
             self.saver.start(&ctx, snapshot, requests, dir);
         }

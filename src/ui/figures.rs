@@ -350,6 +350,9 @@ pub struct Saver {
     pending: usize,
     /// The last outcome, shown in the top bar.
     pub status: Option<String>,
+    /// Said after the files of the current save (e.g. that they show the last complete
+    /// picture because a recompute was running).
+    pub note: Option<String>,
 }
 
 impl Default for Saver {
@@ -360,6 +363,7 @@ impl Default for Saver {
             rx,
             pending: 0,
             status: None,
+            note: None,
         }
     }
 }
@@ -403,14 +407,22 @@ impl Saver {
     pub fn poll(&mut self, ctx: &egui::Context) {
         while let Ok(done) = self.rx.try_recv() {
             self.pending = self.pending.saturating_sub(1);
+            let note = self
+                .note
+                .as_deref()
+                .map(|n| format!(" ({n})"))
+                .unwrap_or_default();
             self.status = Some(match done {
-                Done::Written(p) => format!("saved {}", p.display()),
+                Done::Written(p) => format!("saved {}{note}", p.display()),
                 Done::Clipboard(img, what) => {
                     ctx.copy_image(img);
                     format!("copied {what} to the clipboard")
                 }
                 Done::Failed(e) => format!("figure not saved: {e}"),
             });
+            if self.pending == 0 {
+                self.note = None;
+            }
         }
     }
 }

@@ -411,6 +411,7 @@ fn jittered_image(
 ) -> Result<(Vec<f64>, Vec<f64>), ReconError> {
     let sw = (s * w) as f64;
     let inv = 1.0 / (s * s) as f64;
+    let signal = signal.prepare();
     let both = per_pixel(w, cancel, |i, j| {
         let mut rng = Rng::new(derive_seed(seed, (j * w + i) as u64));
         let (mut sum, mut sum2) = (0.0, 0.0);

@@ -35,6 +35,7 @@ pub fn sample_signal(
     check_size("n", points.len(), 1, MAX_SAMPLES)?;
     check_points(points)?;
     let mut values = vec![0.0; points.len()];
+    let signal = signal.prepare();
     values
         .par_chunks_mut(4096)
         .zip(points.par_chunks(4096))

@@ -200,6 +200,7 @@ fn sample_pixels<P: SampleProvider + ?Sized>(
     check_cancel(cancel)?;
     let mut out = Vec::with_capacity(range.len() * spp);
     let mut buf = Vec::with_capacity(spp);
+    let signal = signal.prepare();
     for p in range {
         let (i, j) = (p % w, p / w);
         let pixel = p as u64;

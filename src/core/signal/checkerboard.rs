@@ -76,30 +76,64 @@ impl Checkerboard {
     /// The ground point (X', Y') in check units (already rotated by `tilt` and scaled by
     /// `checks`) seen at image point p, or `None` for the sky (v ≤ 0).
     pub fn ground_checks(&self, p: DVec2) -> Option<DVec2> {
-        let v = p.y - self.horizon;
-        if v.is_nan() || v <= 0.0 {
-            return None;
-        }
-        let u = p.x - 0.5;
-        let t = self.height / v;
-        let x = u * t;
-        let y = t;
-        let a = self.tilt / 180.0;
-        let (s, c) = (sin_pi(a), cos_pi(a));
-        Some(DVec2::new(
-            self.checks * (x * c + y * s),
-            self.checks * (-x * s + y * c),
-        ))
+        self.prepare().ground_checks(p)
     }
 
     /// The board's value at image point p: 1 (white), 0 (black) or ½ (sky / far field).
     #[inline]
     pub fn eval(&self, p: DVec2) -> f64 {
+        self.prepare().eval(p)
+    }
+
+    /// The board with sin and cos of its tilt computed once, for evaluating many points:
+    /// [`PreparedCheckerboard::eval`] gives exactly the bits of [`Checkerboard::eval`].
+    #[inline]
+    pub fn prepare(&self) -> PreparedCheckerboard {
+        let a = self.tilt / 180.0;
+        PreparedCheckerboard {
+            board: *self,
+            sin: sin_pi(a),
+            cos: cos_pi(a),
+        }
+    }
+}
+
+/// A [`Checkerboard`] with the sine and cosine of its tilt precomputed.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PreparedCheckerboard {
+    board: Checkerboard,
+    sin: f64,
+    cos: f64,
+}
+
+impl PreparedCheckerboard {
+    /// See [`Checkerboard::ground_checks`].
+    #[inline]
+    pub fn ground_checks(&self, p: DVec2) -> Option<DVec2> {
+        let b = &self.board;
+        let v = p.y - b.horizon;
+        if v.is_nan() || v <= 0.0 {
+            return None;
+        }
+        let u = p.x - 0.5;
+        let t = b.height / v;
+        let x = u * t;
+        let y = t;
+        let (s, c) = (self.sin, self.cos);
+        Some(DVec2::new(
+            b.checks * (x * c + y * s),
+            b.checks * (-x * s + y * c),
+        ))
+    }
+
+    /// See [`Checkerboard::eval`].
+    #[inline]
+    pub fn eval(&self, p: DVec2) -> f64 {
         match self.ground_checks(p) {
-            None => Self::SKY,
+            None => Checkerboard::SKY,
             Some(g) => {
                 if !(g.x.abs() < FAR_CHECKS && g.y.abs() < FAR_CHECKS) {
-                    return Self::SKY;
+                    return Checkerboard::SKY;
                 }
                 // Both floors are exact integers below 2^40 in magnitude.
                 let parity = (g.x.floor() as i64 + g.y.floor() as i64).rem_euclid(2);
@@ -134,6 +168,32 @@ fn check_positive(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn prepared_board_gives_the_plain_boards_bits() {
+        // Reference: the plain eval (sin/cos of the tilt per point), on a fixed grid of
+        // points incl. the horizon row, the sky and the far field, for several boards.
+        for (checks, height, horizon, tilt) in [
+            (4.0, 1.0, 0.25, 20.0),
+            (0.3, 7.0, 0.0, -135.0),
+            (1000.0, 0.01, 0.9, 360.0),
+        ] {
+            let b = Checkerboard {
+                checks,
+                height,
+                horizon,
+                tilt,
+            };
+            let p = b.prepare();
+            for j in 0..=200 {
+                for i in 0..=50 {
+                    let q = DVec2::new(i as f64 / 50.0, j as f64 / 200.0 + 1e-9 * i as f64);
+                    assert_eq!(p.eval(q).to_bits(), b.eval(q).to_bits(), "{q:?}");
+                    assert_eq!(p.ground_checks(q), b.ground_checks(q));
+                }
+            }
+        }
+    }
 
     #[test]
     fn sky_above_horizon_is_mean() {

@@ -33,7 +33,7 @@ pub mod shapes;
 pub mod theorem;
 pub mod zone_plate;
 
-pub use checkerboard::Checkerboard;
+pub use checkerboard::{Checkerboard, PreparedCheckerboard};
 pub use exact::{cos_pi, sin_pi, sinc_pi};
 pub use oned::{Chirp, Constant, Square, SumOfSines};
 pub use shapes::{Grating, Polygon, PolygonShape, StepEdge};
@@ -177,6 +177,17 @@ impl Signal {
         }
     }
 
+    /// The signal ready for evaluating many points: per-signal constants (the checkerboard's
+    /// rotation) computed once. [`PreparedSignal::eval`] gives exactly the bits of
+    /// [`Signal::eval`].
+    #[inline]
+    pub fn prepare(&self) -> PreparedSignal<'_> {
+        match self {
+            Signal::Checkerboard(c) => PreparedSignal::Checkerboard(c.prepare()),
+            other => PreparedSignal::Plain(other),
+        }
+    }
+
     /// The 1D view: the signal itself for 1D signals, the scan line y = ½ for 2D ones.
     #[inline]
     pub fn eval1(&self, x: f64) -> f64 {
@@ -287,5 +298,23 @@ mod tests {
         assert_eq!(z.eval1(0.3), z.eval(DVec2::new(0.3, 0.5)));
         let s = Signal::Square(Square { frequency: 2.0 });
         assert_eq!(s.eval(DVec2::new(0.1, 0.9)), s.eval1(0.1));
+    }
+}
+
+/// A [`Signal`] prepared for many evaluations ([`Signal::prepare`]).
+#[derive(Debug, Clone, Copy)]
+pub enum PreparedSignal<'a> {
+    Checkerboard(PreparedCheckerboard),
+    Plain(&'a Signal),
+}
+
+impl PreparedSignal<'_> {
+    /// The same value as [`Signal::eval`], bit for bit.
+    #[inline]
+    pub fn eval(&self, p: DVec2) -> f64 {
+        match self {
+            PreparedSignal::Checkerboard(c) => c.eval(p),
+            PreparedSignal::Plain(s) => s.eval(p),
+        }
     }
 }
