@@ -40,6 +40,12 @@
 //!   (the lecture's pseudo-code rejects d < (2 r_p)², so `radius = 2 r_p`). N points fit on the
 //!   unit torus only if radius ≤ √(2/(√3 N)), the hexagonal packing distance.
 //!
+//! ## Evaluation
+//! A scene is planned into nodes by the node table of [`scene::graph`] (keys: BLAKE3 of the
+//! node's kind, algorithm version, scene fields and input keys) and evaluated by [`engine`]:
+//! in parallel, cancelled per node, coarse results first for slow nodes, every completed
+//! result cached (memory bounded by bytes; reference images also on disk). See ARCHITECTURE.md.
+//!
 //! ## Errors
 //! Bad input never panics: every fallible routine returns a typed error (e.g.
 //! [`core::pattern::PatternError`]) that names the field and the allowed range. Long work takes a

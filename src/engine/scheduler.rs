@@ -1,6 +1,6 @@
 //! The scheduler: turns a scene's plan into jobs on the rayon pool and results for the UI.
 //!
-//! It is a state machine driven by [`Event`]s (a new scene; a job's coarse result; a job's end)
+//! It is a state machine driven by events (a new scene; a job's coarse result; a job's end)
 //! on one thread — the engine's coordinator thread, or the caller of
 //! [`super::Evaluator::evaluate`]. Each job runs on a thread of its own, so independent nodes
 //! (of different columns, and within a column the response, reference, spectrum and samples)

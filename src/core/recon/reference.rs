@@ -101,7 +101,7 @@
 //! what [`reference_image_with`] returns (which is the progressive function with a no-op
 //! callback). I_s's own estimate is the per-pixel standard error √(mean over pixels of s²ₚ/N),
 //! N = s² and s²ₚ the sample variance of pixel p's N values: with one uniform point per stratum,
-//! E[s²ₚ] = N/(N − 1)·(σₚ² − Var(Īₚ)) ≥ σₚ² ≥ N·Var(Īₚ) (σₚ² the variance of f over the pixel;
+//! E\[s²ₚ\] = N/(N − 1)·(σₚ² − Var(Īₚ)) ≥ σₚ² ≥ N·Var(Īₚ) (σₚ² the variance of f over the pixel;
 //! stratification gives Var(Īₚ) ≤ σₚ²/N, often much less), so the estimate is conservative in
 //! expectation, by the stratification gain; `None` when s = 1.
 
