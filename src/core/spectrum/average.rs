@@ -139,6 +139,39 @@ struct Realization {
 
 const STAGE_NAMES: [&str; 5] = ["generate", "spread", "fft", "deconvolve", "error-check"];
 
+/// How many NUFFT plans [`cached_plan`] keeps (most recently used first).
+const PLAN_CACHE: usize = 4;
+/// Largest M whose plan is kept: its workspaces (a (2M)² complex grid each, 16 MiB at M = 512)
+/// stay allocated while it is cached, so larger plans are made afresh every time.
+const PLAN_CACHE_MAX_M: usize = 512;
+
+/// Recently used plans by (M, tolerance bits): a plan's FFT plan, deconvolution table and
+/// workspace buffers are reused by the next periodogram of the same size and tolerance (a
+/// slider drag), instead of being planned and allocated (and page-faulted) again. The same
+/// plan computes the same bits as a fresh one.
+static PLANS: Mutex<Vec<(usize, u64, std::sync::Arc<NufftPlan>)>> = Mutex::new(Vec::new());
+
+/// The plan for (m, tolerance), from [`PLANS`] or new.
+fn cached_plan(m: usize, tolerance: f64) -> Result<std::sync::Arc<NufftPlan>, SpectrumError> {
+    if m > PLAN_CACHE_MAX_M {
+        return Ok(std::sync::Arc::new(NufftPlan::new(m, tolerance)?));
+    }
+    let key = (m, tolerance.to_bits());
+    let mut plans = PLANS.lock().unwrap_or_else(|e| e.into_inner());
+    if let Some(i) = plans.iter().position(|(a, b, _)| (*a, *b) == key) {
+        let entry = plans.remove(i);
+        let plan = entry.2.clone();
+        plans.insert(0, entry);
+        return Ok(plan);
+    }
+    drop(plans);
+    let plan = std::sync::Arc::new(NufftPlan::new(m, tolerance)?);
+    let mut plans = PLANS.lock().unwrap_or_else(|e| e.into_inner());
+    plans.insert(0, (m, tolerance.to_bits(), plan.clone()));
+    plans.truncate(PLAN_CACHE);
+    Ok(plan)
+}
+
 /// Least time between two partial results of [`average_periodogram_progressive`].
 pub const PARTIAL_INTERVAL: Duration = Duration::from_millis(60);
 
@@ -194,7 +227,7 @@ where
     req.validate()?;
     let m = req.size;
     let plan = match req.method {
-        Method::Nufft { tolerance } => Some(NufftPlan::new(m, tolerance)?),
+        Method::Nufft { tolerance } => Some(cached_plan(m, tolerance)?),
         Method::Exact => None,
     };
     let k = req.realizations;
