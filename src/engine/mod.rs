@@ -211,17 +211,11 @@ impl Evaluator {
                             .iter()
                             .filter_map(|(k, _)| done.get(k).map(|r| (*k, r.clone())))
                             .collect();
-                        let failed = deps.iter().find_map(|(k, r)| {
-                            r.value
-                                .as_ref()
-                                .err()
-                                .map(|e| format!("{} failed: {e}", k.name()))
-                        });
-                        let r = match failed {
+                        let declared = n.deps.iter().filter_map(|(k, _)| deps.get_key_value(k));
+                        let r = match scheduler::failed_input(declared) {
                             Some(e) => NodeResult::error(e),
                             None => {
                                 self.shared.counts[n.kind as usize].fetch_add(1, Ordering::Relaxed);
-                                let start = Instant::now();
                                 let ctx = crate::scene::compute::JobCtx {
                                     scene,
                                     column: c,
@@ -229,21 +223,9 @@ impl Evaluator {
                                     cancel,
                                     progress: &never,
                                 };
-                                let out = (n.kind.def().run)(&ctx);
-                                if cancel.is_cancelled() {
-                                    return;
-                                }
-                                match out {
-                                    Ok((v, accuracy)) => NodeResult {
-                                        value: Ok(v),
-                                        wall: start.elapsed(),
-                                        accuracy,
-                                    },
-                                    Err(e) => NodeResult {
-                                        value: Err(e),
-                                        wall: start.elapsed(),
-                                        accuracy: None,
-                                    },
+                                match scheduler::run_job(n.kind, &ctx) {
+                                    Some(r) if !cancel.is_cancelled() => r,
+                                    _ => return,
                                 }
                             }
                         };

@@ -257,24 +257,15 @@ impl Scheduler {
                 if active.ready.contains_key(&p.key) || self.running.contains_key(&p.key) {
                     continue;
                 }
-                let mut deps = HashMap::new();
-                let mut all = true;
-                let mut failed = None;
-                for (kind, key) in &p.deps {
-                    match active.ready.get(key) {
-                        Some(r) => {
-                            if let Err(e) = &r.value {
-                                failed = Some(format!("{} failed: {e}", kind.name()));
-                            }
-                            deps.insert(*kind, r.clone());
-                        }
-                        None => all = false,
-                    }
-                }
-                if !all {
+                let deps: Option<HashMap<NodeKind, Arc<NodeResult>>> = p
+                    .deps
+                    .iter()
+                    .map(|(kind, key)| active.ready.get(key).map(|r| (*kind, r.clone())))
+                    .collect();
+                let Some(deps) = deps else {
                     continue;
-                }
-                if let Some(e) = failed {
+                };
+                if let Some(e) = failed_input(p.deps.iter().map(|(k, _)| (k, &deps[k]))) {
                     let r = Arc::new(NodeResult::error(e));
                     active.ready.insert(p.key, r.clone());
                     deliver(active, &active.nodes[i], r, None, sink);
@@ -420,10 +411,9 @@ fn spawn_job(
             }
             // Counted once it really computes (a disk-cache hit is not an evaluation).
             shared.counts[key.kind as usize].fetch_add(1, Ordering::Relaxed);
-            let progress_events = Mutex::new(events.clone());
+            let progress_events = events.clone();
             let progress = move |partial: Partial| {
-                let tx = progress_events.lock().unwrap_or_else(|e| e.into_inner());
-                let _ = tx.send(Event::Progress {
+                let _ = progress_events.send(Event::Progress {
                     key,
                     partial,
                     wall: start.elapsed(),
@@ -436,28 +426,7 @@ fn spawn_job(
                 cancel: &cancel,
                 progress: &progress,
             };
-            let outcome =
-                std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| (def.run)(&ctx)));
-            let result = match outcome {
-                // A job that stopped because it was cancelled leaves nothing to keep; one that
-                // completed is kept even if its key has left the plan meanwhile.
-                Err(_) | Ok(Err(_)) if cancel.is_cancelled() => None,
-                Ok(Ok((value, accuracy))) => Some(NodeResult {
-                    value: Ok(value),
-                    wall: start.elapsed(),
-                    accuracy,
-                }),
-                Ok(Err(e)) => Some(NodeResult {
-                    value: Err(e),
-                    wall: start.elapsed(),
-                    accuracy: None,
-                }),
-                Err(panic) => Some(NodeResult {
-                    value: Err(panic_message(panic)),
-                    wall: start.elapsed(),
-                    accuracy: None,
-                }),
-            };
+            let result = run_job(key.kind, &ctx);
             if let (Some(r), Some(d)) = (&result, shared.disk.as_ref()) {
                 if def.disk_cached {
                     super::disk::store(d, &key, r);
@@ -474,6 +443,38 @@ fn spawn_job(
             ))),
         });
     }
+}
+
+/// Runs the job of `kind` in `ctx`: its result with its wall time, a panic turned into an
+/// error, or `None` when it stopped because `ctx.cancel` fired (a job that completed is kept
+/// even if it was cancelled meanwhile).
+pub(crate) fn run_job(kind: NodeKind, ctx: &JobCtx) -> Option<NodeResult> {
+    let start = Instant::now();
+    let outcome = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| (kind.def().run)(ctx)));
+    let (value, accuracy) = match outcome {
+        Err(_) | Ok(Err(_)) if ctx.cancel.is_cancelled() => return None,
+        Ok(Ok((value, accuracy))) => (Ok(value), accuracy),
+        Ok(Err(e)) => (Err(e), None),
+        Err(panic) => (Err(panic_message(panic)), None),
+    };
+    Some(NodeResult {
+        value,
+        wall: start.elapsed(),
+        accuracy,
+    })
+}
+
+/// The error of a node one of whose inputs failed ("<input> failed: <its error>", the first
+/// failed input in the given order, which callers take from the node table), if any.
+pub(crate) fn failed_input<'a>(
+    inputs: impl IntoIterator<Item = (&'a NodeKind, &'a Arc<NodeResult>)>,
+) -> Option<String> {
+    inputs.into_iter().find_map(|(k, r)| {
+        r.value
+            .as_ref()
+            .err()
+            .map(|e| format!("{} failed: {e}", k.name()))
+    })
 }
 
 fn panic_message(panic: Box<dyn std::any::Any + Send>) -> String {

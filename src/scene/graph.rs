@@ -22,7 +22,7 @@
 //! builds and platforms (the on-disk cache relies on it). A field that cannot be serialised
 //! makes no key: the node (and its dependents) reports that error instead of running.
 
-use super::compute::{self, Deps, JobCtx, Output};
+use super::compute::{self, JobCtx, Output};
 use super::{ReconMode, Scene};
 use serde::Serialize;
 use std::fmt::Write as _;
@@ -461,11 +461,3 @@ pub fn plan(scene: &Scene) -> Vec<ColumnPlan> {
         .map(|c| column_plan(scene, c))
         .collect()
 }
-
-/// Runs the job of `kind` for column `c` of `scene` with the given input results.
-pub fn run_node(kind: NodeKind, ctx: &JobCtx) -> Output {
-    (kind.def().run)(ctx)
-}
-
-/// The results of a node's inputs, by kind.
-pub type InputResults = Deps;

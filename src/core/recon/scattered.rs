@@ -104,9 +104,11 @@ fn check_inputs<K: ReconKernel + ?Sized>(
 
 /// Splats N scattered samples onto a W×W image (kernel scaled to 1/√N; see the module docs).
 ///
-/// `points[j]` ∈ \[0,1\]² and `values[j]` = f(points\[j\]). Serial (one core), cancellable every
-/// 4096 samples; samples are splatted in 64×64-pixel tile order (a stable counting sort) for
-/// cache locality, so the sums are added in a fixed, deterministic order. Cost: about N·(2rW/√N + 1)² kernel taps, i.e. ≈ 4r²W² for any N.
+/// `points[j]` ∈ \[0,1\]² and `values[j]` = f(points\[j\]). Samples are splatted in
+/// 64×64-pixel tile order (a stable counting sort) for cache locality, in parallel over bands
+/// of output rows; every pixel gets its terms in that fixed order, so the bits do not depend
+/// on the number of threads. Cancellable every 4096 samples. Cost: about
+/// N·(2rW/√N + 1)² kernel taps, i.e. ≈ 4r²W² for any N.
 pub fn reconstruct_scattered<K: ReconKernel + ?Sized>(
     points: &[DVec2],
     values: &[f64],
@@ -114,19 +116,7 @@ pub fn reconstruct_scattered<K: ReconKernel + ?Sized>(
     kernel: &K,
     cancel: &Cancel,
 ) -> Result<Reconstruction, ReconError> {
-    let start = Instant::now();
-    let (support, scale_px) = check_inputs(points, values, w, kernel)?;
-    let mut acc = Accum::new(w, kernel, support, scale_px);
-    check_work(
-        "scattered splatting",
-        splat_work(points.len(), acc.r_px(), w),
-    )?;
-    // Splat tile by tile (a stable counting sort of the samples): the same sums, added in an
-    // order that keeps the W×W accumulator's working set in cache.
-    let sorted = tile_sorted(points, values, w);
-    check_cancel(cancel)?;
-    acc.splat_all(&sorted, cancel)?;
-    acc.finish(points.len(), start.elapsed())
+    splat_scattered(points, values, w, kernel, cancel, true)
 }
 
 /// [`reconstruct_scattered`] with the serial splat loop, one sample after the other: the
@@ -138,6 +128,17 @@ pub fn reconstruct_scattered_serial<K: ReconKernel + ?Sized>(
     kernel: &K,
     cancel: &Cancel,
 ) -> Result<Reconstruction, ReconError> {
+    splat_scattered(points, values, w, kernel, cancel, false)
+}
+
+fn splat_scattered<K: ReconKernel + ?Sized>(
+    points: &[DVec2],
+    values: &[f64],
+    w: usize,
+    kernel: &K,
+    cancel: &Cancel,
+    parallel: bool,
+) -> Result<Reconstruction, ReconError> {
     let start = Instant::now();
     let (support, scale_px) = check_inputs(points, values, w, kernel)?;
     let mut acc = Accum::new(w, kernel, support, scale_px);
@@ -145,12 +146,19 @@ pub fn reconstruct_scattered_serial<K: ReconKernel + ?Sized>(
         "scattered splatting",
         splat_work(points.len(), acc.r_px(), w),
     )?;
+    // Splat tile by tile (a stable counting sort of the samples): the same sums, added in an
+    // order that keeps the W×W accumulator's working set in cache.
     let sorted = tile_sorted(points, values, w);
-    for (k, &(x, v)) in sorted.iter().enumerate() {
-        if k % 4096 == 0 {
-            check_cancel(cancel)?;
+    if parallel {
+        check_cancel(cancel)?;
+        acc.splat_all(&sorted, cancel)?;
+    } else {
+        for (k, &(x, v)) in sorted.iter().enumerate() {
+            if k % 4096 == 0 {
+                check_cancel(cancel)?;
+            }
+            acc.splat(x, v);
         }
-        acc.splat(x, v);
     }
     acc.finish(points.len(), start.elapsed())
 }
