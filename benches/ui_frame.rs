@@ -10,14 +10,18 @@
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use egui_kittest::Harness;
+use samplescope::engine::Engine;
 use samplescope::ui::SamplescopeApp;
+use std::sync::Arc;
 use std::time::{Duration, Instant};
 
 fn harness(lecture: bool) -> Harness<'static, SamplescopeApp> {
     let mut h = Harness::builder()
         .with_size(eframe::egui::Vec2::new(1600.0, 1000.0))
         .build_eframe(move |cc| {
-            let mut app = SamplescopeApp::new(cc, None);
+            let ctx = cc.egui_ctx.clone();
+            let engine = Engine::new_in_memory(Arc::new(move || ctx.request_repaint()));
+            let mut app = SamplescopeApp::with_engine(cc, None, engine);
             app.view.show_timings = false;
             app.view.lecture = lecture;
             app

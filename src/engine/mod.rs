@@ -297,6 +297,12 @@ impl Engine {
         Engine::with_evaluator(Evaluator::new(budget, default_disk_cache()), repaint)
     }
 
+    /// Starts the coordinator with a memory cache of the default budget and no disk cache:
+    /// hermetic (tests and benchmarks neither read nor write the user's cache directory).
+    pub fn new_in_memory(repaint: Repaint) -> Engine {
+        Engine::with_evaluator(Evaluator::new(cache::DEFAULT_BUDGET, None), repaint)
+    }
+
     /// Starts the coordinator on `evaluator`'s caches.
     pub fn with_evaluator(evaluator: Evaluator, repaint: Repaint) -> Engine {
         let (ev_tx, ev_rx) = channel::<Event>();

@@ -107,6 +107,16 @@ impl SamplescopeApp {
     pub fn new(cc: &eframe::CreationContext<'_>, scene_path: Option<&std::path::Path>) -> Self {
         let ctx = cc.egui_ctx.clone();
         let engine = Engine::new(Arc::new(move || ctx.request_repaint()));
+        Self::with_engine(cc, scene_path, engine)
+    }
+
+    /// Like [`SamplescopeApp::new`], on a given engine (tests pass
+    /// [`Engine::new_in_memory`] to stay off the user's disk cache).
+    pub fn with_engine(
+        cc: &eframe::CreationContext<'_>,
+        scene_path: Option<&std::path::Path>,
+        engine: Engine,
+    ) -> Self {
         let gpu = match cc.wgpu_render_state.as_ref() {
             Some(rs) => match gpu::install(rs) {
                 Ok(()) => true,

@@ -1,7 +1,7 @@
 //! Toroidal minimum distance and mean nearest-neighbour distance: grid search against the
 //! O(N²) brute force (bit-identical results), hand values and edge cases.
 
-mod metrics_common;
+use crate::metrics_common;
 
 use glam::DVec2;
 use metrics_common::{jittered, random};

@@ -23,7 +23,7 @@
 //! The values are published to 6 significant digits: the tolerance is half a unit in the
 //! last published digit.
 
-mod metrics_common;
+use crate::metrics_common;
 
 use metrics_common::sobol;
 use samplescope::core::cancel::Cancel;

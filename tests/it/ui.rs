@@ -9,14 +9,11 @@ use samplescope::ui::SamplescopeApp;
 use std::time::{Duration, Instant};
 
 fn harness() -> Harness<'static, SamplescopeApp> {
-    // Hermetic: the app's engine must not read reference images a previous run left in the
-    // user's disk cache (nor write there).
-    std::env::set_var("SAMPLESCOPE_NO_CACHE", "1");
     let mut h = Harness::builder()
         .with_size(eframe::egui::Vec2::new(1400.0, 1000.0))
         .wgpu()
         .build_eframe(|cc| {
-            let mut app = SamplescopeApp::new(cc, None);
+            let mut app = crate::hermetic_app(cc);
             app.view.show_timings = false;
             app
         });

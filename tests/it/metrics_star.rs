@@ -1,6 +1,6 @@
 //! Exact star discrepancy (2D sweep and brute force) and the lecture's 1D closed form.
 
-mod metrics_common;
+use crate::metrics_common;
 
 use glam::DVec2;
 use metrics_common::{hammersley2, jittered, random, sobol};

@@ -1,6 +1,6 @@
 //! The `statistics` bundle: every stage agrees with its own function, skipped stages say why.
 
-mod metrics_common;
+use crate::metrics_common;
 
 use glam::DVec2;
 use metrics_common::{random, sobol};

@@ -1,7 +1,7 @@
 //! t-value of nets: known (0,m,2)-nets, hand-checked sets, boundaries, and an independent
 //! reference that tests every elementary interval with exact integer arithmetic.
 
-mod metrics_common;
+use crate::metrics_common;
 
 use glam::DVec2;
 use metrics_common::{hammersley2, random, sobol};

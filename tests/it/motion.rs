@@ -323,7 +323,7 @@ mod ui {
         let mut h = Harness::builder()
             .with_size(eframe::egui::Vec2::new(1400.0, 1000.0))
             .build_eframe(move |cc| {
-                let mut app = SamplescopeApp::new(cc, None);
+                let mut app = crate::hermetic_app(cc);
                 app.view.show_timings = false;
                 app.set_scene(scene.clone(), name.to_string());
                 app

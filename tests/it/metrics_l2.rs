@@ -1,7 +1,7 @@
 //! L2-star discrepancy: the O(N log N) Warnock evaluation against the literal O(N²) formula
 //! and against direct numerical integration of the squared local discrepancy.
 
-mod metrics_common;
+use crate::metrics_common;
 
 use glam::DVec2;
 use metrics_common::{hammersley2, random, sobol};

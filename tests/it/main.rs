@@ -1,0 +1,49 @@
+//! All integration tests, as one binary: one link against eframe/wgpu instead of one per file.
+//! Each former `tests/<name>.rs` is a module here; `cargo test <module>::` runs one of them.
+
+use samplescope::engine::Engine;
+use samplescope::ui::SamplescopeApp;
+use std::sync::Arc;
+
+mod cli_points;
+mod figures;
+mod filter_cli;
+mod filter_metrics;
+mod filter_numerics;
+mod import;
+mod metrics_common;
+mod metrics_l2;
+mod metrics_min_distance;
+mod metrics_published;
+mod metrics_star;
+mod metrics_statistics;
+mod metrics_tvalue;
+mod motion;
+mod patterns_lowdisc;
+mod patterns_poisson;
+mod patterns_stratified;
+mod recon_error;
+mod recon_grid;
+mod recon_reference;
+mod recon_scattered;
+mod recon_supersample;
+mod render_cli;
+mod scene_graph;
+mod scenes_all;
+mod signal_shapes;
+mod signal_zone_plate;
+mod spectrum_average;
+mod spectrum_exact;
+mod spectrum_nufft;
+mod spectrum_pair;
+mod spectrum_radial;
+mod theorem;
+mod ui;
+
+/// The GUI app on an engine without a disk cache: UI tests neither read reference images a
+/// previous run left in the user's cache nor write there.
+pub fn hermetic_app(cc: &eframe::CreationContext<'_>) -> SamplescopeApp {
+    let ctx = cc.egui_ctx.clone();
+    let engine = Engine::new_in_memory(Arc::new(move || ctx.request_repaint()));
+    SamplescopeApp::with_engine(cc, None, engine)
+}
