@@ -4,7 +4,7 @@
 use super::{parse_n, pattern_from_args, CliError};
 use samplescope::core::cancel::Cancel;
 use samplescope::core::metrics;
-use samplescope::core::pointset::{parse_points, OutOfRange};
+use samplescope::core::pointset::{read_points, OutOfRange, PointsFileError};
 use samplescope::core::rng::derive_seed;
 use samplescope::core::spectrum::{
     average_periodogram, radial_average, DcMode, Method, SpectrumRequest,
@@ -80,13 +80,21 @@ pub fn run(args: &AnalyzeArgs) -> Result<(), CliError> {
                 args.realizations
             )));
         }
-        let text = std::fs::read_to_string(path).map_err(io_err(path))?;
+        let file = std::fs::File::open(path).map_err(io_err(path))?;
         let mode = if args.normalize {
             OutOfRange::NormalizeToBoundingBox
         } else {
             OutOfRange::Reject
         };
-        let pts = parse_points(&text, mode).map_err(|e| CliError::Usage(format!("{path}: {e}")))?;
+        // Streamed with a size and line-length limit: a binary or endless file is refused
+        // after at most one line.
+        let pts = read_points(file, mode).map_err(|e| match e {
+            PointsFileError::Io { message, .. } => CliError::Io {
+                path: path.clone(),
+                source: std::io::Error::other(message),
+            },
+            e => CliError::Usage(format!("{path}: {e}")),
+        })?;
         (pts, None)
     } else {
         let name = args.pattern.as_deref().unwrap_or_default();

@@ -253,6 +253,57 @@ pub enum SceneError {
     },
 }
 
+/// The largest scene file read (inline points included): 256 MiB.
+pub const MAX_SCENE_BYTES: u64 = 256 << 20;
+
+/// Reads UTF-8 text of at most `max` bytes from `reader`, block by block: the first block
+/// holding a NUL byte or bytes that are not UTF-8 ends the read with the byte offset.
+pub(crate) fn read_text_limited(
+    mut reader: impl std::io::Read,
+    max: u64,
+) -> Result<String, String> {
+    let mut bytes: Vec<u8> = Vec::new();
+    let mut block = vec![0u8; 64 * 1024];
+    // Bytes before `checked` are known to be UTF-8 (a character may span two blocks).
+    let mut checked = 0usize;
+    loop {
+        let n = match reader.read(&mut block) {
+            Ok(0) => break,
+            Ok(n) => n,
+            Err(e) if e.kind() == std::io::ErrorKind::Interrupted => continue,
+            Err(e) => return Err(e.to_string()),
+        };
+        if bytes.len() as u64 + n as u64 > max {
+            return Err(format!(
+                "larger than {max} bytes: scene files are read up to that size"
+            ));
+        }
+        if let Some(i) = block[..n].iter().position(|&b| b == 0) {
+            return Err(format!(
+                "byte {} is a NUL byte: not a scene file (RON text)",
+                bytes.len() + i
+            ));
+        }
+        bytes.extend_from_slice(&block[..n]);
+        match std::str::from_utf8(&bytes[checked..]) {
+            Ok(_) => checked = bytes.len(),
+            Err(e) if e.error_len().is_none() => checked += e.valid_up_to(),
+            Err(e) => {
+                return Err(format!(
+                    "byte {} is not UTF-8 text: not a scene file (RON text)",
+                    checked + e.valid_up_to()
+                ))
+            }
+        }
+    }
+    String::from_utf8(bytes).map_err(|e| {
+        format!(
+            "byte {} is not UTF-8 text: the file ends inside a character",
+            e.utf8_error().valid_up_to()
+        )
+    })
+}
+
 /// Scenes shipped with the app: (file name, RON text).
 pub const BUILTIN: &[(&str, &str)] = &[
     (
@@ -470,12 +521,16 @@ impl Scene {
         Ok(out)
     }
 
-    /// Reads a scene file.
+    /// Reads a scene file: at most [`MAX_SCENE_BYTES`], UTF-8 text without NUL bytes, checked
+    /// as it is read, so a binary or endless file (`/dev/zero`, `/dev/urandom`) is refused
+    /// after its first block.
     pub fn load(path: &std::path::Path) -> Result<Scene, SceneError> {
-        let text = std::fs::read_to_string(path).map_err(|e| SceneError::Io {
+        let io = |message: String| SceneError::Io {
             path: path.display().to_string(),
-            message: e.to_string(),
-        })?;
+            message,
+        };
+        let file = std::fs::File::open(path).map_err(|e| io(e.to_string()))?;
+        let text = read_text_limited(file, MAX_SCENE_BYTES).map_err(io)?;
         Scene::from_ron_in(&text, &path.display().to_string(), path.parent())
     }
 

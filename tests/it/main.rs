@@ -5,6 +5,7 @@ use samplescope::engine::Engine;
 use samplescope::ui::SamplescopeApp;
 use std::sync::Arc;
 
+mod bad_input;
 mod cli_points;
 mod figures;
 mod filter_cli;

@@ -1,0 +1,78 @@
+//! Bad input never hurts: binary, endless and malformed files are refused quickly with an
+//! error naming the file and the first bad line or byte.
+
+use samplescope::core::pointset::{read_points_file, OutOfRange, PointsFileError};
+use samplescope::scene::{Scene, SceneError};
+use std::path::Path;
+use std::time::{Duration, Instant};
+
+fn quick<T>(f: impl FnOnce() -> T) -> T {
+    let t = Instant::now();
+    let out = f();
+    // Generous for a loaded CI machine; an unbounded read of /dev/zero takes minutes.
+    assert!(
+        t.elapsed() < Duration::from_secs(5),
+        "took {:?}",
+        t.elapsed()
+    );
+    out
+}
+
+#[test]
+fn scene_from_dev_zero_and_dev_urandom_is_refused_at_the_first_block() {
+    for (dev, what) in [("/dev/zero", "NUL byte"), ("/dev/urandom", "")] {
+        let e = quick(|| Scene::load(Path::new(dev))).unwrap_err();
+        match &e {
+            SceneError::Io { path, message } => {
+                assert_eq!(path, dev);
+                assert!(
+                    message.contains(what) && message.contains("byte"),
+                    "{message}"
+                );
+                assert!(message.contains("not a scene file"), "{message}");
+            }
+            other => panic!("{dev}: {other:?}"),
+        }
+    }
+}
+
+#[test]
+fn scene_with_a_character_split_across_read_blocks_loads() {
+    // A 64 KiB block boundary inside a two-byte character (é) must not be taken for bad UTF-8.
+    let base = samplescope::scene::BUILTIN[0].1;
+    let pad = 64 * 1024 - 1 - base.len() % (64 * 1024);
+    let text = format!("{base}\n//{}é\n", "x".repeat(pad.saturating_sub(3)));
+    let dir = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("bad_input");
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("split-char.ron");
+    std::fs::write(&path, &text).unwrap();
+    Scene::load(&path).unwrap();
+    // The same file cut inside the character is refused, naming the byte.
+    let cut = &text.as_bytes()[..text.len() - 2];
+    std::fs::write(&path, cut).unwrap();
+    match Scene::load(&path) {
+        Err(SceneError::Io { message, .. }) => {
+            assert!(message.contains("ends inside"), "{message}")
+        }
+        other => panic!("{other:?}"),
+    }
+}
+
+#[test]
+fn point_files_from_dev_zero_and_dev_urandom_are_refused_at_once() {
+    let e = quick(|| read_points_file(Path::new("/dev/zero"), OutOfRange::Reject)).unwrap_err();
+    assert!(
+        matches!(e, PointsFileError::LineTooLong { line: 1, .. }),
+        "{e:?}"
+    );
+    let e = quick(|| read_points_file(Path::new("/dev/urandom"), OutOfRange::Reject)).unwrap_err();
+    assert!(
+        matches!(
+            e,
+            PointsFileError::NotUtf8 { .. }
+                | PointsFileError::LineTooLong { .. }
+                | PointsFileError::Malformed { .. }
+        ),
+        "{e:?}"
+    );
+}
