@@ -99,7 +99,7 @@ pub fn normalize_to_bounding_box(raw: &[DVec2]) -> Vec<DVec2> {
     raw.iter()
         .map(|p| {
             let half = *p * 0.5 - lo * 0.5;
-            let q = if !(half_extent > 0.0) {
+            let q = if half_extent.is_nan() || half_extent <= 0.0 {
                 DVec2::ZERO
             } else if inverse.is_finite() {
                 half * inverse
