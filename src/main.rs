@@ -58,8 +58,14 @@ fn main() -> ExitCode {
                 .map_err(cli::CliError::Gui)
         }
     };
+    // Results are line-buffered: a failure of the last flush is a failed write too.
+    let result = result.and_then(|()| {
+        use std::io::Write as _;
+        std::io::stdout().flush().map_err(cli::CliError::Output)
+    });
     match result {
         Ok(()) => ExitCode::SUCCESS,
+        Err(e) if e.is_broken_pipe() => ExitCode::SUCCESS,
         Err(e) => {
             eprintln!("error: {e}");
             ExitCode::from(e.exit_code())

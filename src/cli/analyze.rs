@@ -1,6 +1,7 @@
 //! `samplescope analyze`: statistics, discrepancies, t-value and spectrum of a point set, with
 //! the time and accuracy of every stage.
 
+use super::outln;
 use super::{parse_n, pattern_from_args, CliError};
 use samplescope::core::cancel::Cancel;
 use samplescope::core::metrics;
@@ -215,38 +216,42 @@ pub fn run(args: &AnalyzeArgs) -> Result<(), CliError> {
             },
             "timings_ms": timings_obj,
         });
-        println!("{out}");
+        outln!("{out}")?;
     } else {
-        println!("n                      {}", points.len());
+        outln!("n                      {}", points.len())?;
         if let Some(m) = md {
-            println!(
+            outln!(
                 "min distance           {:.6}  ({:.4} × hexagonal packing distance)",
-                m.min_distance, m.normalized_min_distance
-            );
-            println!("mean NN distance       {:.6}", m.mean_nn_distance);
+                m.min_distance,
+                m.normalized_min_distance
+            )?;
+            outln!("mean NN distance       {:.6}", m.mean_nn_distance)?;
         }
         match &stats.star {
-            Some(s) => println!(
+            Some(s) => outln!(
                 "star discrepancy D*    {:.6e}  (worst anchored box [0,{:.6})×[0,{:.6}))",
-                s.value, s.worst_box.0, s.worst_box.1
-            ),
-            None => println!(
+                s.value,
+                s.worst_box.0,
+                s.worst_box.1
+            )?,
+            None => outln!(
                 "star discrepancy D*    skipped: {}",
                 stats.star_skipped.clone().unwrap_or_default()
-            ),
+            )?,
         }
-        println!("L2-star discrepancy    {:.6e}", stats.l2_star);
+        outln!("L2-star discrepancy    {:.6e}", stats.l2_star)?;
         match &stats.t_value {
-            Some(t) => println!(
+            Some(t) => outln!(
                 "t-value (base 2)       {}  ((t, m, 2)-net with m = {})",
-                t.t, t.m
-            ),
-            None => println!(
+                t.t,
+                t.m
+            )?,
+            None => outln!(
                 "t-value (base 2)       undefined: {}",
                 stats.t_value_skipped.clone().unwrap_or_default()
-            ),
+            )?,
         }
-        println!(
+        outln!(
             "spectrum               {}² · K = {} · {}",
             spec.m,
             spec.realizations,
@@ -256,10 +261,10 @@ pub fn run(args: &AnalyzeArgs) -> Result<(), CliError> {
                 (Some(t), None) => format!("NUFFT, asked {t:.0e} (exact check too expensive)"),
                 (None, _) => "exact DFT".to_string(),
             }
-        );
-        println!("timings (ms)");
+        )?;
+        outln!("timings (ms)")?;
         for (k, v) in &timings {
-            println!("  {k:<22} {v:.3}");
+            outln!("  {k:<22} {v:.3}")?;
         }
     }
     Ok(())

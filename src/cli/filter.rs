@@ -10,6 +10,7 @@
 //! - `--list`: every filter and preset with its parameters, defaults and allowed ranges.
 
 use super::CliError;
+use super::{out, outln};
 use samplescope::core::filter::{
     params::{ParamKind, ParamValue, BOOL_OPTIONS},
     Filter, Filter2D, FilterMetrics, Mode2D,
@@ -47,7 +48,7 @@ pub struct FilterArgs {
 /// Runs `samplescope filter`.
 pub fn run(args: &FilterArgs) -> Result<(), CliError> {
     if args.list {
-        print!("{}", list_text());
+        out!("{}", list_text())?;
         return Ok(());
     }
     let Some(name) = &args.kernel else {
@@ -67,9 +68,9 @@ pub fn run(args: &FilterArgs) -> Result<(), CliError> {
     }
     let metrics = f2.metrics()?;
     if args.json {
-        println!("{}", metrics_json(&f2, &metrics));
+        outln!("{}", metrics_json(&f2, &metrics))?;
     } else {
-        print!("{}", metrics_text(&f2, &metrics));
+        out!("{}", metrics_text(&f2, &metrics))?;
     }
     Ok(())
 }

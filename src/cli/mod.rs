@@ -25,6 +25,10 @@ pub enum CliError {
     /// The window could not be opened (exit status 1).
     #[error("cannot open the window: {0}")]
     Gui(String),
+    /// Writing the results to standard output failed (exit status 1; a closed pipe ends the
+    /// program quietly instead, see `main`).
+    #[error("writing to standard output: {0}")]
+    Output(#[source] std::io::Error),
     /// Reading or writing a file failed (exit status 1).
     #[error("{path}: {source}")]
     Io {
@@ -33,11 +37,40 @@ pub enum CliError {
     },
 }
 
+/// `print!` to standard output that returns a [`CliError::Output`] instead of panicking
+/// when the write fails (a closed pipe, a full disk).
+macro_rules! out {
+    ($($arg:tt)*) => {{
+        use std::io::Write as _;
+        write!(std::io::stdout().lock(), $($arg)*).map_err($crate::cli::CliError::Output)
+    }};
+}
+
+/// `println!` to standard output that returns a [`CliError::Output`] instead of panicking.
+macro_rules! outln {
+    ($($arg:tt)*) => {{
+        use std::io::Write as _;
+        writeln!(std::io::stdout().lock(), $($arg)*).map_err($crate::cli::CliError::Output)
+    }};
+}
+pub(crate) use {out, outln};
+
 impl CliError {
+    /// Whether this is a write to a closed pipe (`samplescope … | head -1`): the reader has
+    /// all it wanted, so the program ends quietly with status 0, as coreutils and ripgrep do.
+    pub fn is_broken_pipe(&self) -> bool {
+        let io = match self {
+            CliError::Output(e) => e,
+            CliError::Io { source, .. } => source,
+            _ => return false,
+        };
+        io.kind() == std::io::ErrorKind::BrokenPipe
+    }
+
     /// The process exit status for this error.
     pub fn exit_code(&self) -> u8 {
         match self {
-            CliError::Io { .. } | CliError::Gui(_) => 1,
+            CliError::Io { .. } | CliError::Gui(_) | CliError::Output(_) => 1,
             _ => 2,
         }
     }

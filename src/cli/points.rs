@@ -1,5 +1,6 @@
 //! `samplescope points`: generate a pattern and write CSV.
 
+use super::out;
 use super::{parse_n, pattern_from_args, CliError};
 use samplescope::core::cancel::Cancel;
 use samplescope::core::pattern::{sphere, Pattern};
@@ -34,7 +35,7 @@ pub struct PointsArgs {
 /// Runs `samplescope points`.
 pub fn run(args: &PointsArgs) -> Result<(), CliError> {
     if args.list {
-        print!("{}", list_text());
+        out!("{}", list_text())?;
         return Ok(());
     }
     let (Some(name), Some(n)) = (&args.pattern, args.n) else {

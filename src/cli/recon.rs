@@ -1,6 +1,7 @@
 //! `samplescope recon`: sample a test signal with a pattern, reconstruct it, and report the
 //! error against the signal's reference image.
 
+use super::outln;
 use super::{parse_n, pattern_from_args, CliError};
 use samplescope::core::cancel::Cancel;
 use samplescope::core::filter::{Filter, Filter2D, Mode2D};
@@ -179,7 +180,7 @@ pub fn run(args: &ReconArgs) -> Result<(), CliError> {
         write_file(path, &bytes).map_err(|e| usage(&e))?;
     }
     if args.json {
-        println!(
+        outln!(
             "{}",
             serde_json::json!({
                 "rmse": report.rmse,
@@ -190,22 +191,22 @@ pub fn run(args: &ReconArgs) -> Result<(), CliError> {
                 "reference_method": reference.method.label(),
                 "timings_ms": { "reconstruction": recon_ms, "reference": reference_ms },
             })
-        );
+        )?;
     } else {
-        println!("RMSE   {:.6}", report.rmse);
-        println!("PSNR   {:.3} dB", report.psnr);
-        println!("time   {recon_ms:.2} ms (reconstruction, sampling included); reference {reference_ms:.2} ms");
+        outln!("RMSE   {:.6}", report.rmse)?;
+        outln!("PSNR   {:.3} dB", report.psnr)?;
+        outln!("time   {recon_ms:.2} ms (reconstruction, sampling included); reference {reference_ms:.2} ms")?;
         if recon.zero_weight > 0 {
-            println!(
+            outln!(
                 "note   {} pixels had zero total filter weight",
                 recon.zero_weight
-            );
+            )?;
         }
         if let Some(e) = reference.error_estimate {
             if reference.method.estimate_is_bound() {
-                println!("reference's own error ≤ {e:.2e} (any pixel)");
+                outln!("reference's own error ≤ {e:.2e} (any pixel)")?;
             } else {
-                println!("reference's own RMS error ≈ {e:.2e}");
+                outln!("reference's own RMS error ≈ {e:.2e}")?;
             }
         }
     }

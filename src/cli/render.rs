@@ -7,6 +7,7 @@
 //! share one colour range (the union of their automatic ranges), as locked scales do in
 //! the GUI. Same scene → byte-identical files.
 
+use super::outln;
 use super::CliError;
 use samplescope::core::cancel::Cancel;
 use samplescope::engine::Evaluator;
@@ -83,7 +84,7 @@ fn export_err(e: ExportError) -> CliError {
 
 fn write(path: &Path, bytes: &[u8]) -> Result<(), CliError> {
     write_file(&path.display().to_string(), bytes).map_err(export_err)?;
-    println!("{}", path.display());
+    outln!("{}", path.display())?;
     Ok(())
 }
 

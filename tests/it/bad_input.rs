@@ -76,3 +76,50 @@ fn point_files_from_dev_zero_and_dev_urandom_are_refused_at_once() {
         "{e:?}"
     );
 }
+
+/// The printing commands, each with arguments that print something.
+const PRINTING: &[&[&str]] = &[
+    &["analyze", "jitter", "-n", "64", "--size", "32"],
+    &["filter", "box"],
+    &["filter", "--list"],
+    &["points", "--list"],
+    &["points", "jitter", "-n", "64"],
+    &["recon", "--pattern", "jitter", "-n", "64", "--size", "32"],
+];
+
+#[test]
+fn a_closed_pipe_ends_every_printing_command_quietly() {
+    for args in PRINTING {
+        // The reading end is closed before the command starts: its first write fails.
+        let (reader, writer) = std::io::pipe().unwrap();
+        drop(reader);
+        let out = std::process::Command::new(env!("CARGO_BIN_EXE_samplescope"))
+            .args(*args)
+            .stdout(writer)
+            .output()
+            .unwrap();
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(0), "{args:?}: {stderr}");
+        assert!(!stderr.contains("panicked"), "{args:?}: {stderr}");
+        assert!(stderr.trim().is_empty(), "{args:?}: {stderr}");
+    }
+}
+
+#[test]
+fn a_full_disk_is_one_line_and_status_1() {
+    for args in PRINTING {
+        let full = std::fs::OpenOptions::new()
+            .write(true)
+            .open("/dev/full")
+            .unwrap();
+        let out = std::process::Command::new(env!("CARGO_BIN_EXE_samplescope"))
+            .args(*args)
+            .stdout(full)
+            .output()
+            .unwrap();
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(1), "{args:?}: {stderr}");
+        assert_eq!(stderr.trim().lines().count(), 1, "{args:?}: {stderr}");
+        assert!(stderr.contains("No space left"), "{args:?}: {stderr}");
+    }
+}
