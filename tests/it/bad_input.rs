@@ -90,14 +90,16 @@ const PRINTING: &[&[&str]] = &[
 #[test]
 fn a_closed_pipe_ends_every_printing_command_quietly() {
     for args in PRINTING {
-        // The reading end is closed before the command starts: its first write fails.
-        let (reader, writer) = std::io::pipe().unwrap();
-        drop(reader);
-        let out = std::process::Command::new(env!("CARGO_BIN_EXE_samplescope"))
+        // The reading end is closed as soon as the command starts, long before it prints
+        // (it parses its arguments and computes first).
+        let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_samplescope"))
             .args(*args)
-            .stdout(writer)
-            .output()
+            .stdout(std::process::Stdio::piped())
+            .stderr(std::process::Stdio::piped())
+            .spawn()
             .unwrap();
+        drop(child.stdout.take());
+        let out = child.wait_with_output().unwrap();
         let stderr = String::from_utf8_lossy(&out.stderr);
         assert_eq!(out.status.code(), Some(0), "{args:?}: {stderr}");
         assert!(!stderr.contains("panicked"), "{args:?}: {stderr}");
