@@ -125,3 +125,56 @@ fn a_full_disk_is_one_line_and_status_1() {
         assert!(stderr.contains("No space left"), "{args:?}: {stderr}");
     }
 }
+
+/// The error a bad file gives, on one line: scene errors name the file themselves, point-file
+/// errors get it prefixed as every caller does.
+fn error_of(path: &Path) -> String {
+    let name = path.to_str().unwrap();
+    if name.ends_with(".ron") {
+        match Scene::load(path) {
+            Ok(_) => "loaded".into(),
+            Err(e) => e.to_string(),
+        }
+    } else {
+        match read_points_file(path, OutOfRange::Reject) {
+            Ok(p) => format!("loaded {} points", p.len()),
+            Err(e) => format!("{name}: {e}"),
+        }
+    }
+}
+
+/// `tests/data/bad/`: malformed scene and point files, each beside `<file>.err`, the one-line
+/// error it must give. `UPDATE_BAD_CORPUS=1` rewrites the `.err` files (review the diff).
+#[test]
+fn corpus_of_bad_files_gives_the_expected_one_line_errors() {
+    let dir = Path::new("tests/data/bad");
+    let mut files: Vec<_> = std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|e| e != "err"))
+        .collect();
+    files.sort();
+    assert!(files.len() >= 15, "the corpus holds {} files", files.len());
+    let update = std::env::var_os("UPDATE_BAD_CORPUS").is_some();
+    let mut failures = Vec::new();
+    for f in &files {
+        let got = quick(|| error_of(f));
+        assert!(!got.starts_with("loaded"), "{}: {got}", f.display());
+        assert_eq!(got.lines().count(), 1, "{}: {got}", f.display());
+        let err = f.with_extension(format!("{}.err", f.extension().unwrap().to_str().unwrap()));
+        if update {
+            std::fs::write(&err, format!("{got}\n")).unwrap();
+            continue;
+        }
+        let want = std::fs::read_to_string(&err)
+            .unwrap_or_else(|_| panic!("{} is missing", err.display()));
+        if want.trim_end() != got {
+            failures.push(format!(
+                "{}:\n  want {}\n  got  {got}",
+                f.display(),
+                want.trim_end()
+            ));
+        }
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
