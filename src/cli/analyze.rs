@@ -15,6 +15,23 @@ use serde_json::json;
 use std::fmt::Write as _;
 use std::time::Instant;
 
+/// The NUFFT tolerance without --tolerance.
+const DEFAULT_TOLERANCE: f64 = 1e-6;
+
+/// Parses `--tolerance`: a number in the NUFFT's range (NaN is refused).
+fn parse_tolerance(text: &str) -> Result<f64, String> {
+    use samplescope::core::spectrum::{MAX_TOLERANCE, MIN_TOLERANCE};
+    text.trim()
+        .parse::<f64>()
+        .ok()
+        .filter(|t| (MIN_TOLERANCE..=MAX_TOLERANCE).contains(t))
+        .ok_or_else(|| {
+            format!(
+                "tolerance = {text}: must be a number in [{MIN_TOLERANCE:e}, {MAX_TOLERANCE:e}]"
+            )
+        })
+}
+
 /// Arguments of `samplescope analyze`.
 #[derive(clap::Args, Debug)]
 pub struct AnalyzeArgs {
@@ -25,16 +42,16 @@ pub struct AnalyzeArgs {
     #[arg(short = 'n', value_parser = parse_n, required_unless_present = "points")]
     pub n: Option<usize>,
     /// Seed (with a pattern).
-    #[arg(long, default_value_t = 0)]
+    #[arg(long, default_value_t = 0, conflicts_with = "points")]
     pub seed: u64,
     /// Pattern parameter `key=value`; repeatable.
-    #[arg(long = "set", value_name = "KEY=VALUE")]
+    #[arg(long = "set", value_name = "KEY=VALUE", conflicts_with = "points")]
     pub set: Vec<String>,
     /// Read the points from a file (CSV `x,y` as written by `points`, or PSA-style text).
     #[arg(long)]
     pub points: Option<String>,
-    /// Map the points' bounding box onto [0,1)² instead of rejecting points outside.
-    #[arg(long)]
+    /// Map the points' bounding box onto [0,1)² instead of rejecting points outside (with --points).
+    #[arg(long, conflicts_with = "pattern")]
     pub normalize: bool,
     /// Spectrum size M (M×M integer frequencies).
     #[arg(long, default_value_t = 256)]
@@ -42,9 +59,9 @@ pub struct AnalyzeArgs {
     /// Realizations K averaged (with a pattern; seeds derived from --seed).
     #[arg(long, default_value_t = 1)]
     pub realizations: usize,
-    /// NUFFT tolerance (relative ℓ2 error of P), 1e-12..=1e-2.
-    #[arg(long, default_value_t = 1e-6)]
-    pub tolerance: f64,
+    /// NUFFT tolerance (relative ℓ2 error of P), 1e-12..=1e-2 [default: 1e-6]; not with --exact.
+    #[arg(long, value_parser = parse_tolerance, conflicts_with = "exact")]
+    pub tolerance: Option<f64>,
     /// Use the exact DFT instead of the NUFFT.
     #[arg(long)]
     pub exact: bool,
@@ -121,7 +138,7 @@ pub fn run(args: &AnalyzeArgs) -> Result<(), CliError> {
             Method::Exact
         } else {
             Method::Nufft {
-                tolerance: args.tolerance,
+                tolerance: args.tolerance.unwrap_or(DEFAULT_TOLERANCE),
             }
         },
         realizations: args.realizations,

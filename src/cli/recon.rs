@@ -29,7 +29,7 @@ pub struct ReconArgs {
     #[arg(long = "set", value_name = "KEY=VALUE")]
     pub set: Vec<String>,
     /// Number of scattered samples over the whole image (without --spp).
-    #[arg(short = 'n', value_parser = parse_n)]
+    #[arg(short = 'n', value_parser = parse_n, conflicts_with = "spp")]
     pub n: Option<usize>,
     /// Samples per pixel: supersample with the pattern in every pixel instead.
     #[arg(long)]

@@ -178,3 +178,64 @@ fn corpus_of_bad_files_gives_the_expected_one_line_errors() {
     }
     assert!(failures.is_empty(), "{}", failures.join("\n"));
 }
+
+#[test]
+fn options_without_effect_in_a_combination_are_refused_with_status_2() {
+    let cases: &[(&[&str], &str)] = &[
+        (
+            &[
+                "analyze",
+                "jitter",
+                "-n",
+                "64",
+                "--exact",
+                "--tolerance",
+                "1e-3",
+            ],
+            "--exact",
+        ),
+        (
+            &["analyze", "jitter", "-n", "64", "--tolerance", "NaN"],
+            "tolerance = NaN",
+        ),
+        (
+            &["analyze", "jitter", "-n", "64", "--tolerance", "2"],
+            "[1e-12, 1e-2]",
+        ),
+        (
+            &["analyze", "jitter", "-n", "64", "--normalize"],
+            "--normalize",
+        ),
+        (
+            &[
+                "analyze",
+                "--points",
+                "tests/data/csv-with-header.csv",
+                "--seed",
+                "3",
+            ],
+            "--seed",
+        ),
+        (
+            &[
+                "analyze",
+                "--points",
+                "tests/data/csv-with-header.csv",
+                "--set",
+                "amount=0",
+            ],
+            "--set",
+        ),
+        (&["recon", "--spp", "4", "-n", "1024"], "-n"),
+    ];
+    for (args, needle) in cases {
+        let out = std::process::Command::new(env!("CARGO_BIN_EXE_samplescope"))
+            .args(*args)
+            .output()
+            .unwrap();
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{args:?}: {stderr}");
+        assert!(stderr.contains(needle), "{args:?}: {stderr}");
+        assert!(out.stdout.is_empty(), "{args:?}");
+    }
+}
