@@ -1,99 +1,63 @@
-//! The application: scene, engine, controls, and the column layout.
+//! The application: scene, engine, controls, and where each part of the window goes. It owns
+//! the state the panels and components are lent each frame; nothing below it imports it.
 
-use super::figures;
+use super::columns::{self, Columns};
+use super::dropped::{self, PointImport};
+use super::figures::{self, FigureRequests};
 use super::gpu::{self, Colormap};
 use super::lecture;
-use super::panels::{self, ViewState};
-use crate::core::pattern::Pattern;
-use crate::engine::{Engine, Progress, Update};
-use crate::scene::graph::{NodeKind, NodeResult};
-use crate::scene::{Column, ReconMode, Scene, BUILTIN, MAX_COLUMNS};
+use super::panels::cost::CostPanel;
+use super::panels::theorem::TheoremPanel;
+use super::panels::{Panel, PanelCx};
+use super::playback::Playback;
+use super::results::{ColumnResults, CompleteResults, Shown};
+use super::view::{ViewState, LECTURE_SCALE_RANGE};
+use super::widgets::image::ImageView;
+use super::widgets::params;
+use crate::engine::Engine;
+use crate::scene::{ReconMode, Scene, BUILTIN, MAX_COLUMNS};
 use eframe::egui;
 use std::collections::HashMap;
 use std::sync::Arc;
 use std::time::{Duration, Instant};
-
-/// A result on screen, with the generation and the scene snapshot it was computed for (its
-/// panel's labels and saved figures come from that scene, never from a newer one).
-#[derive(Clone)]
-pub struct Shown {
-    pub result: Arc<NodeResult>,
-    pub scene: Arc<Scene>,
-    pub generation: u64,
-    /// `Some` while the node refines (a coarse result is on screen).
-    pub progress: Option<Progress>,
-}
-
-impl std::ops::Deref for Shown {
-    type Target = NodeResult;
-    fn deref(&self) -> &NodeResult {
-        &self.result
-    }
-}
-
-impl AsRef<NodeResult> for Shown {
-    fn as_ref(&self) -> &NodeResult {
-        &self.result
-    }
-}
-
-impl From<Update> for Shown {
-    fn from(u: Update) -> Self {
-        Shown {
-            result: u.result,
-            scene: u.scene,
-            generation: u.generation,
-            progress: u.progress,
-        }
-    }
-}
-
-/// Results of one column, by node kind.
-pub type ColumnResults = HashMap<NodeKind, Shown>;
-
-/// Every column's results of one generation that finished, with its scene.
-#[derive(Clone)]
-pub struct CompleteResults {
-    pub scene: Arc<Scene>,
-    pub generation: u64,
-    pub columns: Vec<ColumnResults>,
-}
 
 /// The samplescope GUI application.
 pub struct SamplescopeApp {
     /// The scene being shown.
     pub scene: Scene,
     /// Name of the scene (file name or built-in name).
-    pub scene_name: String,
+    scene_name: String,
     /// The engine evaluating the scene.
     pub engine: Engine,
     /// Latest results per column (possibly of different generations while recomputing).
     pub results: Vec<ColumnResults>,
     /// The results of the latest generation that finished: one consistent snapshot (saved
     /// figures come from it while a recompute runs).
-    pub complete: Option<CompleteResults>,
+    complete: Option<CompleteResults>,
     /// Display state (ranges, zoom, overlays).
     pub view: ViewState,
-    /// Whether the wgpu pipelines are installed (else images are colour-mapped on the CPU).
-    pub gpu: bool,
     /// Last scene error (loading a malformed scene), shown in the UI.
-    pub scene_error: Option<String>,
+    scene_error: Option<String>,
     /// Path typed into the "open scene" box.
     open_path: String,
     submitted: Option<Scene>,
     frame_time: Duration,
     last_frame: Option<Instant>,
-    textures: panels::TextureCache,
-    theorem_panel: super::theorem::TheoremPanel,
+    /// Draws the panels' images (GPU when the wgpu pipelines are installed, else CPU).
+    images: ImageView,
+    /// The column panels and where each column was drawn.
+    columns: Columns,
+    cost: CostPanel,
+    theorem: TheoremPanel,
     /// Playback of a scene with motion (frame shown, playing or not).
-    pub(crate) motion_clock: super::playback::MotionClock,
-    /// The last point file that could not be imported (shown with a retry button).
-    pub(crate) import_failure: Option<super::dropped::ImportFailure>,
+    playback: Playback,
+    /// Point files brought into columns (the last failure, with its retry button).
+    import: PointImport,
     applied_style: Option<lecture::AppliedStyle>,
+    /// The figure requests of the frame (from menus, panels and shortcuts).
+    figures: FigureRequests,
     /// Renders and writes requested figures off the UI thread.
     pub saver: figures::Saver,
-    /// Each column's screen rectangle in the last frame (where a dropped file goes).
-    pub column_rects: Vec<egui::Rect>,
 }
 
 /// Keys under which eframe persists the window's state.
@@ -134,19 +98,20 @@ impl SamplescopeApp {
             results: Vec::new(),
             complete: None,
             view: ViewState::default(),
-            gpu,
             scene_error: None,
             open_path: String::new(),
             submitted: None,
             frame_time: Duration::ZERO,
             last_frame: None,
-            textures: panels::TextureCache::default(),
-            theorem_panel: Default::default(),
+            images: ImageView::new(gpu),
+            columns: Columns::default(),
+            cost: CostPanel,
+            theorem: TheoremPanel::default(),
+            playback: Playback::default(),
+            import: PointImport::default(),
             applied_style: None,
+            figures: FigureRequests::default(),
             saver: figures::Saver::default(),
-            column_rects: Vec::new(),
-            motion_clock: Default::default(),
-            import_failure: None,
         };
         if let Some(storage) = cc.storage {
             if scene_path.is_none() {
@@ -186,22 +151,42 @@ impl SamplescopeApp {
         self.scene_error = None;
         self.results.clear();
         self.complete = None;
-        self.motion_clock.reset();
+        self.playback.reset();
     }
 
     /// Adds a column (a copy of the last one with the next seed).
     pub fn add_column(&mut self) {
-        if self.scene.columns.len() < MAX_COLUMNS {
-            let mut c = self.scene.columns.last().cloned().unwrap_or_default();
-            c.seed = c.seed.wrapping_add(1);
-            self.scene.columns.push(c);
+        columns::add_column(&mut self.scene);
+    }
+
+    /// Shows the points of `path` in `column` (0-based; a column is added when it is the next
+    /// one). On error the current scene stays and the failure is shown.
+    pub fn import_points(&mut self, column: usize, path: &std::path::Path, normalize: bool) {
+        if let Err(e) = self.import.import(&mut self.scene, column, path, normalize) {
+            self.scene_error = Some(e);
         }
+    }
+
+    /// The column a file dropped at `x` goes to (see [`dropped::column_at`]), with the columns
+    /// as drawn in the last frame; `central` is the columns' area.
+    pub fn column_at(&self, central: egui::Rect, x: f32) -> usize {
+        dropped::column_at(self.columns.rects(), self.scene.columns.len(), central, x)
+    }
+
+    /// Each column's screen rectangle in the last frame, in column order.
+    pub fn column_rects(&self) -> &[egui::Rect] {
+        self.columns.rects()
+    }
+
+    /// The frame of a scene with motion that is shown (0 for a still scene).
+    pub fn motion_frame(&self) -> i64 {
+        self.playback.frame()
     }
 
     /// Submits the scene to the engine if it changed, and takes results that arrived.
     pub fn sync_engine(&mut self) {
         // A scene with motion is submitted as it is at the frame shown.
-        let moved = self.moved_scene();
+        let moved = self.playback.moved_scene(&self.scene);
         let shown = moved.as_ref().unwrap_or(&self.scene);
         if self.submitted.as_ref() != Some(shown) {
             self.engine.submit(shown);
@@ -359,8 +344,10 @@ impl SamplescopeApp {
         if !self.scene.notes.is_empty() {
             ui.label(&self.scene.notes);
         }
-        self.transport_ui(ui);
-        self.import_failure_ui(ui);
+        self.playback.transport_ui(ui, &self.scene);
+        if let Err(e) = self.import.failure_ui(ui, &mut self.scene) {
+            self.scene_error = Some(e);
+        }
         if let Some(e) = &self.scene_error {
             ui.colored_label(egui::Color32::from_rgb(200, 40, 40), e);
         }
@@ -370,6 +357,55 @@ impl SamplescopeApp {
                 format!("Engine failure: {e}"),
             );
         }
+    }
+
+    /// The panels: the cost view and the theorem view docked below, the columns in the middle
+    /// (letterboxed to 16:9 in lecture mode), each drawn from one context lent for the frame.
+    fn panels_ui(&mut self, ui: &mut egui::Ui) {
+        let SamplescopeApp {
+            scene,
+            engine,
+            results,
+            view,
+            images,
+            columns,
+            cost,
+            theorem,
+            figures,
+            ..
+        } = self;
+        let mut cx = PanelCx {
+            scene,
+            column: 0,
+            results,
+            view,
+            images,
+            figures,
+            evaluator: engine.evaluator(),
+            side: 0.0,
+        };
+        if cost.is_shown(&cx.scene.panels) {
+            egui::Panel::bottom("samplescope-cost")
+                .resizable(true)
+                .default_size(220.0)
+                .show(ui, |ui| cost.ui(ui, &mut cx));
+        }
+        if theorem.is_shown(&cx.scene.panels) {
+            egui::Panel::bottom("samplescope-theorem")
+                .resizable(true)
+                .default_size(520.0)
+                .show(ui, |ui| theorem.ui(ui, &mut cx));
+        }
+        egui::CentralPanel::default().show(ui, |ui| {
+            if cx.view.lecture {
+                // Panels sized for a 16:9 projector frame, centred.
+                let frame = lecture::letterbox_16_9(ui.available_rect_before_wrap());
+                let mut child = ui.new_child(egui::UiBuilder::new().max_rect(frame));
+                columns.ui(&mut child, &mut cx);
+            } else {
+                columns.ui(ui, &mut cx);
+            }
+        });
     }
 
     /// What the figure writer needs: the scene, its name, every column's data and the
@@ -399,7 +435,7 @@ impl SamplescopeApp {
 
     /// The comparison's save menu, the figure folder and scale, and the last save's outcome.
     fn figures_ui(&mut self, ui: &mut egui::Ui) {
-        figures::comparison_menu_ui(ui);
+        self.figures.comparison_menu_ui(ui);
         let label = ui.label("into");
         ui.add(
             egui::TextEdit::singleline(&mut self.view.figure_dir)
@@ -432,7 +468,7 @@ impl SamplescopeApp {
             // Applied when the drag ends: changing the zoom mid-drag would move the slider
             // under the pointer.
             let r = ui.add(
-                egui::Slider::new(&mut scale, panels::LECTURE_SCALE_RANGE)
+                egui::Slider::new(&mut scale, LECTURE_SCALE_RANGE)
                     .step_by(0.1)
                     .text("font scale"),
             );
@@ -504,8 +540,8 @@ impl SamplescopeApp {
                         remove = Some(ci);
                     }
                 });
-                super::dropped::imported_column_ui(ui, column);
-                pattern_ui(ui, column);
+                dropped::imported_column_ui(ui, column);
+                params::pattern_ui(ui, column);
             });
             ui.separator();
         }
@@ -540,7 +576,7 @@ impl SamplescopeApp {
         ui.add(egui::Slider::new(&mut s.realizations, 1..=64).text("realizations K"));
         ui.checkbox(&mut s.mask_dc, "Mask DC");
         ui.heading("Reconstruction");
-        panels::signal_ui(ui, &mut self.scene.signal);
+        params::signal_ui(ui, &mut self.scene.signal);
         let r = &mut self.scene.recon;
         egui::ComboBox::from_label("Output size")
             .selected_text(format!("{}²", r.size))
@@ -568,7 +604,7 @@ impl SamplescopeApp {
             );
         }
         ui.heading("Filter");
-        panels::filter_ui(ui, &mut self.scene.filter);
+        params::filter_ui(ui, &mut self.scene.filter);
         ui.heading("Display");
         egui::ComboBox::from_label("Colour map")
             .selected_text(self.view.colormap.name())
@@ -581,42 +617,6 @@ impl SamplescopeApp {
         ui.add(egui::Slider::new(&mut self.view.spectrum_hi, -2.0..=4.0).text("log10 P max"));
         ui.add(egui::Slider::new(&mut self.view.zoom, 1..=8).text("zoom"));
     }
-}
-
-/// Pattern selection and parameter sliders generated from the pattern's descriptors.
-pub fn pattern_ui(ui: &mut egui::Ui, column: &mut Column) {
-    let mut name = column.pattern.name();
-    egui::ComboBox::from_label("Pattern")
-        .selected_text(name)
-        .show_ui(ui, |ui| {
-            for p in Pattern::all() {
-                ui.selectable_value(&mut name, p.name(), p.name())
-                    .on_hover_text(p.summary());
-            }
-        });
-    if name != column.pattern.name() {
-        if let Ok(p) = Pattern::from_name(name) {
-            column.pattern = p;
-        }
-    }
-    for spec in column.pattern.specs() {
-        let Some(value) = column.pattern.get(spec.name) else {
-            continue;
-        };
-        let text = panels::param_ui(ui, &spec, value);
-        if let Some(t) = text {
-            // The slider's range is the parameter's range, so this cannot fail; if it did, the
-            // old value stays.
-            let _ = column.pattern.set(spec.name, &t);
-        }
-    }
-    let mut seed = column.seed;
-    ui.horizontal(|ui| {
-        let label = ui.label("seed");
-        ui.add(egui::DragValue::new(&mut seed))
-            .labelled_by(label.id);
-    });
-    column.seed = seed;
 }
 
 impl eframe::App for SamplescopeApp {
@@ -638,57 +638,19 @@ impl eframe::App for SamplescopeApp {
                     egui::ScrollArea::vertical().show(ui, |ui| self.controls(ui));
                 });
         }
-        self.advance_motion(&ctx);
-        self.handle_file_drops(&ctx, ui.available_rect_before_wrap());
+        self.playback
+            .advance(&ctx, &self.scene, self.engine.is_idle());
+        let central = ui.available_rect_before_wrap();
+        let drops = self
+            .import
+            .drops_ui(&ctx, central, self.columns.rects(), &mut self.scene);
+        if let Err(e) = drops {
+            self.scene_error = Some(e);
+        }
         self.sync_engine();
-        if self.scene.panels.cost {
-            egui::Panel::bottom("samplescope-cost")
-                .resizable(true)
-                .default_size(220.0)
-                .show(ui, |ui| {
-                    panels::cost_ui(ui, &self.scene, &self.results, self.engine.evaluator())
-                });
-        }
-        if self.scene.panels.theorem {
-            // Column-independent: its node is computed for column 0 only.
-            let result = self
-                .results
-                .first()
-                .and_then(|c| c.get(&NodeKind::Theorem))
-                .map(|r| &r.result);
-            egui::Panel::bottom("samplescope-theorem")
-                .resizable(true)
-                .default_size(520.0)
-                .show(ui, |ui| {
-                    self.theorem_panel.ui(ui, &mut self.scene.theorem, result)
-                });
-        }
-        egui::CentralPanel::default().show(ui, |ui| {
-            if self.view.lecture {
-                // Panels sized for a 16:9 projector frame, centred.
-                let frame = lecture::letterbox_16_9(ui.available_rect_before_wrap());
-                let mut child = ui.new_child(egui::UiBuilder::new().max_rect(frame));
-                self.column_rects = panels::columns_ui(
-                    &mut child,
-                    &self.scene,
-                    &self.results,
-                    &mut self.view,
-                    self.gpu,
-                    &mut self.textures,
-                );
-            } else {
-                self.column_rects = panels::columns_ui(
-                    ui,
-                    &self.scene,
-                    &self.results,
-                    &mut self.view,
-                    self.gpu,
-                    &mut self.textures,
-                );
-            }
-        });
-        figures::shortcuts(&ctx, self.view.figure_scale);
-        let requests = figures::take_requests(&ctx);
+        self.panels_ui(ui);
+        self.figures.shortcuts(&ctx, self.view.figure_scale);
+        let requests = self.figures.take();
         if !requests.is_empty() {
             let snapshot = self.figure_snapshot();
             self.saver.note = (!self.engine.is_idle() && self.complete.is_some())

@@ -7,9 +7,9 @@
 //! "Normalise to bounding box" button when the problem is a point outside [0,1)², which
 //! retries the same file with the bounding-box normalisation.
 
-use super::app::SamplescopeApp;
+use super::columns::add_column;
 use crate::core::pointset::PointsFileError;
-use crate::scene::ImportedPoints;
+use crate::scene::{ImportedPoints, Scene};
 use eframe::egui;
 use std::path::{Path, PathBuf};
 
@@ -24,69 +24,71 @@ pub struct ImportFailure {
     pub error: PointsFileError,
 }
 
-impl SamplescopeApp {
-    /// Shows the points of `path` in `column` (0-based; a column is added when it is the next
-    /// one). On error the current scene stays and the failure is shown.
-    pub fn import_points(&mut self, column: usize, path: &Path, normalize: bool) {
+/// Importing point files into columns: owns the last failure, shown with its retry button.
+#[derive(Debug, Default)]
+pub struct PointImport {
+    failure: Option<ImportFailure>,
+}
+
+impl PointImport {
+    /// The last point file that could not be imported, if it is still shown.
+    pub fn failure(&self) -> Option<&ImportFailure> {
+        self.failure.as_ref()
+    }
+
+    /// Shows the points of `path` in `column` of `scene` (0-based; a column is added when it is
+    /// the next one). A file that cannot be read leaves the scene as it is and becomes the
+    /// failure [`PointImport::failure_ui`] shows. `Err` carries the message for the scene's
+    /// error line when the file holds more points than a column shows.
+    pub fn import(
+        &mut self,
+        scene: &mut Scene,
+        column: usize,
+        path: &Path,
+        normalize: bool,
+    ) -> Result<(), String> {
         match ImportedPoints::from_file(path, normalize) {
             Ok(imp) => {
-                if column == self.scene.columns.len() {
-                    self.add_column();
+                if column == scene.columns.len() {
+                    add_column(scene);
                 }
-                let Some(col) = self.scene.columns.get_mut(column) else {
-                    return;
+                let Some(col) = scene.columns.get_mut(column) else {
+                    return Ok(());
                 };
                 if imp.points.len() > crate::scene::MAX_SCENE_N {
-                    self.scene_error = Some(format!(
+                    return Err(format!(
                         "{}: {} points; a column shows at most {}",
                         path.display(),
                         imp.points.len(),
                         crate::scene::MAX_SCENE_N
                     ));
-                    return;
                 }
                 col.label = String::new();
                 col.points = Some(imp);
-                self.import_failure = None;
+                self.failure = None;
             }
             Err(error) => {
-                self.import_failure = Some(ImportFailure {
+                self.failure = Some(ImportFailure {
                     column,
                     path: path.to_path_buf(),
                     error,
                 });
             }
         }
+        Ok(())
     }
 
-    /// The column under `x`: the one whose rectangle (as drawn in the last frame) spans `x`,
-    /// else the nearest one; before any column was drawn, columns split `central` equally.
-    pub fn column_at(&self, central: egui::Rect, x: f32) -> usize {
-        let n = self.scene.columns.len().max(1);
-        if self.column_rects.len() == n {
-            let distance = |r: &egui::Rect| {
-                if x < r.left() {
-                    r.left() - x
-                } else if x > r.right() {
-                    x - r.right()
-                } else {
-                    0.0
-                }
-            };
-            return self
-                .column_rects
-                .iter()
-                .enumerate()
-                .min_by(|a, b| distance(a.1).total_cmp(&distance(b.1)))
-                .map_or(0, |(i, _)| i);
-        }
-        let f = ((x - central.left()) / central.width().max(1.0)).clamp(0.0, 0.999_999);
-        ((f * n as f32) as usize).min(n - 1)
-    }
-
-    /// Handles files hovering over and dropped onto the window: a hint while hovering, an
-    /// import into the column under the pointer on drop.
-    pub fn handle_file_drops(&mut self, ctx: &egui::Context, central: egui::Rect) {
+    /// Handles files hovering over and dropped onto the window: a hint over the column under
+    /// the pointer while hovering, an import into it on drop. `central` is the area of the
+    /// columns, `column_rects` the columns as drawn in the last frame. `Err` as for
+    /// [`PointImport::import`] (the last such message when several files are dropped).
+    pub fn drops_ui(
+        &mut self,
+        ctx: &egui::Context,
+        central: egui::Rect,
+        column_rects: &[egui::Rect],
+        scene: &mut Scene,
+    ) -> Result<(), String> {
         let (hovered, dropped, pointer) = ctx.input(|i| {
             (
                 !i.raw.hovered_files.is_empty(),
@@ -94,18 +96,20 @@ impl SamplescopeApp {
                 i.pointer.hover_pos().or(i.pointer.interact_pos()),
             )
         });
+        let ncols = scene.columns.len();
+        let target = |x: f32| column_at(column_rects, ncols, central, x);
         if hovered {
-            let column = pointer.map_or(0, |p| self.column_at(central, p.x));
+            let column = pointer.map_or(0, |p| target(p.x));
             let painter = ctx.layer_painter(egui::LayerId::new(
                 egui::Order::Foreground,
                 egui::Id::unique("samplescope-drop-hint"),
             ));
-            let rect = match self.column_rects.get(column) {
-                Some(r) if self.column_rects.len() == self.scene.columns.len() => {
+            let rect = match column_rects.get(column) {
+                Some(r) if column_rects.len() == ncols => {
                     egui::Rect::from_x_y_ranges(r.x_range(), central.y_range())
                 }
                 _ => {
-                    let n = self.scene.columns.len().max(1) as f32;
+                    let n = ncols.max(1) as f32;
                     let w = central.width() / n;
                     egui::Rect::from_min_size(
                         egui::pos2(central.left() + w * column as f32, central.top()),
@@ -125,18 +129,24 @@ impl SamplescopeApp {
                 egui::Color32::WHITE,
             );
         }
+        let mut outcome = Ok(());
         for file in dropped {
             let path = file.path().to_path_buf();
-            let column = pointer.map_or(0, |p| self.column_at(central, p.x));
-            self.import_points(column, &path, false);
+            let column = pointer.map_or(0, |p| target(p.x));
+            if let Err(e) = self.import(scene, column, &path, false) {
+                outcome = Err(e);
+            }
         }
+        outcome
     }
 
-    /// The last import failure, with the retry button when normalising would help.
-    pub fn import_failure_ui(&mut self, ui: &mut egui::Ui) {
-        let Some(f) = self.import_failure.clone() else {
-            return;
+    /// The last import failure, with the retry button when normalising would help. `Err` as
+    /// for [`PointImport::import`] (from the retry).
+    pub fn failure_ui(&mut self, ui: &mut egui::Ui, scene: &mut Scene) -> Result<(), String> {
+        let Some(f) = self.failure.clone() else {
+            return Ok(());
         };
+        let mut outcome = Ok(());
         ui.horizontal_wrapped(|ui| {
             ui.colored_label(
                 egui::Color32::from_rgb(200, 40, 40),
@@ -150,13 +160,39 @@ impl SamplescopeApp {
                     )
                     .clicked()
             {
-                self.import_points(f.column, &f.path, true);
+                outcome = self.import(scene, f.column, &f.path, true);
             }
             if ui.small_button("Dismiss").clicked() {
-                self.import_failure = None;
+                self.failure = None;
             }
         });
+        outcome
     }
+}
+
+/// The column under `x` among `ncols` columns: the one whose rectangle (as drawn in the last
+/// frame) spans `x`, else the nearest one; before every column was drawn, columns split
+/// `central` equally.
+pub fn column_at(column_rects: &[egui::Rect], ncols: usize, central: egui::Rect, x: f32) -> usize {
+    let n = ncols.max(1);
+    if column_rects.len() == n {
+        let distance = |r: &egui::Rect| {
+            if x < r.left() {
+                r.left() - x
+            } else if x > r.right() {
+                x - r.right()
+            } else {
+                0.0
+            }
+        };
+        return column_rects
+            .iter()
+            .enumerate()
+            .min_by(|a, b| distance(a.1).total_cmp(&distance(b.1)))
+            .map_or(0, |(i, _)| i);
+    }
+    let f = ((x - central.left()) / central.width().max(1.0)).clamp(0.0, 0.999_999);
+    ((f * n as f32) as usize).min(n - 1)
 }
 
 /// For a column showing imported points: where they come from, and a button that goes back to

@@ -3,9 +3,9 @@
 //!
 //! The figures are the ones `samplescope render` writes (same renderer, [`crate::export::figure`]),
 //! drawn on the CPU from the data the panels show, so a saved figure never depends on the
-//! window's size, theme or GPU. Panels and menus only *request* a figure (the request is
-//! queued in egui's temporary data); the app renders requests on a background thread and
-//! reports each file written, or the error, in the top bar.
+//! window's size, theme or GPU. Panels and menus only *request* a figure (into the app's
+//! [`FigureRequests`]); the app renders requests on a background thread and reports each file
+//! written, or the error, in the top bar.
 
 use crate::export::figure::{self, ColumnData, FigureColormap, FigureContext, PanelKind};
 use crate::scene::Scene;
@@ -36,7 +36,9 @@ pub enum Output {
 /// A queued figure request.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Request {
+    /// What the figure covers.
     pub target: Target,
+    /// What to produce.
     pub output: Output,
 }
 
@@ -49,151 +51,136 @@ struct PanelRect {
     kind: PanelKind,
 }
 
-fn queue_id() -> egui::Id {
-    egui::Id::unique("samplescope.figure-requests")
+/// The figure requests of one frame, and where each panel was drawn: owned by the app, lent to
+/// the panels and menus, which only *request* figures; the app takes the requests after the
+/// panels were drawn and hands them to the [`Saver`].
+#[derive(Debug, Default)]
+pub struct FigureRequests {
+    queue: Vec<Request>,
+    panels: Vec<PanelRect>,
 }
 
-fn rects_id() -> egui::Id {
-    egui::Id::unique("samplescope.figure-panel-rects")
-}
+impl FigureRequests {
+    /// Queues a request.
+    pub fn request(&mut self, r: Request) {
+        self.queue.push(r);
+    }
 
-/// Queues a request (called from panels and menus).
-pub fn request(ctx: &egui::Context, r: Request) {
-    ctx.data_mut(|d| {
-        d.get_temp_mut_or_default::<Vec<Request>>(queue_id())
-            .push(r)
-    });
-}
+    /// Takes every queued request.
+    pub fn take(&mut self) -> Vec<Request> {
+        std::mem::take(&mut self.queue)
+    }
 
-/// Takes every queued request.
-pub fn take_requests(ctx: &egui::Context) -> Vec<Request> {
-    ctx.data_mut(|d| std::mem::take(d.get_temp_mut_or_default::<Vec<Request>>(queue_id())))
-}
+    /// Records where a panel of figure `kind` was drawn this frame.
+    pub fn panel_drawn(&mut self, rect: egui::Rect, column: usize, kind: PanelKind) {
+        self.panels.push(PanelRect { rect, column, kind });
+    }
 
-/// Records where a panel of figure `kind` was drawn this frame.
-pub fn register_panel(ctx: &egui::Context, rect: egui::Rect, column: usize, kind: PanelKind) {
-    ctx.data_mut(|d| {
-        d.get_temp_mut_or_default::<Vec<PanelRect>>(rects_id())
-            .push(PanelRect { rect, column, kind })
-    });
-}
+    /// The panel under `pos` among those drawn this frame; clears the list for the next frame.
+    fn panel_at(&mut self, pos: Option<egui::Pos2>) -> Option<(usize, PanelKind)> {
+        let rects = std::mem::take(&mut self.panels);
+        let pos = pos?;
+        rects
+            .iter()
+            .find(|r| r.rect.contains(pos))
+            .map(|r| (r.column, r.kind))
+    }
 
-/// The panel under `pos` among those registered this frame; clears the list for the next frame.
-fn panel_at(ctx: &egui::Context, pos: Option<egui::Pos2>) -> Option<(usize, PanelKind)> {
-    let rects =
-        ctx.data_mut(|d| std::mem::take(d.get_temp_mut_or_default::<Vec<PanelRect>>(rects_id())));
-    let pos = pos?;
-    rects
-        .iter()
-        .find(|r| r.rect.contains(pos))
-        .map(|r| (r.column, r.kind))
-}
-
-/// A small "Save" menu for the figures of one panel: PNG 1×/2×/3×, SVG, CSV, clipboard.
-pub fn panel_menu_ui(ui: &mut egui::Ui, column: usize, kinds: &[PanelKind]) {
-    ui.menu_button("Save", |ui| {
-        for &kind in kinds {
-            if kinds.len() > 1 {
-                ui.label(egui::RichText::new(kind.name()).strong());
+    /// A small "Save" menu for the figures of one panel: PNG 1×/2×/3×, SVG, CSV, clipboard.
+    pub fn panel_menu_ui(&mut self, ui: &mut egui::Ui, column: usize, kinds: &[PanelKind]) {
+        ui.menu_button("Save", |ui| {
+            for &kind in kinds {
+                if kinds.len() > 1 {
+                    ui.label(egui::RichText::new(kind.name()).strong());
+                }
+                let target = Target::Panel { column, kind };
+                self.outputs_ui(ui, target, true);
             }
-            let target = Target::Panel { column, kind };
-            outputs_ui(ui, target, true);
-        }
-    })
-    .response
-    .on_hover_text("Save this panel (Ctrl+S over it: PNG at the figure scale; Ctrl+Shift+C: copy)");
-}
-
-/// A "Save column" menu.
-pub fn column_menu_ui(ui: &mut egui::Ui, column: usize) {
-    ui.menu_button("Save column", |ui| {
-        outputs_ui(ui, Target::Column { column }, false);
-    });
-}
-
-/// A "Save comparison" menu.
-pub fn comparison_menu_ui(ui: &mut egui::Ui) {
-    ui.menu_button("Save comparison", |ui| {
-        outputs_ui(ui, Target::Comparison, false);
-    })
-    .response
-    .on_hover_text("Every column as one figure (Ctrl+Shift+S)");
-}
-
-fn outputs_ui(ui: &mut egui::Ui, target: Target, vector: bool) {
-    let ctx = ui.ctx().clone();
-    let pick = |ui: &mut egui::Ui, text: &str, output: Output| {
-        if ui.button(text).clicked() {
-            request(&ctx, Request { target, output });
-            ui.close();
-        }
-    };
-    for scale in 1..=3 {
-        pick(ui, &format!("PNG {scale}×"), Output::Png { scale });
-    }
-    if vector {
-        pick(ui, "SVG", Output::Svg { scale: 1 });
-        pick(ui, "CSV (data)", Output::Csv);
-    }
-    pick(ui, "Copy to clipboard", Output::Clipboard { scale: 1 });
-}
-
-/// Keyboard shortcuts: Ctrl+S saves the panel under the pointer as PNG at `scale` (the whole
-/// comparison when the pointer is over no panel), Ctrl+Shift+S saves the comparison,
-/// Ctrl+Shift+C copies the panel under the pointer. Call once per frame after the panels
-/// were drawn.
-pub fn shortcuts(ctx: &egui::Context, scale: u32) {
-    use egui::{Key, KeyboardShortcut, Modifiers};
-    let save_all = KeyboardShortcut::new(Modifiers::COMMAND | Modifiers::SHIFT, Key::S);
-    let copy = KeyboardShortcut::new(Modifiers::COMMAND | Modifiers::SHIFT, Key::C);
-    let save = KeyboardShortcut::new(Modifiers::COMMAND, Key::S);
-    let (all, copy, save, pos) = ctx.input_mut(|i| {
-        (
-            i.consume_shortcut(&save_all),
-            i.consume_shortcut(&copy),
-            i.consume_shortcut(&save),
-            i.pointer.hover_pos(),
-        )
-    });
-    let under = panel_at(ctx, pos);
-    let png = Output::Png { scale };
-    if all {
-        request(
-            ctx,
-            Request {
-                target: Target::Comparison,
-                output: png,
-            },
+        })
+        .response
+        .on_hover_text(
+            "Save this panel (Ctrl+S over it: PNG at the figure scale; Ctrl+Shift+C: copy)",
         );
     }
-    if let Some((column, kind)) = under {
-        let target = Target::Panel { column, kind };
-        if save {
-            request(
-                ctx,
-                Request {
+
+    /// A "Save column" menu.
+    pub fn column_menu_ui(&mut self, ui: &mut egui::Ui, column: usize) {
+        ui.menu_button("Save column", |ui| {
+            self.outputs_ui(ui, Target::Column { column }, false);
+        });
+    }
+
+    /// A "Save comparison" menu.
+    pub fn comparison_menu_ui(&mut self, ui: &mut egui::Ui) {
+        ui.menu_button("Save comparison", |ui| {
+            self.outputs_ui(ui, Target::Comparison, false);
+        })
+        .response
+        .on_hover_text("Every column as one figure (Ctrl+Shift+S)");
+    }
+
+    fn outputs_ui(&mut self, ui: &mut egui::Ui, target: Target, vector: bool) {
+        let mut pick = |ui: &mut egui::Ui, text: &str, output: Output| {
+            if ui.button(text).clicked() {
+                self.request(Request { target, output });
+                ui.close();
+            }
+        };
+        for scale in 1..=3 {
+            pick(ui, &format!("PNG {scale}×"), Output::Png { scale });
+        }
+        if vector {
+            pick(ui, "SVG", Output::Svg { scale: 1 });
+            pick(ui, "CSV (data)", Output::Csv);
+        }
+        pick(ui, "Copy to clipboard", Output::Clipboard { scale: 1 });
+    }
+
+    /// Keyboard shortcuts: Ctrl+S saves the panel under the pointer as PNG at `scale` (the
+    /// whole comparison when the pointer is over no panel), Ctrl+Shift+S saves the comparison,
+    /// Ctrl+Shift+C copies the panel under the pointer. Call once per frame after the panels
+    /// were drawn (it clears the panels' rectangles for the next frame).
+    pub fn shortcuts(&mut self, ctx: &egui::Context, scale: u32) {
+        use egui::{Key, KeyboardShortcut, Modifiers};
+        let save_all = KeyboardShortcut::new(Modifiers::COMMAND | Modifiers::SHIFT, Key::S);
+        let copy = KeyboardShortcut::new(Modifiers::COMMAND | Modifiers::SHIFT, Key::C);
+        let save = KeyboardShortcut::new(Modifiers::COMMAND, Key::S);
+        let (all, copy, save, pos) = ctx.input_mut(|i| {
+            (
+                i.consume_shortcut(&save_all),
+                i.consume_shortcut(&copy),
+                i.consume_shortcut(&save),
+                i.pointer.hover_pos(),
+            )
+        });
+        let under = self.panel_at(pos);
+        let png = Output::Png { scale };
+        if all {
+            self.request(Request {
+                target: Target::Comparison,
+                output: png,
+            });
+        }
+        if let Some((column, kind)) = under {
+            let target = Target::Panel { column, kind };
+            if save {
+                self.request(Request {
                     target,
                     output: png,
-                },
-            );
-        }
-        if copy {
-            request(
-                ctx,
-                Request {
+                });
+            }
+            if copy {
+                self.request(Request {
                     target,
                     output: Output::Clipboard { scale },
-                },
-            );
-        }
-    } else if save {
-        request(
-            ctx,
-            Request {
+                });
+            }
+        } else if save {
+            self.request(Request {
                 target: Target::Comparison,
                 output: png,
-            },
-        );
+            });
+        }
     }
 }
 
@@ -607,14 +594,31 @@ mod tests {
 
     #[test]
     fn requests_queue_and_drain() {
-        let ctx = egui::Context::default();
+        let mut requests = FigureRequests::default();
         let r = Request {
             target: Target::Comparison,
             output: Output::Png { scale: 2 },
         };
-        request(&ctx, r);
-        request(&ctx, r);
-        assert_eq!(take_requests(&ctx), vec![r, r]);
-        assert!(take_requests(&ctx).is_empty());
+        requests.request(r);
+        requests.request(r);
+        assert_eq!(requests.take(), vec![r, r]);
+        assert!(requests.take().is_empty());
+    }
+
+    #[test]
+    fn the_panel_under_the_pointer_is_found_once_per_frame() {
+        let mut requests = FigureRequests::default();
+        let rect = egui::Rect::from_min_size(egui::pos2(10.0, 10.0), egui::vec2(100.0, 100.0));
+        requests.panel_drawn(rect, 1, PanelKind::Spectrum);
+        assert_eq!(requests.panel_at(None), None);
+        requests.panel_drawn(rect, 1, PanelKind::Spectrum);
+        assert_eq!(requests.panel_at(Some(egui::pos2(500.0, 50.0))), None);
+        requests.panel_drawn(rect, 1, PanelKind::Spectrum);
+        assert_eq!(
+            requests.panel_at(Some(egui::pos2(50.0, 50.0))),
+            Some((1, PanelKind::Spectrum))
+        );
+        // Cleared for the next frame.
+        assert_eq!(requests.panel_at(Some(egui::pos2(50.0, 50.0))), None);
     }
 }

@@ -8,7 +8,7 @@
 //!
 //! Only presentation changes: the scene, and so the compute graph, is the same in both modes.
 
-use super::panels::{ViewState, LECTURE_SCALE_RANGE};
+use super::view::{ViewState, LECTURE_SCALE_DEFAULT, LECTURE_SCALE_RANGE};
 use eframe::egui::{self, Color32, Rect, Stroke, Theme, Vec2};
 
 /// The style last applied to the context, so that it is set only when it changes.
@@ -70,7 +70,7 @@ pub fn apply_style(
 /// to the nearest end, or the default for NaN).
 pub fn clamp_scale(scale: f32) -> f32 {
     if scale.is_nan() {
-        return super::panels::LECTURE_SCALE_DEFAULT;
+        return LECTURE_SCALE_DEFAULT;
     }
     scale.clamp(*LECTURE_SCALE_RANGE.start(), *LECTURE_SCALE_RANGE.end())
 }
@@ -123,10 +123,7 @@ mod tests {
         assert_eq!(clamp_scale(0.1), 1.0);
         assert_eq!(clamp_scale(10.0), 3.0);
         assert_eq!(clamp_scale(2.0), 2.0);
-        assert_eq!(
-            clamp_scale(f32::NAN),
-            super::super::panels::LECTURE_SCALE_DEFAULT
-        );
+        assert_eq!(clamp_scale(f32::NAN), LECTURE_SCALE_DEFAULT);
     }
 
     #[test]

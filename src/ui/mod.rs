@@ -1,14 +1,39 @@
-//! The eframe GUI: columns of four live panels (pattern, spectrum, zone plate, filter), a cost
-//! view, and the controls. Panels only draw plain data computed by the engine; no maths here.
+//! The eframe GUI: columns of live panels (pattern, spectrum, zone plate, filter), the cost and
+//! sampling-theorem views below them, and the controls. Panels only draw plain data computed by
+//! the engine; no maths here.
+//!
+//! # Layering
+//!
+//! Imports point downwards only; no module imports one above it, so there is no import circle:
+//!
+//! ```text
+//! app                      SamplescopeApp: owns the state, lends it to everything below
+//!  ├─ columns              the column grid (holds the column panels, the columns' rectangles)
+//!  ├─ dropped, playback    components owning their state (point import, motion playback)
+//!  ├─ lecture              lecture-mode style and letterbox
+//!  ├─ panels/<name>        one panel each, implementing panels::Panel, reading a PanelCx
+//!  │   └─ panels (mod.rs)  the Panel trait and PanelCx
+//!  ├─ widgets/             image view (texture cache), parameter editors, status labels
+//!  ├─ figures              figure requests (the outbox lent to panels), the background saver
+//!  ├─ view, results        shared display state; the engine's results as the UI holds them
+//!  └─ gpu                  the wgpu display pipelines
+//! ```
+//!
+//! A panel reaches the app's state only through [`panels::PanelCx`]; components get what they
+//! need as arguments. State of a frame (figure requests, where panels were drawn, whether wall
+//! times are shown) travels in that context, not in egui's temporary data.
 
 pub mod app;
+pub mod columns;
 pub mod dropped;
 pub mod figures;
 pub mod gpu;
 pub mod lecture;
 pub mod panels;
 pub mod playback;
-pub mod theorem;
+pub mod results;
+pub mod view;
+pub mod widgets;
 
 pub use app::SamplescopeApp;
 

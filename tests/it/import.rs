@@ -307,15 +307,15 @@ mod ui {
         h.state_mut().add_column();
         h.run_steps(3);
         let app = h.state();
-        assert_eq!(app.column_rects.len(), 3);
+        assert_eq!(app.column_rects().len(), 3);
         let central = eframe::egui::Rect::from_min_size(
             eframe::egui::pos2(0.0, 0.0),
             eframe::egui::vec2(10.0, 10.0),
         );
-        for (i, r) in app.column_rects.iter().enumerate() {
+        for (i, r) in app.column_rects().iter().enumerate() {
             assert_eq!(app.column_at(central, r.center().x), i, "{r:?}");
         }
-        let last = app.column_rects[2];
+        let last = app.column_rects()[2];
         assert_eq!(app.column_at(central, last.right() + 500.0), 2);
     }
 }

@@ -742,36 +742,62 @@ fn theorem_scenes_load_show_the_panel_and_separate_the_errors() {
 fn panel_controls_edit_the_settings_and_show_both_errors() {
     use egui_kittest::kittest::Queryable;
     use samplescope::scene::graph::{NodeResult, NodeValue};
-    use samplescope::ui::theorem::TheoremPanel;
+    use samplescope::ui::figures::FigureRequests;
+    use samplescope::ui::panels::theorem::TheoremPanel;
+    use samplescope::ui::panels::{Panel, PanelCx};
+    use samplescope::ui::results::{ColumnResults, Shown};
+    use samplescope::ui::view::ViewState;
+    use samplescope::ui::widgets::image::ImageView;
     use std::sync::Arc;
 
+    /// The panel and what the app would lend it.
     struct State {
         panel: TheoremPanel,
-        settings: TheoremSettings,
-        result: Option<Arc<NodeResult>>,
+        scene: Scene,
+        results: Vec<ColumnResults>,
+        view: ViewState,
+        images: ImageView,
+        figures: FigureRequests,
+        evaluator: Evaluator,
     }
-    let settings = TheoremSettings::default();
-    let view = compute_view(&settings).unwrap();
+    let scene = Scene::default();
+    assert_eq!(scene.theorem, TheoremSettings::default());
+    let view = compute_view(&scene.theorem).unwrap();
     let result = Arc::new(NodeResult {
         value: Ok(NodeValue::Theorem(Arc::new(view))),
         wall: std::time::Duration::ZERO,
         accuracy: None,
     });
+    let shown = Shown {
+        result,
+        scene: Arc::new(scene.clone()),
+        generation: 1,
+        progress: None,
+    };
     let state = State {
         panel: TheoremPanel::default(),
-        settings,
-        result: Some(result),
+        scene,
+        results: vec![ColumnResults::from([(NodeKind::Theorem, shown)])],
+        view: ViewState::default(),
+        images: ImageView::new(false),
+        figures: FigureRequests::default(),
+        evaluator: Evaluator::default(),
     };
     let mut h = egui_kittest::Harness::builder()
         .with_size(eframe::egui::Vec2::new(1400.0, 900.0))
         .build_ui_state(
             |ui, s: &mut State| {
-                let State {
-                    panel,
-                    settings,
-                    result,
-                } = s;
-                panel.ui(ui, settings, result.as_ref());
+                let mut cx = PanelCx {
+                    scene: &mut s.scene,
+                    column: 0,
+                    results: &s.results,
+                    view: &mut s.view,
+                    images: &mut s.images,
+                    figures: &mut s.figures,
+                    evaluator: &s.evaluator,
+                    side: 0.0,
+                };
+                s.panel.ui(ui, &mut cx);
             },
             state,
         );
@@ -800,11 +826,14 @@ fn panel_controls_edit_the_settings_and_show_both_errors() {
         .click_accesskit();
     h.run();
     assert!(h.state().panel.pair_re_im);
-    assert_eq!(h.state().settings, TheoremSettings::default());
+    assert_eq!(h.state().scene.theorem, TheoremSettings::default());
     h.get_by_role_and_label(Role::ComboBox, "Signal")
         .click_accesskit();
     h.run();
     h.get_by_label("gaussian").click_accesskit();
     h.run();
-    assert_eq!(h.state().settings.signal, Signal1D::Gaussian { sigma: 0.3 });
+    assert_eq!(
+        h.state().scene.theorem.signal,
+        Signal1D::Gaussian { sigma: 0.3 }
+    );
 }

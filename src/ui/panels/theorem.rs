@@ -1,17 +1,19 @@
 //! The 1D sampling-theorem panel: draws a [`TheoremView`] computed by the engine and edits the
 //! scene's [`TheoremSettings`] (the engine recomputes the node when they change). No maths here.
 
+use super::{Panel, PanelCx};
 use crate::core::filter::Filter;
 use crate::core::signal::theorem::{
     AliasingErrors, PairKind, Reconstructor, Signal1D, TheoremSettings, TheoremView,
     PAIR_SCALE_RANGE, PAIR_SHIFT_RANGE,
 };
 use crate::export::figure::PanelKind;
-use crate::scene::graph::{NodeResult, NodeValue};
-use crate::ui::figures;
+use crate::scene::graph::{NodeKind, NodeValue};
+use crate::scene::Panels;
+use crate::ui::figures::FigureRequests;
+use crate::ui::widgets::params::param_ui;
 use eframe::egui::{self, Color32};
 use egui_plot::{Legend, Line, Plot, Points, VLine};
-use std::sync::Arc;
 
 /// Colours of the replicas k = −3..=3 (k = 0, the original, is drawn in the text colour).
 const REPLICA_COLOURS: [Color32; 7] = [
@@ -44,20 +46,25 @@ pub struct TheoremPanel {
     pub pair_re_im: bool,
 }
 
-impl TheoremPanel {
-    /// Draws the controls (editing `settings`) and the plots of `result`.
-    pub fn ui(
-        &mut self,
-        ui: &mut egui::Ui,
-        settings: &mut TheoremSettings,
-        result: Option<&Arc<NodeResult>>,
-    ) {
+impl Panel for TheoremPanel {
+    fn kind(&self) -> PanelKind {
+        PanelKind::TheoremSignal
+    }
+
+    fn is_shown(&self, panels: &Panels) -> bool {
+        panels.theorem
+    }
+
+    /// Draws the controls (editing the scene's theorem settings) and the plots of the theorem
+    /// node's result (column-independent: it is computed for column 0 only).
+    fn ui(&mut self, ui: &mut egui::Ui, cx: &mut PanelCx<'_>) {
+        let result = cx.results.first().and_then(|c| c.get(&NodeKind::Theorem));
         ui.horizontal_top(|ui| {
             ui.vertical(|ui| {
                 ui.set_width(270.0);
                 egui::ScrollArea::vertical()
                     .id_salt("theorem-controls")
-                    .show(ui, |ui| controls_ui(ui, settings));
+                    .show(ui, |ui| controls_ui(ui, &mut cx.scene.theorem));
             });
             ui.separator();
             let view = match result.map(|r| &r.value) {
@@ -73,17 +80,21 @@ impl TheoremPanel {
             };
             egui::ScrollArea::vertical()
                 .id_salt("theorem-plots")
-                .show(ui, |ui| ui.vertical(|ui| self.plots_ui(ui, &view)));
+                .show(ui, |ui| {
+                    ui.vertical(|ui| self.plots_ui(ui, &view, cx.figures))
+                });
         });
     }
+}
 
-    fn plots_ui(&mut self, ui: &mut egui::Ui, v: &TheoremView) {
+impl TheoremPanel {
+    fn plots_ui(&mut self, ui: &mut egui::Ui, v: &TheoremView, figures: &mut FigureRequests) {
         let width = (ui.available_width() / 3.0 - 8.0).max(160.0);
         let height = 190.0;
         // The numbers first, so that they stay in view when the panel is short.
         ui.horizontal(|ui| {
             // The view belongs to column 0 (it does not depend on the column).
-            figures::panel_menu_ui(ui, 0, &PanelKind::THEOREM);
+            figures.panel_menu_ui(ui, 0, &PanelKind::THEOREM);
             ui.weak("figures of the three plots below (Ctrl+S over a plot saves it)");
         });
         errors_ui(ui, &v.errors, v.settings.rate);
@@ -105,7 +116,7 @@ impl TheoremPanel {
                 (spectrum.response.rect, PanelKind::TheoremSpectrum),
                 (recon.response.rect, PanelKind::TheoremReconstructed),
             ] {
-                figures::register_panel(ui.ctx(), r, 0, kind);
+                figures.panel_drawn(r, 0, kind);
             }
         });
         ui.separator();
@@ -183,7 +194,7 @@ fn controls_ui(ui: &mut egui::Ui, s: &mut TheoremSettings) {
         let Some(value) = s.filter.get(spec.name) else {
             continue;
         };
-        if let Some(t) = super::panels::param_ui(ui, &spec, value) {
+        if let Some(t) = param_ui(ui, &spec, value) {
             let _ = s.filter.set(spec.name, &t);
         }
     }

@@ -1,0 +1,125 @@
+//! The cost view: every node's wall time and accuracy per column, the evaluation counters, and
+//! the convergence curves (RMSE against samples per pixel and against time).
+
+use super::{Panel, PanelCx};
+use crate::export::figure::PanelKind;
+use crate::scene::graph::{NodeKind, NodeValue};
+use crate::scene::Panels;
+use eframe::egui;
+use egui_plot::{Line, Plot};
+
+/// A named convergence curve: (label, log-log RMSE vs spp, log-log RMSE vs ms).
+type Curve = (String, Vec<[f64; 2]>, Vec<[f64; 2]>);
+
+/// The cost view (below the columns; it reads every column's results).
+#[derive(Debug, Default)]
+pub struct CostPanel;
+
+impl Panel for CostPanel {
+    fn kind(&self) -> PanelKind {
+        PanelKind::Convergence
+    }
+
+    fn is_shown(&self, panels: &Panels) -> bool {
+        panels.cost
+    }
+
+    fn ui(&mut self, ui: &mut egui::Ui, cx: &mut PanelCx<'_>) {
+        ui.horizontal_top(|ui| {
+            ui.vertical(|ui| {
+                ui.strong("Cost per node");
+                egui::Grid::new("cost-grid").striped(true).show(ui, |ui| {
+                    ui.label("column");
+                    for k in NodeKind::ALL {
+                        ui.label(k.name());
+                    }
+                    ui.end_row();
+                    for (ci, col) in cx.results.iter().enumerate() {
+                        ui.label(
+                            cx.scene
+                                .columns
+                                .get(ci)
+                                .map(|c| c.title())
+                                .unwrap_or_default(),
+                        );
+                        for k in NodeKind::ALL {
+                            match col.get(&k) {
+                                Some(r) => {
+                                    let t = format!("{:.1} ms", r.wall.as_secs_f64() * 1e3);
+                                    let resp = ui.label(t);
+                                    if let Some(a) = &r.accuracy {
+                                        resp.on_hover_text(a);
+                                    }
+                                }
+                                None => {
+                                    ui.label("—");
+                                }
+                            }
+                        }
+                        ui.end_row();
+                    }
+                    ui.label("evaluations");
+                    for k in NodeKind::ALL {
+                        ui.label(cx.evaluator.count(k).to_string());
+                    }
+                    ui.end_row();
+                });
+            });
+            ui.vertical(|ui| {
+                ui.strong("Convergence (log-log)");
+                if !cx.scene.effects.convergence {
+                    ui.small("turn on the convergence effect to compute it");
+                }
+                let curves: Vec<Curve> = cx
+                    .results
+                    .iter()
+                    .enumerate()
+                    .filter_map(|(ci, col)| {
+                        match col.get(&NodeKind::Convergence).map(|r| &r.value) {
+                            Some(Ok(NodeValue::Convergence(c))) => Some((
+                                cx.scene
+                                    .columns
+                                    .get(ci)
+                                    .map(|c| c.title())
+                                    .unwrap_or_default(),
+                                c.iter()
+                                    .map(|p| [(p.spp as f64).log10(), p.rmse.max(1e-12).log10()])
+                                    .collect(),
+                                c.iter()
+                                    .map(|p| {
+                                        [p.millis.max(1e-3).log10(), p.rmse.max(1e-12).log10()]
+                                    })
+                                    .collect(),
+                            )),
+                            _ => None,
+                        }
+                    })
+                    .collect();
+                ui.horizontal(|ui| {
+                    Plot::new("conv-spp")
+                        .width(320.0)
+                        .height(160.0)
+                        .x_axis_label("log10 spp")
+                        .y_axis_label("log10 RMSE")
+                        .legend(egui_plot::Legend::default())
+                        .show(ui, |p| {
+                            for (name, a, _) in &curves {
+                                p.line(Line::new(name.clone(), a.clone()));
+                            }
+                        });
+                    Plot::new("conv-time")
+                        .width(320.0)
+                        .height(160.0)
+                        .x_axis_label("log10 ms")
+                        .y_axis_label("log10 RMSE")
+                        .legend(egui_plot::Legend::default())
+                        .show(ui, |p| {
+                            for (name, _, b) in &curves {
+                                p.line(Line::new(name.clone(), b.clone()));
+                            }
+                        });
+                });
+            });
+        });
+    }
+}

@@ -1,0 +1,109 @@
+//! The filter panel: the kernel h(x), its frequency response |H(ω)| against the ideal low-pass
+//! with the Nyquist line, the 2D response image and the filter's metrics.
+
+use super::{Panel, PanelCx};
+use crate::export::figure::PanelKind;
+use crate::scene::graph::{NodeKind, NodeValue};
+use crate::scene::Panels;
+use crate::ui::gpu::DisplayRange;
+use crate::ui::widgets::status::{error_label, time_label};
+use eframe::egui::{self, Color32};
+use egui_plot::{Line, Plot, VLine};
+
+/// The filter panel.
+#[derive(Debug, Default)]
+pub struct FilterPanel;
+
+impl Panel for FilterPanel {
+    fn kind(&self) -> PanelKind {
+        PanelKind::Response
+    }
+
+    fn is_shown(&self, panels: &Panels) -> bool {
+        panels.filter
+    }
+
+    fn ui(&mut self, ui: &mut egui::Ui, cx: &mut PanelCx<'_>) {
+        let (ci, side) = (cx.column, cx.side);
+        ui.horizontal_wrapped(|ui| {
+            ui.label("Filter");
+            ui.checkbox(&mut cx.view.response_db, "dB");
+            cx.figures
+                .panel_menu_ui(ui, ci, &[PanelKind::Kernel, PanelKind::Response]);
+        });
+        let Some(r) = cx.result(NodeKind::Response) else {
+            ui.spinner();
+            return;
+        };
+        let d = match &r.value {
+            Ok(NodeValue::Response(d)) => d.clone(),
+            Ok(_) => return,
+            Err(e) => {
+                error_label(ui, "filter", e);
+                return;
+            }
+        };
+        let h = (side * 0.3).max(60.0);
+        Plot::new(("kernel", ci))
+            .height(h)
+            .width(side)
+            .allow_drag(false)
+            .allow_zoom(false)
+            .allow_scroll(false)
+            .x_axis_label("x (sample spacings)")
+            .y_axis_label("h(x)")
+            .show(ui, |p| {
+                p.line(Line::new("h", d.kernel.clone()));
+            });
+        let db = cx.view.response_db;
+        let mag: Vec<[f64; 2]> = d
+            .magnitude
+            .iter()
+            .map(|&[w, m]| [w, if db { 20.0 * m.max(1e-12).log10() } else { m }])
+            .collect();
+        let (one, zero) = if db { (0.0, -120.0) } else { (1.0, 0.0) };
+        let ideal_parts = [
+            vec![[0.0, one], [0.5, one]],
+            vec![[0.5, one], [0.5, zero]],
+            vec![[0.5, zero], [d.omega_max, zero]],
+        ];
+        Plot::new(("response", ci))
+            .height(h)
+            .width(side)
+            .allow_drag(false)
+            .allow_zoom(false)
+            .allow_scroll(false)
+            .x_axis_label("ω (cycles/sample)")
+            .y_axis_label(if db { "|H| dB" } else { "|H|" })
+            .show(ui, |p| {
+                for part in &ideal_parts {
+                    p.line(Line::new("ideal low-pass", part.clone()).color(Color32::GRAY));
+                }
+                p.line(Line::new("|H(ω)|", mag));
+                p.vline(VLine::new("Nyquist", 0.5).color(Color32::from_rgb(200, 60, 60)));
+            });
+        let range = DisplayRange {
+            lo: 0.0,
+            hi: 1.0,
+            log: false,
+            colormap: cx.view.colormap,
+        };
+        cx.images.ui(
+            ui,
+            egui::Id::NULL.with(("response2d", ci)),
+            &d.image,
+            range,
+            [0.0, 0.0, 1.0, 1.0],
+            side * 0.6,
+        );
+        ui.small(format!("2D |H|, omega in [-{0}, {0}]²", d.omega_max));
+        ui.small(
+            d.metrics
+                .iter()
+                .map(|(k, v)| format!("{k} {v:.3}"))
+                .collect::<Vec<_>>()
+                .join(" · "),
+        );
+        time_label(ui, r, cx.view.show_timings);
+    }
+}

@@ -1,0 +1,210 @@
+//! The pattern panel: the points of a column in the unit square, with overlays (strata,
+//! elementary intervals, minimum-distance discs, the star-discrepancy box) and the point
+//! statistics.
+
+use super::{Panel, PanelCx};
+use crate::export::figure::PanelKind;
+use crate::scene::graph::{NodeKind, NodeValue};
+use crate::scene::{Panels, Scene};
+use crate::ui::gpu;
+use crate::ui::view::screen_from_unit;
+use crate::ui::widgets::status::{error_label, time_label};
+use eframe::egui::{self, Color32, Rect, Stroke, Vec2};
+use eframe::egui_wgpu;
+
+/// The pattern panel (its overlays' switches live in the shared view state).
+#[derive(Debug, Default)]
+pub struct PatternPanel;
+
+impl Panel for PatternPanel {
+    fn kind(&self) -> PanelKind {
+        PanelKind::Pattern
+    }
+
+    fn is_shown(&self, panels: &Panels) -> bool {
+        panels.pattern
+    }
+
+    fn ui(&mut self, ui: &mut egui::Ui, cx: &mut PanelCx<'_>) {
+        let (ci, side) = (cx.column, cx.side);
+        ui.horizontal_wrapped(|ui| {
+            ui.label("Sample pattern");
+            cx.figures.panel_menu_ui(ui, ci, &[PanelKind::Pattern]);
+        });
+        let (rect, _) = ui.allocate_exact_size(Vec2::splat(side), egui::Sense::hover());
+        let painter = ui.painter_at(rect);
+        painter.rect_filled(rect, 0.0, Color32::WHITE);
+        let Some(r) = cx.result(NodeKind::Points) else {
+            ui.spinner();
+            return;
+        };
+        let data = match &r.value {
+            Ok(NodeValue::Points(d)) => d.clone(),
+            Ok(_) => return,
+            Err(e) => {
+                error_label(ui, "pattern", e);
+                return;
+            }
+        };
+        let count = cx.view.prefix.unwrap_or(usize::MAX).min(data.points.len());
+        let radius = (side / (data.points.len() as f32).sqrt() * 0.18).clamp(0.8, 4.0);
+        // Overlays under the points.
+        let grid_stroke = Stroke::new(0.5, Color32::from_gray(190));
+        if cx.view.show_strata {
+            let (c, rws) = strata_shape(cx.scene, ci, data.points.len());
+            for i in 1..c {
+                let x = i as f64 / c as f64;
+                painter.line_segment(
+                    [
+                        screen_from_unit(rect, [x, 0.0]),
+                        screen_from_unit(rect, [x, 1.0]),
+                    ],
+                    grid_stroke,
+                );
+            }
+            for j in 1..rws {
+                let y = j as f64 / rws as f64;
+                painter.line_segment(
+                    [
+                        screen_from_unit(rect, [0.0, y]),
+                        screen_from_unit(rect, [1.0, y]),
+                    ],
+                    grid_stroke,
+                );
+            }
+        }
+        if let Some(k) = cx.scene.columns[ci].elementary_k.or(cx.view.elementary_k) {
+            let n = data.points.len();
+            if n.is_power_of_two() {
+                let m = n.trailing_zeros();
+                let k = k.min(m);
+                let (cx, cy) = (1usize << k, 1usize << (m - k));
+                for i in 1..cx {
+                    let x = i as f64 / cx as f64;
+                    painter.line_segment(
+                        [
+                            screen_from_unit(rect, [x, 0.0]),
+                            screen_from_unit(rect, [x, 1.0]),
+                        ],
+                        Stroke::new(0.6, Color32::from_rgb(120, 160, 220)),
+                    );
+                }
+                for j in 1..cy {
+                    let y = j as f64 / cy as f64;
+                    painter.line_segment(
+                        [
+                            screen_from_unit(rect, [0.0, y]),
+                            screen_from_unit(rect, [1.0, y]),
+                        ],
+                        Stroke::new(0.6, Color32::from_rgb(120, 160, 220)),
+                    );
+                }
+            }
+        }
+        let stats = match cx.result(NodeKind::Statistics).map(|r| &r.value) {
+            Some(Ok(NodeValue::Statistics(s))) => Some(s.clone()),
+            _ => None,
+        };
+        if let Some(s) = &stats {
+            if cx.view.show_min_disc && data.points.len() <= 16384 {
+                let rad = (s.min_distance / 2.0) as f32 * side;
+                for p in &data.points[..count] {
+                    painter.circle_stroke(
+                        screen_from_unit(rect, [p.x, p.y]),
+                        rad,
+                        Stroke::new(0.5, Color32::from_rgb(230, 150, 60)),
+                    );
+                }
+            }
+            if cx.view.show_star_box {
+                if let Some((_, (a, b))) = s.star {
+                    let r2 = Rect::from_two_pos(
+                        screen_from_unit(rect, [0.0, 0.0]),
+                        screen_from_unit(rect, [a, b]),
+                    );
+                    painter.rect_stroke(
+                        r2,
+                        0.0,
+                        Stroke::new(1.5, Color32::from_rgb(220, 40, 40)),
+                        egui::StrokeKind::Inside,
+                    );
+                }
+            }
+        }
+        let color = Color32::from_rgb(20, 20, 30);
+        if cx.images.gpu() {
+            let ppp = ui.ctx().pixels_per_point();
+            let cb = gpu::PointsCallback {
+                id: egui::Id::NULL.with(("points", ci)),
+                points: data.gpu.clone(),
+                version: data.version,
+                count: count as u32,
+                window: [0.0, 0.0, 1.0, 1.0],
+                radius_px: radius * ppp,
+                color,
+                rect_px: [rect.width() * ppp, rect.height() * ppp],
+            };
+            ui.painter()
+                .add(egui_wgpu::Callback::new_paint_callback(rect, cb));
+        } else {
+            for p in &data.points[..count] {
+                painter.circle_filled(screen_from_unit(rect, [p.x, p.y]), radius, color);
+            }
+        }
+        time_label(ui, r, cx.view.show_timings);
+        if let Some(note) = &data.note {
+            ui.small(note);
+        }
+        if let Some(s) = &stats {
+            ui.small(format!(
+                "min dist {:.4} ({:.3}× hex) · mean NN {:.4} · D* {} · L2* {:.2e}{}",
+                s.min_distance,
+                s.normalized_min_distance,
+                s.mean_nn,
+                s.star
+                    .map(|(d, _)| format!("{d:.2e}"))
+                    .unwrap_or_else(|| "—".into()),
+                s.l2_star,
+                s.t_value.map(|t| format!(" · t = {t}")).unwrap_or_default()
+            ));
+        }
+        ui.horizontal_wrapped(|ui| {
+            ui.checkbox(&mut cx.view.show_strata, "strata");
+            ui.checkbox(&mut cx.view.show_min_disc, "min-dist discs");
+            ui.checkbox(&mut cx.view.show_star_box, "D* box");
+            let mut elem = cx.view.elementary_k.is_some();
+            if ui.checkbox(&mut elem, "elementary").changed() {
+                cx.view.elementary_k = elem.then_some(cx.view.elementary_k.unwrap_or(0));
+            }
+            if let Some(k) = &mut cx.view.elementary_k {
+                let label = ui.label("k");
+                ui.add(egui::DragValue::new(k).range(0..=24))
+                    .labelled_by(label.id);
+            }
+        });
+        if cx.scene.columns[ci].pattern.is_progressive() {
+            let n = data.points.len();
+            let mut p = cx.view.prefix.unwrap_or(n).min(n);
+            if ui
+                .add(egui::Slider::new(&mut p, 1..=n.max(1)).text("first i points"))
+                .changed()
+            {
+                cx.view.prefix = (p < n).then_some(p);
+            }
+        }
+    }
+}
+
+/// Columns × rows of the strata drawn for a pattern.
+fn strata_shape(scene: &Scene, ci: usize, n: usize) -> (usize, usize) {
+    use crate::core::pattern::{resolve_cols, Pattern};
+    let cols = match &scene.columns[ci].pattern {
+        Pattern::Jitter(j) => j.cols,
+        Pattern::Grid(g) => g.cols,
+        Pattern::MultiJitter(m) => m.cols,
+        Pattern::CorrelatedMultiJitter(m) => m.cols,
+        Pattern::NRooks(_) | Pattern::Lhs(_) => return (n.min(256), n.min(256)),
+        _ => 0,
+    };
+    resolve_cols("strata", cols, n).unwrap_or((1, 1))
+}

@@ -1,0 +1,102 @@
+//! The spectrum panel: the periodogram (log10 P, centred) through the colour map, the radially
+//! averaged power spectrum and the anisotropy.
+
+use super::{Panel, PanelCx};
+use crate::export::figure::PanelKind;
+use crate::scene::graph::{NodeKind, NodeValue};
+use crate::scene::Panels;
+use crate::ui::gpu::DisplayRange;
+use crate::ui::widgets::status::{error_label, time_label};
+use eframe::egui::{self, Color32};
+use egui_plot::{Line, Plot};
+
+/// The spectrum panel.
+#[derive(Debug, Default)]
+pub struct SpectrumPanel;
+
+impl Panel for SpectrumPanel {
+    fn kind(&self) -> PanelKind {
+        PanelKind::Spectrum
+    }
+
+    fn is_shown(&self, panels: &Panels) -> bool {
+        panels.spectrum
+    }
+
+    fn ui(&mut self, ui: &mut egui::Ui, cx: &mut PanelCx<'_>) {
+        let (ci, side) = (cx.column, cx.side);
+        ui.horizontal_wrapped(|ui| {
+            let size = cx
+                .result(NodeKind::Spectrum)
+                .map_or(cx.scene.spectrum.size, |r| r.scene.spectrum.size);
+            ui.label(format!("Periodogram {size}² (log10 P, centred)"));
+            cx.figures
+                .panel_menu_ui(ui, ci, &[PanelKind::Spectrum, PanelKind::Raps]);
+        });
+        let Some(r) = cx.result(NodeKind::Spectrum) else {
+            ui.spinner();
+            return;
+        };
+        let d = match &r.value {
+            Ok(NodeValue::Spectrum(d)) => d.clone(),
+            Ok(_) => return,
+            Err(e) => {
+                error_label(ui, "spectrum", e);
+                return;
+            }
+        };
+        let (lo, hi) = if cx.view.lock_scales {
+            (cx.view.spectrum_lo, cx.view.spectrum_hi)
+        } else {
+            d.auto_range
+        };
+        let range = DisplayRange {
+            lo,
+            hi,
+            log: false,
+            colormap: cx.view.colormap,
+        };
+        cx.images.ui(
+            ui,
+            egui::Id::NULL.with(("spectrum", ci)),
+            &d.image,
+            range,
+            [0.0, 0.0, 1.0, 1.0],
+            side,
+        );
+        time_label(ui, r, cx.view.show_timings);
+        if cx.view.show_timings {
+            ui.small(
+                d.stages
+                    .iter()
+                    .map(|(s, ms)| format!("{s} {ms:.2} ms"))
+                    .collect::<Vec<_>>()
+                    .join(" · "),
+            );
+        }
+        let h = (side * 0.3).max(80.0);
+        Plot::new(("raps", ci))
+            .height(h)
+            .width(side)
+            .allow_drag(false)
+            .allow_zoom(false)
+            .allow_scroll(false)
+            .x_axis_label("|k|")
+            .y_axis_label("RAPS")
+            .show(ui, |p| {
+                p.line(Line::new("RAPS", d.raps.clone()));
+                p.hline(egui_plot::HLine::new("white noise", 1.0).color(Color32::GRAY));
+            });
+        Plot::new(("aniso", ci))
+            .height((h * 0.7).max(70.0))
+            .width(side)
+            .allow_drag(false)
+            .allow_zoom(false)
+            .allow_scroll(false)
+            .x_axis_label("|k|")
+            .y_axis_label("aniso. dB")
+            .show(ui, |p| {
+                p.line(Line::new("anisotropy", d.anisotropy.clone()));
+            });
+    }
+}

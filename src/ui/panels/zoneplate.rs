@@ -1,0 +1,139 @@
+//! The zone-plate panel: the reconstruction, the reference image or the error of a column
+//! (one at a time, chosen in the shared view state), with its metrics and the reference's method.
+
+use super::{Panel, PanelCx};
+use crate::export::figure::PanelKind;
+use crate::scene::graph::{NodeKind, NodeValue};
+use crate::scene::Panels;
+use crate::ui::gpu::{Colormap, DisplayRange};
+use crate::ui::view::{ViewState, ZoneImage};
+use crate::ui::widgets::status::{error_label, time_label};
+use eframe::egui::{self, Color32};
+
+/// The zone-plate panel.
+#[derive(Debug, Default)]
+pub struct ZonePlatePanel;
+
+impl Panel for ZonePlatePanel {
+    fn kind(&self) -> PanelKind {
+        PanelKind::Reconstruction
+    }
+
+    fn is_shown(&self, panels: &Panels) -> bool {
+        panels.zoneplate
+    }
+
+    fn figure(&self, view: &ViewState) -> PanelKind {
+        match view.zone_image {
+            ZoneImage::Reconstruction => PanelKind::Reconstruction,
+            ZoneImage::Reference => PanelKind::Reference,
+            ZoneImage::Error => PanelKind::Error,
+        }
+    }
+
+    fn ui(&mut self, ui: &mut egui::Ui, cx: &mut PanelCx<'_>) {
+        let (ci, side) = (cx.column, cx.side);
+        ui.horizontal_wrapped(|ui| {
+            let lab = cx
+                .result(NodeKind::Reconstruction)
+                .map_or(&*cx.scene, |r| r.scene.as_ref());
+            ui.label(format!("{} {}²", lab.signal.name(), lab.recon.size));
+            ui.selectable_value(&mut cx.view.zone_image, ZoneImage::Reconstruction, "recon");
+            ui.selectable_value(&mut cx.view.zone_image, ZoneImage::Reference, "reference");
+            ui.selectable_value(&mut cx.view.zone_image, ZoneImage::Error, "error");
+            cx.figures.panel_menu_ui(
+                ui,
+                ci,
+                &[
+                    PanelKind::Reconstruction,
+                    PanelKind::Reference,
+                    PanelKind::Error,
+                ],
+            );
+        });
+        if !cx.scene.effects.reconstruction {
+            ui.small("reconstruction effect is off");
+            return;
+        }
+        let kind = match cx.view.zone_image {
+            ZoneImage::Reconstruction => NodeKind::Reconstruction,
+            ZoneImage::Reference => NodeKind::Reference,
+            ZoneImage::Error => NodeKind::Error,
+        };
+        let Some(r) = cx.result(kind) else {
+            if cx.view.zone_image != ZoneImage::Reconstruction && !cx.scene.effects.error {
+                ui.small("reference/error effect is off");
+            } else {
+                ui.spinner();
+            }
+            return;
+        };
+        let grey = DisplayRange {
+            lo: 0.0,
+            hi: 1.0,
+            log: false,
+            colormap: Colormap::Greys,
+        };
+        let (image, range) = match &r.value {
+            Ok(NodeValue::Reconstruction(d)) => (d.image.clone(), grey),
+            Ok(NodeValue::Reference(d)) => (d.image.clone(), grey),
+            Ok(NodeValue::Error(d)) => (
+                d.image.clone(),
+                DisplayRange {
+                    lo: 0.0,
+                    hi: d.max_error.max(1e-6),
+                    log: false,
+                    colormap: Colormap::Inferno,
+                },
+            ),
+            Ok(_) => return,
+            Err(e) => {
+                error_label(ui, "reconstruction", e);
+                return;
+            }
+        };
+        let z = cx.view.zoom.max(1) as f32;
+        let s = 1.0 / z;
+        let window = [0.5 - s / 2.0, 0.5 - s / 2.0, s, s];
+        cx.images.ui(
+            ui,
+            egui::Id::NULL.with(("zone", ci, kind)),
+            &image,
+            range,
+            window,
+            side,
+        );
+        time_label(ui, r, cx.view.show_timings);
+        if let Some(Ok(NodeValue::Reconstruction(d))) =
+            cx.result(NodeKind::Reconstruction).map(|r| &r.value)
+        {
+            if d.zero_weight > 0 {
+                ui.colored_label(
+                    Color32::from_rgb(200, 120, 0),
+                    format!(
+                        "{} pixels had zero filter weight (shown grey)",
+                        d.zero_weight
+                    ),
+                );
+            }
+        }
+        if let Some(Ok(NodeValue::Error(e))) = cx.result(NodeKind::Error).map(|r| &r.value) {
+            ui.small(format!("RMSE {:.4} · PSNR {:.2} dB", e.rmse, e.psnr));
+        }
+        if let Some(r) = cx.result(NodeKind::Reference) {
+            if let Ok(NodeValue::Reference(rf)) = &r.value {
+                // The node's own words: "≤" for a bound, "≈" for an estimate.
+                let own = r.accuracy.as_ref().map(|a| format!(", {a}"));
+                let refining = r
+                    .progress
+                    .map(|p| format!(" (refining {}/{})", p.step, p.steps));
+                ui.small(format!(
+                    "reference: {}{}{}",
+                    rf.method,
+                    own.unwrap_or_default(),
+                    refining.unwrap_or_default()
+                ));
+            }
+        }
+    }
+}
