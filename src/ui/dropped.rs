@@ -31,11 +31,6 @@ pub struct PointImport {
 }
 
 impl PointImport {
-    /// The last point file that could not be imported, if it is still shown.
-    pub fn failure(&self) -> Option<&ImportFailure> {
-        self.failure.as_ref()
-    }
-
     /// Shows the points of `path` in `column` of `scene` (0-based; a column is added when it is
     /// the next one). A file that cannot be read leaves the scene as it is and becomes the
     /// failure [`PointImport::failure_ui`] shows. `Err` carries the message for the scene's

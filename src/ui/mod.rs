@@ -4,24 +4,25 @@
 //!
 //! # Layering
 //!
-//! Imports point downwards only; no module imports one above it, so there is no import circle:
+//! Each line may import the lines below it, never one above, so there is no import circle
+//! (`panels/mod.rs` declares the panel files but imports none of them):
 //!
 //! ```text
-//! app                      SamplescopeApp: owns the state, lends it to everything below
-//!  ├─ columns              the column grid (holds the column panels, the columns' rectangles)
-//!  ├─ dropped, playback    components owning their state (point import, motion playback)
-//!  ├─ lecture              lecture-mode style and letterbox
-//!  ├─ panels/<name>        one panel each, implementing panels::Panel, reading a PanelCx
-//!  │   └─ panels (mod.rs)  the Panel trait and PanelCx
-//!  ├─ widgets/             image view (texture cache), parameter editors, status labels
-//!  ├─ figures              figure requests (the outbox lent to panels), the background saver
-//!  ├─ view, results        shared display state; the engine's results as the UI holds them
-//!  └─ gpu                  the wgpu display pipelines
+//! app                  SamplescopeApp: owns the state, lends it to everything below
+//! dropped, playback    components owning their state: point import, motion playback
+//! columns              the column grid (the column panels, each column's rectangle), add_column
+//! lecture              lecture-mode style and letterbox
+//! panels/<name>        one panel each: a struct implementing panels::Panel, reading a PanelCx
+//! panels (mod.rs)      the Panel trait and PanelCx
+//! widgets/             image view (texture cache), parameter editors, status labels
+//! figures              figure requests (the outbox lent to panels), the background saver
+//! view, results        shared display state; the engine's results as the UI holds them
+//! gpu                  the wgpu display pipelines
 //! ```
 //!
 //! A panel reaches the app's state only through [`panels::PanelCx`]; components get what they
-//! need as arguments. State of a frame (figure requests, where panels were drawn, whether wall
-//! times are shown) travels in that context, not in egui's temporary data.
+//! need as arguments. The state of a frame (figure requests, where panels were drawn, whether
+//! wall times are shown) travels in that context, not in egui's temporary data.
 
 pub mod app;
 pub mod columns;

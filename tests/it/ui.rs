@@ -197,6 +197,47 @@ fn save_menu_writes_the_panel_figure_with_scene_pattern_n_and_seed_in_its_name()
     let _ = std::fs::remove_dir_all(&dir);
 }
 
+/// Steps until the figure saver reports, and returns its status line.
+fn saved(h: &mut Harness<'static, SamplescopeApp>) -> String {
+    let deadline = Instant::now() + Duration::from_secs(60);
+    while h.state().saver.busy() || h.state().saver.status.is_none() {
+        h.step();
+        std::thread::sleep(Duration::from_millis(10));
+        assert!(Instant::now() < deadline, "figure not written");
+    }
+    h.state().saver.status.clone().unwrap_or_default()
+}
+
+#[test]
+fn ctrl_s_saves_the_panel_under_the_pointer() {
+    use eframe::egui::{Key, Modifiers};
+    let mut h = harness();
+    let dir = std::env::temp_dir().join(format!("samplescope-ui-ctrl-s-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    h.state_mut().view.figure_dir = dir.display().to_string();
+    // Over the spectrum panel: its figure at the figure scale (2×).
+    h.get_by_label_contains("Periodogram").hover();
+    h.run_steps(2);
+    h.key_press_modifiers(Modifiers::COMMAND, Key::S);
+    h.step();
+    let status = saved(&mut h);
+    let path = dir.join("default_jitter_n4096_seed1_spectrum@2x.png");
+    assert!(path.exists(), "{} ({status})", path.display());
+    // The zone plate's figure follows the image it shows.
+    h.get_by_label("error").click();
+    h.run_steps(2);
+    h.get_by_label("error").hover();
+    h.run_steps(2);
+    h.key_press_modifiers(Modifiers::COMMAND, Key::S);
+    h.step();
+    let status = saved(&mut h);
+    assert!(
+        status.contains("error@2x.png"),
+        "the error figure, not the reconstruction: {status}"
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
 #[test]
 fn a_figure_saved_during_a_recompute_has_labels_and_pixels_of_one_scene() {
     use samplescope::export::figure::PanelKind;
