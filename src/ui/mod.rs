@@ -52,6 +52,13 @@ pub fn run_gui_with_points(
     scene_path: Option<std::path::PathBuf>,
     points: Option<(std::path::PathBuf, bool)>,
 ) -> Result<(), String> {
+    if cfg!(target_os = "linux")
+        && ["DISPLAY", "WAYLAND_DISPLAY", "WAYLAND_SOCKET"]
+            .iter()
+            .all(|v| std::env::var_os(v).is_none_or(|s| s.is_empty()))
+    {
+        return Err(NO_DISPLAY.into());
+    }
     let options = eframe::NativeOptions {
         viewport: eframe::egui::ViewportBuilder::default()
             .with_inner_size([1500.0, 950.0])
@@ -71,5 +78,46 @@ pub fn run_gui_with_points(
             Ok(Box::new(app))
         }),
     )
-    .map_err(|e| e.to_string())
+    .map_err(|e| describe_start_error(&e.to_string()))
+}
+
+/// Why the window cannot open on a machine without a display.
+const NO_DISPLAY: &str = "no display: DISPLAY and WAYLAND_DISPLAY are unset; run it in a desktop \
+     session, or on a virtual X display (package xvfb): `Xvfb :99 &` then `DISPLAY=:99 samplescope`";
+
+/// One line naming what is missing when eframe cannot start: a graphics driver for wgpu, or
+/// the display; other errors as eframe gives them.
+fn describe_start_error(e: &str) -> String {
+    let lower = e.to_ascii_lowercase();
+    if lower.contains("wgpu") || lower.contains("adapter") || lower.contains("surface") {
+        format!(
+            "no Vulkan or OpenGL driver that wgpu can use ({e}); install your GPU's driver, or \
+             Mesa's software ones: apt-get install mesa-vulkan-drivers libvulkan1 libegl1 libgl1-mesa-dri"
+        )
+    } else if lower.contains("display") {
+        format!("{NO_DISPLAY} ({e})")
+    } else {
+        e.to_string()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::describe_start_error;
+
+    #[test]
+    fn start_errors_name_what_is_missing_on_one_line() {
+        let e = describe_start_error(
+            "WGPU error: Failed to create surface for any enabled backend: {}",
+        );
+        assert!(
+            e.contains("mesa-vulkan-drivers") && !e.contains('\n'),
+            "{e}"
+        );
+        let e = describe_start_error(
+            "winit EventLoopError: neither WAYLAND_DISPLAY nor DISPLAY is set.",
+        );
+        assert!(e.contains("xvfb") && !e.contains('\n'), "{e}");
+        assert_eq!(describe_start_error("something else"), "something else");
+    }
 }
