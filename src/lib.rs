@@ -54,5 +54,6 @@
 pub mod core;
 pub mod engine;
 pub mod export;
+pub mod model;
 pub mod scene;
 pub mod ui;

@@ -2,10 +2,13 @@
 //! [`DiskCache`] ([`ImagePayload`]), keyed by the node key.
 //!
 //! Only complete, successful results are stored. A file that does not decode (corrupt,
-//! foreign, another version) is ignored and the node is computed again.
+//! foreign, another version) is ignored and the node is computed again. The payload's method
+//! is the RON text of the [`ReferenceMethod`].
 
 use super::disk_cache::{DiskCache, ImagePayload};
-use crate::scene::graph::{ImageData, NodeKey, NodeResult, NodeValue, ReferenceData};
+use crate::core::recon::ReferenceMethod;
+use crate::model::{ImageData, ReferenceData};
+use crate::scene::graph::{NodeKey, NodeResult, NodeValue};
 use std::sync::Arc;
 use std::time::Duration;
 
@@ -15,11 +18,12 @@ pub(crate) fn load(disk: &DiskCache, key: &NodeKey) -> Option<NodeResult> {
     // `from_bytes` checks that the values are exactly width × height.
     let p = ImagePayload::from_bytes(&bytes)?;
     let (w, h) = (p.width as usize, p.height as usize);
+    let method: ReferenceMethod = ron::from_str(&p.method).ok()?;
     Some(NodeResult {
         value: Ok(NodeValue::Reference(Arc::new(ReferenceData {
             image: ImageData::new(w, h, p.values),
             error_estimate: p.error_estimate,
-            method: p.method,
+            method,
         }))),
         // The same accuracy text as when computed: a render from the cache writes the same
         // bytes as one that computed the reference.
@@ -34,12 +38,15 @@ pub(crate) fn store(disk: &DiskCache, key: &NodeKey, result: &NodeResult) {
     let Ok(NodeValue::Reference(r)) = &result.value else {
         return;
     };
+    let Ok(method) = ron::to_string(&r.method) else {
+        return;
+    };
     let payload = ImagePayload {
         width: r.image.width as u32,
         height: r.image.height as u32,
         values: r.image.values.as_ref().clone(),
         error_estimate: r.error_estimate,
-        method: r.method.clone(),
+        method,
         accuracy: result.accuracy.clone(),
     };
     if let Err(e) = disk.put(key.kind.name(), &key.hash, &payload.to_bytes()) {

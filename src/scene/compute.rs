@@ -3,135 +3,14 @@
 use super::graph::{NodeKind, NodeResult};
 use super::{ReconMode, Scene};
 use crate::core::cancel::Cancel;
-use glam::DVec2;
 use std::collections::HashMap;
-use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::Arc;
 use std::time::Duration;
 
-static VERSION: AtomicU64 = AtomicU64::new(1);
-
-/// A fresh version number for display uploads.
-pub fn next_version() -> u64 {
-    VERSION.fetch_add(1, Ordering::Relaxed)
-}
-
-/// A float image for display, row 0 at the top.
-#[derive(Debug, Clone)]
-pub struct ImageData {
-    pub width: usize,
-    pub height: usize,
-    pub values: Arc<Vec<f32>>,
-    /// Changes whenever the values change (GPU uploads happen only then).
-    pub version: u64,
-}
-
-impl ImageData {
-    /// An image from row-major values (row 0 at the top).
-    pub fn new(width: usize, height: usize, values: Vec<f32>) -> Self {
-        ImageData {
-            width,
-            height,
-            values: Arc::new(values),
-            version: next_version(),
-        }
-    }
-
-    /// From an image stored with row 0 at the bottom (y up), flipping rows.
-    pub fn from_y_up(width: usize, height: usize, values: impl Fn(usize) -> f32) -> Self {
-        let mut v = Vec::with_capacity(width * height);
-        for row in (0..height).rev() {
-            for col in 0..width {
-                v.push(values(row * width + col));
-            }
-        }
-        ImageData::new(width, height, v)
-    }
-}
-
-/// The points of a column.
-#[derive(Debug, Clone)]
-pub struct PointsData {
-    pub points: Vec<DVec2>,
-    /// The same points as f32, for the GPU.
-    pub gpu: Arc<Vec<[f32; 2]>>,
-    pub version: u64,
-    /// Why fewer points than asked were placed, if so.
-    pub note: Option<String>,
-}
-
-/// Point-set statistics for the overlays.
-#[derive(Debug, Clone)]
-pub struct StatsData {
-    pub min_distance: f64,
-    pub normalized_min_distance: f64,
-    pub mean_nn: f64,
-    /// Star discrepancy and the worst anchored box (a, b).
-    pub star: Option<(f64, (f64, f64))>,
-    pub l2_star: f64,
-    pub t_value: Option<u32>,
-}
-
-/// A periodogram ready to display.
-#[derive(Debug, Clone)]
-pub struct SpectrumData {
-    /// log10 P, row 0 = highest ky.
-    pub image: ImageData,
-    /// A display range from the data (2nd and 99.8th percentile of log10 P).
-    pub auto_range: (f32, f32),
-    /// Radially averaged power spectrum: (|k|, P).
-    pub raps: Vec<[f64; 2]>,
-    /// Anisotropy in dB: (|k|, A).
-    pub anisotropy: Vec<[f64; 2]>,
-    /// Wall time per stage (ms).
-    pub stages: Vec<(String, f64)>,
-}
-
-/// A reconstructed image.
-#[derive(Debug, Clone)]
-pub struct ReconData {
-    pub image: ImageData,
-    /// Pixels with zero total filter weight (shown at the fill value).
-    pub zero_weight: usize,
-}
-
-/// A reference image.
-#[derive(Debug, Clone)]
-pub struct ReferenceData {
-    pub image: ImageData,
-    pub error_estimate: Option<f64>,
-    pub method: String,
-}
-
-/// Error of a reconstruction against its reference.
-#[derive(Debug, Clone)]
-pub struct ErrorData {
-    pub rmse: f64,
-    pub psnr: f64,
-    /// |reconstruction − reference|.
-    pub image: ImageData,
-    pub max_error: f32,
-}
-
-/// A filter's curves, 2D response and quality metrics.
-#[derive(Debug, Clone)]
-pub struct ResponseData {
-    pub kernel: Vec<[f64; 2]>,
-    /// (ω, |H(ω)|/|H(0)|) for ω ∈ [0, omega_max].
-    pub magnitude: Vec<[f64; 2]>,
-    pub omega_max: f64,
-    /// |H(ωx, ωy)| over [−omega_max, omega_max]².
-    pub image: ImageData,
-    pub metrics: Vec<(&'static str, f64)>,
-}
-
-/// One point of a convergence curve.
-#[derive(Debug, Clone, Copy)]
-pub struct ConvergencePoint {
-    pub spp: usize,
-    pub rmse: f64,
-    pub millis: f64,
-}
+pub use crate::model::{
+    next_version, ConvergencePoint, ErrorData, ImageData, PointsData, ReconData, ReferenceData,
+    ResponseData, ResponseMetrics, SpectrumData, StatsData,
+};
 
 /// The value of a node.
 #[derive(Debug, Clone)]
@@ -191,7 +70,7 @@ impl NodeValue {
             NodeValue::Spectrum(s) => img(&s.image) + pairs(&s.raps) + pairs(&s.anisotropy),
             NodeValue::Samples(v) => v.len() * 8,
             NodeValue::Reconstruction(r) => img(&r.image),
-            NodeValue::Reference(r) => img(&r.image) + r.method.len(),
+            NodeValue::Reference(r) => img(&r.image),
             NodeValue::Error(e) => img(&e.image),
             NodeValue::Response(r) => img(&r.image) + pairs(&r.kernel) + pairs(&r.magnitude),
             NodeValue::Convergence(c) => c.len() * std::mem::size_of::<ConvergencePoint>(),
@@ -377,7 +256,7 @@ pub(super) fn reference(ctx: &JobCtx) -> Output {
         let value = NodeValue::Reference(Arc::new(ReferenceData {
             image: image_from_pixels(w, &r.pixels),
             error_estimate: r.error_estimate,
-            method: r.method.label(),
+            method: r.method,
         }));
         (value, accuracy)
     };
@@ -485,12 +364,12 @@ pub(super) fn response(ctx: &JobCtx) -> Output {
             magnitude,
             omega_max: RESPONSE_OMEGA_MAX,
             image,
-            metrics: vec![
-                ("smoothing", m.smoothing),
-                ("post-aliasing", m.post_aliasing),
-                ("ringing", m.ringing),
-                ("anisotropy", m.anisotropy),
-            ],
+            metrics: ResponseMetrics {
+                smoothing: m.smoothing,
+                post_aliasing: m.post_aliasing,
+                ringing: m.ringing,
+                anisotropy: m.anisotropy,
+            },
         })),
         None,
     ))

@@ -28,9 +28,10 @@ use serde::Serialize;
 use std::fmt::Write as _;
 use std::time::Duration;
 
-pub use super::compute::{
-    ConvergencePoint, ErrorData, ImageData, NodeValue, PointsData, ReconData, ReferenceData,
-    ResponseData, SpectrumData, StatsData,
+pub use super::compute::NodeValue;
+pub use crate::model::{
+    ConvergencePoint, ErrorData, ImageData, PointsData, ReconData, ReferenceData, ResponseData,
+    SpectrumData, StatsData,
 };
 
 /// The kinds of node, in an order where every node comes after its inputs.

@@ -119,7 +119,7 @@ use std::time::{Duration, Instant};
 mod quadrature;
 
 /// How a reference image was computed.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 pub enum ReferenceMethod {
     /// Exact area coverage of each pixel by the shape.
     ExactArea,
@@ -168,6 +168,13 @@ impl ReferenceMethod {
     /// an estimate of the RMS error (supersampling).
     pub fn estimate_is_bound(&self) -> bool {
         matches!(self, ReferenceMethod::SeparableQuadrature { .. })
+    }
+}
+
+impl std::fmt::Display for ReferenceMethod {
+    /// The [`label`](ReferenceMethod::label).
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.label())
     }
 }
 

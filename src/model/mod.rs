@@ -1,0 +1,34 @@
+//! The plain data that views draw: images, point sets, spectra, curves, the per-node data
+//! structs the compute graph fills, the identities of the panels ([`PanelKind`]), a column's
+//! data as the figures read it ([`ColumnData`]), the plain figure context ([`FigureContext`]),
+//! and the shared display vocabulary (the one [`Colormap`] with its CPU colorizer, the
+//! [`palette`], the dB conversion, the elementary-interval grid).
+//!
+//! Everything here is plain data or a pure function of it: `model` depends on [`crate::core`],
+//! `glam`, `serde` and `colorous` only, never on the scene, the engine, egui or plotters.
+//! The compute graph ([`crate::scene`]) fills these structs; the panels ([`crate::ui`]) and the
+//! figures ([`crate::export`]) only read them.
+
+mod colormap;
+mod column;
+mod context;
+mod filter;
+mod image;
+pub mod palette;
+mod panel;
+mod points;
+mod recon;
+mod spectrum;
+
+pub use colormap::{colorize, Colormap};
+pub use column::ColumnData;
+pub use context::{sanitize, FigureContext};
+pub use filter::{amplitude_db, ResponseData, ResponseMetrics, DB_FLOOR};
+pub use image::{next_version, ImageData};
+pub use panel::PanelKind;
+pub use points::{elementary_grid, PointsData, StatsData};
+pub use recon::{ConvergencePoint, ErrorData, ReconData, ReferenceData};
+pub use spectrum::SpectrumData;
+
+/// The 1D sampling-theorem view: plain data computed by [`crate::core::signal::theorem`].
+pub use crate::core::signal::theorem::TheoremView;

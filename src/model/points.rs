@@ -1,0 +1,55 @@
+//! Point sets and their statistics.
+
+use glam::DVec2;
+use std::sync::Arc;
+
+/// The points of a column.
+#[derive(Debug, Clone)]
+pub struct PointsData {
+    pub points: Vec<DVec2>,
+    /// The same points as f32, for the GPU.
+    pub gpu: Arc<Vec<[f32; 2]>>,
+    pub version: u64,
+    /// Why fewer points than asked were placed, if so.
+    pub note: Option<String>,
+}
+
+/// Point-set statistics for the overlays.
+#[derive(Debug, Clone)]
+pub struct StatsData {
+    pub min_distance: f64,
+    pub normalized_min_distance: f64,
+    pub mean_nn: f64,
+    /// Star discrepancy and the worst anchored box (a, b).
+    pub star: Option<(f64, (f64, f64))>,
+    pub l2_star: f64,
+    pub t_value: Option<u32>,
+}
+
+/// The elementary-interval grid (columns, rows) = (2^k, 2^(m−k)) drawn under `n` = 2^m
+/// points for `k` (k above m taken as m); `None` without a k or when `n` is not a power of
+/// two. The pattern panel's overlay and the pattern figure both draw this grid.
+pub fn elementary_grid(k: Option<u32>, n: usize) -> Option<(usize, usize)> {
+    let k = k?;
+    if !n.is_power_of_two() {
+        return None;
+    }
+    let m = n.trailing_zeros();
+    let k = k.min(m);
+    Some((1usize << k, 1usize << (m - k)))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn elementary_grid_splits_2_to_the_m_into_2_to_the_k_columns() {
+        assert_eq!(elementary_grid(Some(1), 16), Some((2, 8)));
+        assert_eq!(elementary_grid(Some(0), 16), Some((1, 16)));
+        // k above m is taken as m.
+        assert_eq!(elementary_grid(Some(9), 16), Some((16, 1)));
+        assert_eq!(elementary_grid(Some(1), 12), None);
+        assert_eq!(elementary_grid(None, 16), None);
+    }
+}
