@@ -8,10 +8,10 @@
 //! criterion measurements.
 
 use criterion::{criterion_group, criterion_main, Criterion};
-use samplescope::export::figure::{panel_png, ColumnData, FigureContext, PanelKind};
+use samplescope::export::figure::panel_png;
 use samplescope::export::{png_bytes, PngColormap};
-use samplescope::scene::graph::{ImageData, ReconData};
-use samplescope::scene::Scene;
+use samplescope::model::{ColumnData, FigureContext, ImageData, PanelKind, ReconData};
+use samplescope::scene::{figure, Scene};
 use std::hint::black_box;
 use std::sync::Arc;
 use std::time::{Duration, Instant};
@@ -42,7 +42,7 @@ fn setup() -> (FigureContext, ColumnData, Vec<f64>) {
         })),
         ..Default::default()
     };
-    let ctx = FigureContext::new(&Scene::default(), 0, "bench").expect("column 0 exists");
+    let ctx = figure::context(&Scene::default(), 0, "bench").expect("column 0 exists");
     (ctx, data, values)
 }
 

@@ -1,8 +1,9 @@
 //! `samplescope render`: every figure of a scene, headless (no window, no GPU).
 //!
 //! Loads the scene, evaluates its compute graph synchronously, and writes, for every column,
-//! each figure its visible panels show (PNG, SVG, CSV), the column composite, and the
-//! comparison of all columns, printing one line per file. The 1D sampling-theorem figures
+//! each figure its visible panels show (PNG, SVG, CSV; the figures of
+//! [`samplescope::scene::panels`]' rule), the column composite, and the comparison of all
+//! columns, printing one line per file. The 1D sampling-theorem figures
 //! belong to column 0 only (the view does not depend on the column). The periodograms of all columns
 //! share one colour range (the union of their automatic ranges), as locked scales do in
 //! the GUI. Same scene → byte-identical files.
@@ -13,12 +14,12 @@ use samplescope::core::cancel::Cancel;
 use samplescope::engine::Evaluator;
 use samplescope::export::figure::{
     column_file_name, column_png, comparison_file_name, comparison_png, comparison_size, panel_csv,
-    panel_file_name, panel_png, panel_svg, ColumnData, FigureContext, PanelKind,
-    MAX_COMPOSITE_PIXELS, SCALES,
+    panel_file_name, panel_png, panel_svg, MAX_COMPOSITE_PIXELS, SCALES,
 };
 use samplescope::export::{write_file, ExportError};
+use samplescope::model::{ColumnData, FigureContext};
 use samplescope::scene::graph::{NodeKind, NodeResult};
-use samplescope::scene::{Scene, SceneError};
+use samplescope::scene::{figure, panels, Scene, SceneError};
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
@@ -151,8 +152,8 @@ pub fn run(args: &RenderArgs) -> Result<(), CliError> {
 
     let mut columns: Vec<(FigureContext, ColumnData)> = Vec::new();
     for (c, res) in results.iter().enumerate() {
-        let ctx = FigureContext::new(&scene, c, &stem).map_err(export_err)?;
-        columns.push((ctx, ColumnData::from_results(res)));
+        let ctx = figure::context(&scene, c, &stem).map_err(|e| CliError::Usage(e.to_string()))?;
+        columns.push((ctx, figure::column_data(res)));
     }
     // One colour range for every periodogram: the union of the columns' automatic ranges.
     let ranges: Vec<(f32, f32)> = columns
@@ -172,16 +173,16 @@ pub fn run(args: &RenderArgs) -> Result<(), CliError> {
         path: args.out.display().to_string(),
         source: source_err,
     })?;
-    if PanelKind::available(&scene).is_empty() {
+    if panels::available(&scene).is_empty() {
         eprintln!(
             "warning: {source} shows none of the panels render draws (pattern, spectrum, zone \
              plate, filter, cost view with convergence, sampling theorem); nothing written"
         );
     }
-    let composite = PanelKind::comparison(&scene);
+    let composite = panels::comparison(&scene);
     let s = args.scale;
     for (c, (ctx, data)) in columns.iter().enumerate() {
-        for kind in PanelKind::available_in(&scene, c) {
+        for kind in panels::available_in(&scene, c) {
             for &f in &formats {
                 let (name, bytes) = match f {
                     Format::Png => (
@@ -202,7 +203,7 @@ pub fn run(args: &RenderArgs) -> Result<(), CliError> {
                 write(&args.out.join(name), &bytes)?;
             }
         }
-        let own = PanelKind::composite_in(&scene, c);
+        let own = panels::composite_in(&scene, c);
         if !own.is_empty() && formats.contains(&Format::Png) {
             let bytes = column_png(&own, ctx, data, s).map_err(export_err)?;
             write(&args.out.join(column_file_name(ctx, s)), &bytes)?;

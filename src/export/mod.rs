@@ -1,6 +1,8 @@
 //! Figure and data writers: PNG images through a perceptual colour map, CSV, and the
-//! [`figure`]s for slides (axes, labels, colour bars; PNG, SVG, CSV and composites).
+//! [`figure`]s for slides (axes, labels, colour bars; PNG, SVG, CSV and composites). They
+//! read the plain data of [`crate::model`] only.
 
+pub mod encode;
 pub mod figure;
 
 use std::io::Write;
@@ -50,18 +52,12 @@ pub enum ExportError {
     },
 }
 
-/// Colour map of a PNG.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum PngColormap {
-    /// matplotlib's viridis (perceptually uniform), from the `colorous` crate.
-    Viridis,
-    /// Grey ramp.
-    Greys,
-}
+/// Colour map of a PNG (the one [`Colormap`](crate::model::Colormap)).
+pub use crate::model::Colormap as PngColormap;
 
 /// Encodes `values` (row-major, row 0 at the top) as an 8-bit RGB PNG, mapping
 /// [lo, hi] → [0, 1] → colour map; values outside are clamped, NaN maps to 0.
-/// `text` entries become PNG tEXt metadata (parameters of the figure).
+/// `text` entries become PNG text metadata (parameters of the figure).
 pub fn png_bytes(
     values: &[f64],
     width: usize,
@@ -78,45 +74,12 @@ pub fn png_bytes(
             len: values.len(),
         });
     }
-    let span = if hi > lo { hi - lo } else { 1.0 };
-    let mut rgb = Vec::with_capacity(values.len() * 3);
-    for &v in values {
-        let t = if v.is_nan() {
-            0.0
-        } else {
-            ((v - lo) / span).clamp(0.0, 1.0)
-        };
-        let c = match colormap {
-            PngColormap::Viridis => colorous::VIRIDIS.eval_continuous(t),
-            PngColormap::Greys => {
-                let g = (t * 255.0).round() as u8;
-                colorous::Color { r: g, g, b: g }
-            }
-        };
-        rgb.extend_from_slice(&[c.r, c.g, c.b]);
-    }
-    let mut out = Vec::new();
-    {
-        let mut enc = png::Encoder::new(&mut out, width as u32, height as u32);
-        enc.set_color(png::ColorType::Rgb);
-        enc.set_depth(png::BitDepth::Eight);
-        for (k, v) in text {
-            enc.add_text_chunk(k.to_string(), v.clone())
-                .map_err(|e| ExportError::Png {
-                    path: String::new(),
-                    message: e.to_string(),
-                })?;
-        }
-        let mut w = enc.write_header().map_err(|e| ExportError::Png {
-            path: String::new(),
-            message: e.to_string(),
-        })?;
-        w.write_image_data(&rgb).map_err(|e| ExportError::Png {
-            path: String::new(),
-            message: e.to_string(),
-        })?;
-    }
-    Ok(out)
+    let rgb = crate::model::colorize(values, lo, hi, colormap);
+    let text: Vec<(String, String)> = text
+        .iter()
+        .map(|(k, v)| (k.to_string(), v.clone()))
+        .collect();
+    encode::png_rgb(width as u32, height as u32, &rgb, &text)
 }
 
 /// Reverses the row order of a `width`-wide row-major image: images stored with row 0 at the

@@ -57,7 +57,12 @@ impl Colormap {
 /// Maps `values` through `colormap`, [lo, hi] → [0, 1] (values outside clamped, NaN to the
 /// first colour; a range with hi ≤ lo is taken as [lo, lo + 1]): 8-bit RGB, three bytes per
 /// value, in the values' order.
-pub fn colorize<T: Copy + Into<f64>>(values: &[T], lo: f64, hi: f64, colormap: Colormap) -> Vec<u8> {
+pub fn colorize<T: Copy + Into<f64>>(
+    values: &[T],
+    lo: f64,
+    hi: f64,
+    colormap: Colormap,
+) -> Vec<u8> {
     let span = if hi > lo { hi - lo } else { 1.0 };
     let mut rgb = Vec::with_capacity(values.len() * 3);
     for &v in values {
@@ -72,10 +77,21 @@ mod tests {
 
     #[test]
     fn ends_nan_and_clamping() {
-        let rgb = colorize(&[0.0f32, 1.0, 0.5, f32::NAN, 7.0], 0.0, 1.0, Colormap::Greys);
-        assert_eq!(rgb, vec![0, 0, 0, 255, 255, 255, 128, 128, 128, 0, 0, 0, 255, 255, 255]);
+        let rgb = colorize(
+            &[0.0f32, 1.0, 0.5, f32::NAN, 7.0],
+            0.0,
+            1.0,
+            Colormap::Greys,
+        );
+        assert_eq!(
+            rgb,
+            vec![0, 0, 0, 255, 255, 255, 128, 128, 128, 0, 0, 0, 255, 255, 255]
+        );
         assert_eq!(Colormap::Viridis.eval(0.0), [68, 1, 84]);
-        assert_eq!(Colormap::Viridis.lut()[255][..3], Colormap::Viridis.eval(1.0));
+        assert_eq!(
+            Colormap::Viridis.lut()[255][..3],
+            Colormap::Viridis.eval(1.0)
+        );
     }
 
     #[test]

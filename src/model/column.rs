@@ -1,8 +1,8 @@
 //! A column's data as the figures read it.
 
 use super::{
-    ConvergencePoint, ErrorData, PointsData, ReconData, ReferenceData, ResponseData,
-    SpectrumData, TheoremView,
+    ConvergencePoint, ErrorData, PointsData, ReconData, ReferenceData, ResponseData, SpectrumData,
+    TheoremView,
 };
 use std::sync::Arc;
 

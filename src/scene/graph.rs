@@ -23,7 +23,8 @@
 //! makes no key: the node (and its dependents) reports that error instead of running.
 
 use super::compute::{self, JobCtx, Output};
-use super::{ReconMode, Scene};
+use super::{panels, ReconMode, Scene};
+use crate::model::PanelKind;
 use serde::Serialize;
 use std::fmt::Write as _;
 use std::time::Duration;
@@ -214,7 +215,8 @@ pub struct NodeDef {
     /// Display name.
     pub name: &'static str,
     /// Whether a visible panel or an effect that is on asks for this node in column `c`
-    /// (nodes that only feed others say `false`; [`plan`] adds inputs itself).
+    /// (the rule of [`panels::shows`]; nodes that only feed others say `false`; [`plan`]
+    /// adds inputs itself).
     pub shown: fn(&Scene, usize) -> bool,
     /// The input nodes and scene fields of this node in column `c` of the scene.
     pub inputs: fn(&Scene, usize) -> Inputs,
@@ -228,16 +230,12 @@ pub struct NodeDef {
     pub version: u32,
 }
 
-fn recon_on(s: &Scene) -> bool {
-    s.panels.zoneplate && s.effects.reconstruction
-}
-
 /// The node table, indexed by `NodeKind as usize`.
 pub static NODES: [NodeDef; 10] = [
     NodeDef {
         kind: NodeKind::Points,
         name: "points",
-        shown: |s, _| s.panels.pattern,
+        shown: |s, c| panels::shows(s, c, PanelKind::Pattern),
         inputs: |s, c| {
             let col = &s.columns[c];
             match &col.points {
@@ -253,7 +251,7 @@ pub static NODES: [NodeDef; 10] = [
     NodeDef {
         kind: NodeKind::Statistics,
         name: "statistics",
-        shown: |s, _| s.panels.pattern && s.effects.statistics,
+        shown: |s, c| panels::shows(s, c, PanelKind::Pattern) && s.effects.statistics,
         inputs: |_, _| Inputs::new(NodeKind::Statistics, &[NodeKind::Points], ()),
         run: compute::statistics,
         disk_cached: false,
@@ -262,7 +260,7 @@ pub static NODES: [NodeDef; 10] = [
     NodeDef {
         kind: NodeKind::Spectrum,
         name: "spectrum",
-        shown: |s, _| s.panels.spectrum,
+        shown: |s, c| panels::shows(s, c, PanelKind::Spectrum),
         // Realization 0 is the points node's set; realizations r > 0 are generated from the
         // pattern (an imported file has one realization: K does not matter, see `import`).
         inputs: |s, c| {
@@ -297,7 +295,7 @@ pub static NODES: [NodeDef; 10] = [
     NodeDef {
         kind: NodeKind::Reconstruction,
         name: "reconstruction",
-        shown: |s, _| recon_on(s),
+        shown: |s, c| panels::shows(s, c, PanelKind::Reconstruction),
         inputs: |s, c| {
             let col = &s.columns[c];
             let (f, w) = (&s.filter, s.recon.size);
@@ -324,7 +322,7 @@ pub static NODES: [NodeDef; 10] = [
     NodeDef {
         kind: NodeKind::Reference,
         name: "reference",
-        shown: |s, _| recon_on(s) && s.effects.error,
+        shown: |s, c| panels::shows(s, c, PanelKind::Reference),
         inputs: |s, _| Inputs::new(NodeKind::Reference, &[], (&s.signal, s.recon.size)),
         run: compute::reference,
         disk_cached: true,
@@ -334,7 +332,7 @@ pub static NODES: [NodeDef; 10] = [
     NodeDef {
         kind: NodeKind::Error,
         name: "error",
-        shown: |s, _| recon_on(s) && s.effects.error,
+        shown: |s, c| panels::shows(s, c, PanelKind::Error),
         inputs: |_, _| {
             Inputs::new(
                 NodeKind::Error,
@@ -349,7 +347,7 @@ pub static NODES: [NodeDef; 10] = [
     NodeDef {
         kind: NodeKind::Response,
         name: "filter response",
-        shown: |s, _| s.panels.filter,
+        shown: |s, c| panels::shows(s, c, PanelKind::Response),
         inputs: |s, _| Inputs::new(NodeKind::Response, &[], s.filter),
         run: compute::response,
         disk_cached: false,
@@ -358,7 +356,7 @@ pub static NODES: [NodeDef; 10] = [
     NodeDef {
         kind: NodeKind::Convergence,
         name: "convergence",
-        shown: |s, _| s.panels.cost && s.effects.convergence,
+        shown: |s, c| panels::shows(s, c, PanelKind::Convergence),
         inputs: |s, c| {
             let col = &s.columns[c];
             Inputs::new(
@@ -375,7 +373,7 @@ pub static NODES: [NodeDef; 10] = [
         kind: NodeKind::Theorem,
         name: "sampling theorem",
         // Column-independent: keyed by its settings alone, listed for column 0 only.
-        shown: |s, c| s.panels.theorem && c == 0,
+        shown: |s, c| panels::shows(s, c, PanelKind::TheoremSignal),
         inputs: |s, _| Inputs::new(NodeKind::Theorem, &[], s.theorem),
         run: compute::theorem,
         disk_cached: false,

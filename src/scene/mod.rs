@@ -6,9 +6,11 @@
 //! panels need; nothing else is computed.
 
 pub mod compute;
+pub mod figure;
 pub mod graph;
 pub mod import;
 pub mod motion;
+pub mod panels;
 
 pub use import::ImportedPoints;
 pub use motion::Motion;

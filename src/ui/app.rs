@@ -421,7 +421,7 @@ impl SamplescopeApp {
             scene_name: figures::scene_stem(&self.scene_name),
             columns: columns
                 .iter()
-                .map(crate::export::figure::ColumnData::from_results)
+                .map(crate::scene::figure::column_data)
                 .collect(),
             spectrum_range: self
                 .view

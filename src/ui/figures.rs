@@ -8,7 +8,7 @@
 //! written, or the error, in the top bar.
 
 use crate::export::figure::{self, ColumnData, FigureColormap, FigureContext, PanelKind};
-use crate::scene::Scene;
+use crate::scene::{self, Scene};
 use eframe::egui;
 use std::path::{Path, PathBuf};
 use std::sync::mpsc::{channel, Receiver, Sender};
@@ -208,8 +208,8 @@ pub struct Snapshot {
 
 impl Snapshot {
     fn context(&self, column: usize) -> Result<FigureContext, String> {
-        let mut ctx =
-            FigureContext::new(&self.scene, column, &self.scene_name).map_err(|e| e.to_string())?;
+        let mut ctx = scene::figure::context(&self.scene, column, &self.scene_name)
+            .map_err(|e| e.to_string())?;
         ctx.spectrum_range = self.spectrum_range;
         ctx.spectrum_colormap = self.colormap;
         ctx.response_db = self.response_db;
@@ -242,7 +242,7 @@ impl Snapshot {
             (Target::Panel { column, kind }, out) => {
                 let ctx = self.context(column)?;
                 let data = self.data(column)?;
-                if !data.has(kind) {
+                if !figure::figure(kind).has_data(data) {
                     return Err(format!(
                         "{}: no data yet for column {}",
                         kind.name(),
@@ -274,7 +274,7 @@ impl Snapshot {
                 }
             }
             (Target::Column { column }, out) => {
-                let kinds = PanelKind::composite_in(&self.scene, column);
+                let kinds = scene::panels::composite_in(&self.scene, column);
                 let ctx = self.context(column)?;
                 let data = self.data(column)?;
                 match out {
@@ -293,7 +293,7 @@ impl Snapshot {
                 }
             }
             (Target::Comparison, out) => {
-                let kinds = PanelKind::comparison(&self.scene);
+                let kinds = scene::panels::comparison(&self.scene);
                 let mut cols = Vec::with_capacity(self.scene.columns.len());
                 for c in 0..self.scene.columns.len() {
                     cols.push((self.context(c)?, self.data(c)?.clone()));
@@ -528,7 +528,7 @@ mod tests {
         let snapshot = Snapshot {
             scene,
             scene_name: "gui-theorem".into(),
-            columns: results.iter().map(ColumnData::from_results).collect(),
+            columns: results.iter().map(scene::figure::column_data).collect(),
             spectrum_range: None,
             colormap: FigureColormap::Viridis,
             response_db: false,
@@ -565,12 +565,12 @@ mod tests {
             .unwrap()
             .info()
             .clone();
-        let want: u32 = PanelKind::composite_in(&snapshot.scene, 0)
+        let want: u32 = scene::panels::composite_in(&snapshot.scene, 0)
             .iter()
-            .map(|k| k.base_size().0)
+            .map(|&k| figure::base_size(k).0)
             .sum();
         assert_eq!(info.width, want);
-        assert!(want > PanelKind::Pattern.base_size().0 + 3 * 600);
+        assert!(want > figure::base_size(PanelKind::Pattern).0 + 3 * 600);
         written(Request {
             target: Target::Comparison,
             output: Output::Png { scale: 1 },

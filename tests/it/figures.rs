@@ -5,13 +5,13 @@ use samplescope::core::cancel::Cancel;
 use samplescope::core::signal::theorem::TheoremView;
 use samplescope::engine::Evaluator;
 use samplescope::export::figure::{
-    column_png, column_size, comparison_png, comparison_size, panel_csv, panel_file_name,
-    panel_png, panel_rgba, panel_svg, ColumnData, FigureContext, PanelKind, MAX_COMPOSITE_PIXELS,
-    SCALES,
+    base_size, column_png, column_size, comparison_png, comparison_size, figure, panel_csv,
+    panel_file_name, panel_png, panel_rgba, panel_svg, MAX_COMPOSITE_PIXELS, SCALES,
 };
 use samplescope::export::ExportError;
-use samplescope::scene::graph::{ImageData, NodeKind, NodeResult, PointsData};
-use samplescope::scene::Scene;
+use samplescope::model::{ColumnData, FigureContext, ImageData, PanelKind, PointsData};
+use samplescope::scene::graph::{NodeKind, NodeResult};
+use samplescope::scene::{figure as scene_figure, panels, Scene};
 use std::collections::HashMap;
 use std::sync::Arc;
 
@@ -61,8 +61,8 @@ fn columns(scene: &Scene) -> Vec<(FigureContext, ColumnData)> {
         .enumerate()
         .map(|(c, r)| {
             (
-                FigureContext::new(scene, c, "figure-test").unwrap(),
-                ColumnData::from_results(r),
+                scene_figure::context(scene, c, "figure-test").unwrap(),
+                scene_figure::column_data(r),
             )
         })
         .collect()
@@ -103,7 +103,7 @@ fn every_panel_png_decodes_at_base_size_times_scale() {
     let scene = scene();
     let cols = columns(&scene);
     let (ctx, data) = &cols[0];
-    let kinds = PanelKind::available(&scene);
+    let kinds = panels::available(&scene);
     assert_eq!(
         kinds.len(),
         PanelKind::ALL.iter().filter(|k| !k.is_theorem()).count(),
@@ -118,7 +118,7 @@ fn every_panel_png_decodes_at_base_size_times_scale() {
                 "{kind:?} twice"
             );
             let (info, pixels, _) = decode(&bytes);
-            let (bw, bh) = kind.base_size();
+            let (bw, bh) = base_size(kind);
             assert_eq!(
                 (info.width, info.height),
                 (bw * scale, bh * scale),
@@ -292,7 +292,7 @@ fn same_inputs_give_byte_identical_png_and_svg() {
     let scene = quick_scene();
     let a = columns(&scene);
     let b = columns(&scene); // a fresh evaluation of the same scene
-    for kind in PanelKind::available(&scene) {
+    for kind in panels::available(&scene) {
         for ((ca, da), (cb, db)) in a.iter().zip(&b) {
             let pa = panel_png(kind, ca, da, 1).unwrap();
             assert_eq!(pa, panel_png(kind, ca, da, 1).unwrap(), "{kind:?} twice");
@@ -308,7 +308,7 @@ fn same_inputs_give_byte_identical_png_and_svg() {
             );
         }
     }
-    let kinds = PanelKind::composite(&scene);
+    let kinds = panels::composite(&scene);
     assert_eq!(
         comparison_png(&kinds, &a, 1).unwrap(),
         comparison_png(&kinds, &b, 1).unwrap()
@@ -339,7 +339,7 @@ fn scale_out_of_range_is_a_typed_error_naming_the_field_and_range() {
 #[test]
 fn missing_or_empty_data_is_an_error_naming_the_figure() {
     let scene = quick_scene();
-    let ctx = FigureContext::new(&scene, 0, "x").unwrap();
+    let ctx = scene_figure::context(&scene, 0, "x").unwrap();
     let none = ColumnData::default();
     for kind in PanelKind::ALL {
         let e = panel_png(kind, &ctx, &none, 1).unwrap_err();
@@ -361,7 +361,7 @@ fn missing_or_empty_data_is_an_error_naming_the_figure() {
     let e = panel_png(PanelKind::Pattern, &ctx, &empty, 1).unwrap_err();
     assert!(e.to_string().contains("empty"), "{e}");
     assert!(column_png(&[], &ctx, &empty, 1).is_err());
-    assert!(FigureContext::new(&scene, 5, "x").is_err());
+    assert!(scene_figure::context(&scene, 5, "x").is_err());
 }
 
 /// The pixel at the centre of the plotting area of a 480×510 image figure at scale 1
@@ -375,7 +375,7 @@ fn plot_centre(pixels: &[u8]) -> [u8; 3] {
 #[test]
 fn images_and_points_are_drawn_where_their_data_says() {
     let scene = quick_scene();
-    let ctx = FigureContext::new(&scene, 0, "x").unwrap();
+    let ctx = scene_figure::context(&scene, 0, "x").unwrap();
     let mut colours = Vec::new();
     for level in [0.0f32, 1.0] {
         let data = ColumnData {
@@ -422,7 +422,7 @@ fn images_and_points_are_drawn_where_their_data_says() {
 fn composites_put_every_panel_of_every_column_side_by_side() {
     let scene = quick_scene();
     let cols = columns(&scene);
-    let kinds = PanelKind::composite(&scene);
+    let kinds = panels::composite(&scene);
     assert_eq!(
         kinds,
         vec![
@@ -433,7 +433,7 @@ fn composites_put_every_panel_of_every_column_side_by_side() {
             PanelKind::Response
         ]
     );
-    let width: u32 = kinds.iter().map(|k| k.base_size().0).sum();
+    let width: u32 = kinds.iter().map(|&k| base_size(k).0).sum();
     let (ctx, data) = &cols[0];
     let (info, _, text) = decode(&column_png(&kinds, ctx, data, 1).unwrap());
     assert_eq!((info.width, info.height), (width, 510 + 36));
@@ -463,12 +463,12 @@ fn composites_put_every_panel_of_every_column_side_by_side() {
 #[test]
 fn file_names_carry_scene_pattern_n_seed_kind_and_scale() {
     let scene = quick_scene();
-    let ctx = FigureContext::new(&scene, 0, "zone-plate-128-to-512").unwrap();
+    let ctx = scene_figure::context(&scene, 0, "zone-plate-128-to-512").unwrap();
     assert_eq!(
         panel_file_name(PanelKind::Spectrum, &ctx, Some(2), "png"),
         "zone-plate-128-to-512_jitter_n256_seed7_spectrum@2x.png"
     );
-    let ctx = FigureContext::new(&scene, 1, "").unwrap();
+    let ctx = scene_figure::context(&scene, 1, "").unwrap();
     assert_eq!(
         panel_file_name(PanelKind::Raps, &ctx, None, "csv"),
         "figure-test-jitter_random-white-noise_n256_seed3_raps.csv"
@@ -512,32 +512,28 @@ fn theorem_view(data: &ColumnData) -> &TheoremView {
 #[test]
 fn theorem_figures_are_available_for_column_zero_only() {
     let scene = theorem_scene(SINC2);
-    assert_eq!(PanelKind::available(&scene), PanelKind::THEOREM.to_vec());
+    assert_eq!(panels::available(&scene), PanelKind::THEOREM.to_vec());
     // The composites show the three plots of the sampling process, not the transform pair.
     let three = vec![
         PanelKind::TheoremSignal,
         PanelKind::TheoremSpectrum,
         PanelKind::TheoremReconstructed,
     ];
-    assert_eq!(PanelKind::composite(&scene), three);
-    assert_eq!(PanelKind::comparison(&scene), three);
+    assert_eq!(panels::composite(&scene), three);
+    assert_eq!(panels::comparison(&scene), three);
     // With a second column (and the pattern panel), only column 0 has the theorem figures.
     let mut two = quick_scene();
     two.panels.theorem = true;
-    assert!(PanelKind::available_in(&two, 0).contains(&PanelKind::TheoremSpectrum));
-    assert!(!PanelKind::available_in(&two, 1)
-        .iter()
-        .any(|k| k.is_theorem()));
-    assert!(!PanelKind::composite_in(&two, 1)
-        .iter()
-        .any(|k| k.is_theorem()));
-    assert!(!PanelKind::comparison(&two).iter().any(|k| k.is_theorem()));
+    assert!(panels::available_in(&two, 0).contains(&PanelKind::TheoremSpectrum));
+    assert!(!panels::available_in(&two, 1).iter().any(|k| k.is_theorem()));
+    assert!(!panels::composite_in(&two, 1).iter().any(|k| k.is_theorem()));
+    assert!(!panels::comparison(&two).iter().any(|k| k.is_theorem()));
     let cols = columns(&two);
-    assert!(cols[0].1.has(PanelKind::TheoremSignal));
-    assert!(!cols[1].1.has(PanelKind::TheoremSignal));
+    assert!(figure(PanelKind::TheoremSignal).has_data(&cols[0].1));
+    assert!(!figure(PanelKind::TheoremSignal).has_data(&cols[1].1));
     for (c, (_, data)) in cols.iter().enumerate() {
-        for kind in PanelKind::available_in(&two, c) {
-            assert!(data.has(kind), "column {c} lacks {kind:?}");
+        for kind in panels::available_in(&two, c) {
+            assert!(figure(kind).has_data(data), "column {c} lacks {kind:?}");
         }
     }
 }
@@ -567,7 +563,7 @@ fn theorem_figures_decode_at_base_size_times_scale_and_repeat_byte_for_byte() {
                 "{kind:?} re-evaluated"
             );
             let (info, pixels, text) = decode(&bytes);
-            let (bw, bh) = kind.base_size();
+            let (bw, bh) = base_size(kind);
             assert_eq!((info.width, info.height), (bw * scale, bh * scale));
             assert_eq!(bh, 510, "every figure is 510 high");
             assert!(pixels.iter().any(|&p| p < 100), "{kind:?} is blank");
@@ -771,7 +767,7 @@ fn theorem_figures_of_a_line_spectrum_draw_and_export_the_lines() {
     assert!(v.errors.periodic && v.errors.pre_aliasing > 0.0);
     for kind in PanelKind::THEOREM {
         let (info, px, text) = decode(&panel_png(kind, ctx, data, 1).unwrap());
-        assert_eq!(info.width, kind.base_size().0);
+        assert_eq!(info.width, base_size(kind).0);
         assert!(px.iter().any(|&p| p < 100));
         assert!(meta(&text, "pre-aliasing").contains("% of the signal's power"));
     }
@@ -820,7 +816,7 @@ fn missing_theorem_data_is_a_typed_error_naming_the_figure() {
 /// elementary intervals with k = `k`.
 fn four_points(k: Option<u32>) -> (FigureContext, ColumnData) {
     let scene = quick_scene();
-    let mut ctx = FigureContext::new(&scene, 0, "x").unwrap();
+    let mut ctx = scene_figure::context(&scene, 0, "x").unwrap();
     ctx.elementary_k = k;
     let pts = [[0.25, 0.25], [0.75, 0.25], [0.25, 0.75], [0.75, 0.75]];
     let data = ColumnData {
@@ -894,7 +890,7 @@ fn the_net_scene_columns_carry_their_elementary_k_into_the_figures() {
     ))
     .unwrap();
     for (c, want) in [(0, Some(0)), (2, Some(2)), (4, Some(4))] {
-        let ctx = FigureContext::new(&scene, c, "net").unwrap();
+        let ctx = scene_figure::context(&scene, c, "net").unwrap();
         assert_eq!(ctx.elementary_k, want);
     }
 }

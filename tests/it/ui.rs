@@ -185,7 +185,7 @@ fn save_menu_writes_the_panel_figure_with_scene_pattern_n_and_seed_in_its_name()
     let decoder = png::Decoder::new(std::io::Cursor::new(bytes));
     let reader = decoder.read_info().unwrap();
     let (w, h2) = (reader.info().width, reader.info().height);
-    let (bw, bh) = samplescope::export::figure::PanelKind::Pattern.base_size();
+    let (bw, bh) = samplescope::export::figure::base_size(samplescope::model::PanelKind::Pattern);
     assert_eq!((w, h2), (2 * bw, 2 * bh));
     let text: Vec<_> = reader
         .info()

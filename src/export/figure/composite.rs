@@ -1,8 +1,9 @@
 //! Composites: a column's figures side by side, and every column of a scene one row each.
 
+use super::canvas::{crisp_bitmap, ensure_font};
 use super::{
-    check_scale, context_metadata, encode_png, panel_rgb, rgb_to_rgba, ColumnData, FigureContext,
-    PanelKind, Rgb, MAX_COMPOSITE_PIXELS,
+    base_size, check_scale, context_metadata, encode_png, panel_rgb, rgb_to_rgba, ColumnData,
+    FigureContext, PanelKind, Rgb, MAX_COMPOSITE_PIXELS,
 };
 use crate::export::ExportError;
 use plotters::prelude::*;
@@ -13,10 +14,10 @@ const CAPTION_H: u32 = 36;
 const HEADING_H: u32 = 44;
 
 fn size_of_row(kinds: &[PanelKind], scale: u32) -> (u64, u64) {
-    let w: u64 = kinds.iter().map(|k| k.base_size().0 as u64).sum();
+    let w: u64 = kinds.iter().map(|&k| base_size(k).0 as u64).sum();
     let h = kinds
         .iter()
-        .map(|k| k.base_size().1 as u64)
+        .map(|&k| base_size(k).1 as u64)
         .max()
         .unwrap_or(0)
         + CAPTION_H as u64;
@@ -59,7 +60,7 @@ fn caption(
         figure: "composite",
         message: e.to_string(),
     };
-    let root = super::draw::crisp_bitmap(buf, (width, height))?.into_drawing_area();
+    let root = crisp_bitmap(buf, (width, height))?.into_drawing_area();
     let style = ("sans-serif", px)
         .into_font()
         .color(&BLACK)
@@ -128,7 +129,7 @@ fn column_rgb(
     scale: u32,
 ) -> Result<Rgb, ExportError> {
     check_scale(scale)?;
-    super::draw::ensure_font()?;
+    ensure_font()?;
     if kinds.is_empty() {
         return Err(no_panels("column"));
     }
@@ -188,7 +189,7 @@ fn comparison_rgb(
     scale: u32,
 ) -> Result<Rgb, ExportError> {
     check_scale(scale)?;
-    super::draw::ensure_font()?;
+    ensure_font()?;
     if kinds.is_empty() {
         return Err(no_panels("comparison"));
     }

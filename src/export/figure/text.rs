@@ -15,7 +15,7 @@ use plotters_backend::{
 
 /// A backend whose text is drawn with `font` (the family named in a style is ignored: the
 /// figures use one font).
-pub(crate) struct CrispText<B> {
+pub struct CrispText<B> {
     inner: B,
     font: FontRef<'static>,
 }

@@ -1,0 +1,349 @@
+//! Figures for slides: every panel of a column as a PNG, SVG or CSV, drawn on the CPU.
+//!
+//! The figures are drawn with the `plotters` crate (axes, ticks, labels, colour bars) on a
+//! bitmap or into SVG text; nothing here computes: every function takes the plain data the
+//! compute graph already produced ([`ColumnData`], filled from a column's node results by
+//! `scene::figure::column_data`) and a [`FigureContext`] naming the scene, pattern, N, seed,
+//! signal and filter for titles, metadata and file names (`scene::figure::context`). This
+//! module reads [`crate::model`] only, never the scene. The GUI calls these functions on a
+//! background thread with data it already holds; `samplescope render` calls them headless (no
+//! window, no GPU).
+//!
+//! - **One figure per file.** Each [`PanelKind`] has one [`Figure`] (`pattern.rs`,
+//!   `spectrum.rs`, … `theorem_pair.rs`): its base size, title, data check, drawing, CSV and
+//!   metadata. [`figure`] is the one registration list. The frame around every figure (white
+//!   page, title band, bitmap or SVG) and the shared helpers (axes, text, legends, images with
+//!   colour bars) are in `draw.rs`; the shared CSV writers in `csv.rs`.
+//! - **Sizes.** Each figure has a base size ([`Figure::base_size`]); a figure at `scale` s is
+//!   exactly s × base (text, lines, margins and markers scale too). `scale` must lie in
+//!   [`SCALES`] (1..=4). Every figure is 510 pixels high so that figures sit side by side in
+//!   a composite; image and pattern plots are square.
+//! - **Text.** One font, Ubuntu Light (the font egui ships), registered with plotters from
+//!   bytes: the same glyphs on every machine, no system font lookup.
+//! - **Metadata.** PNGs carry tEXt chunks (iTXt for values that are not Latin-1) and SVGs a
+//!   `<title>` and `<desc>`: the figure's title, scene, pattern and its parameters, N, seed,
+//!   signal, filter, scale and `Software: samplescope <version>`. Never timings.
+//! - **Determinism.** The same inputs give byte-identical PNG and SVG: no clocks, no hash
+//!   ordering, nothing random.
+//! - **The 1D sampling theorem.** The `theorem-*` kinds draw the column-independent
+//!   [`TheoremView`](crate::model::TheoremView) (computed for column 0 only, when the scene
+//!   shows the theorem panel): the signal with its samples and reconstruction, the spectrum
+//!   with the replicas, the filter and the Nyquist lines, and the reconstructed spectrum. Their
+//!   titles say what is plotted, a caption line under the plot gives the pre- and
+//!   post-aliasing terms, and their metadata holds the 1D signal, rate, filter and every error
+//!   term instead of the 2D pattern, N and seed (which do not apply to them; nor do their file
+//!   names carry them).
+//! - **Images.** Periodograms and zone-plate images are drawn nearest-neighbour into the
+//!   plotting area of the bitmap; in SVG they are embedded as PNG (`<image>` with a data URI,
+//!   pixelated rendering), at the data's own resolution.
+//!
+//! **Adding a figure** for data a column already has: a [`PanelKind`] variant (with its name,
+//! in `model/panel.rs`), a file here implementing [`Figure`], its line in [`figure`] (and the
+//! `mod` line above it), and the arm of `scene::panels::shows` saying which scene switch shows
+//! it; the compiler points at each of the three matches.
+
+mod canvas;
+mod composite;
+mod convergence;
+mod csv;
+mod draw;
+mod error;
+mod kernel;
+mod pattern;
+mod raps;
+mod reconstruction;
+mod reference;
+mod response;
+mod spectrum;
+mod svg;
+mod text;
+mod theorem;
+mod theorem_pair;
+mod theorem_reconstructed;
+mod theorem_signal;
+mod theorem_spectrum;
+
+use super::ExportError;
+
+pub use crate::model::{
+    sanitize, Colormap as FigureColormap, ColumnData, FigureContext, PanelKind,
+};
+pub use canvas::{Area, Canvas, CanvasError};
+pub use composite::{
+    column_png, column_rgba, column_size, comparison_png, comparison_rgba, comparison_size,
+};
+pub use draw::Frame;
+pub use theorem::theorem_caption;
+
+/// The allowed figure scales (a figure at scale s is s × its base size).
+pub const SCALES: std::ops::RangeInclusive<u32> = 1..=4;
+
+/// Largest composite image, in pixels (a comparison of many columns at a high scale can ask
+/// for more; it is refused with [`ExportError::TooLarge`] rather than allocated).
+pub const MAX_COMPOSITE_PIXELS: u64 = 64 * 1024 * 1024;
+
+/// One figure: everything that differs between the panels' figures. The frame around it
+/// (page, title band, scale, bitmap or SVG, metadata header, file names) is common.
+pub trait Figure: Sync {
+    /// The panel it draws.
+    fn kind(&self) -> PanelKind;
+
+    /// Size at scale 1, in pixels (width, height).
+    fn base_size(&self) -> (u32, u32);
+
+    /// The title (also the `Title` metadata).
+    fn title(&self, ctx: &FigureContext, data: &ColumnData) -> String;
+
+    /// Whether the data it draws was computed (it may still be empty: see [`Figure::check`]).
+    fn has_data(&self, data: &ColumnData) -> bool;
+
+    /// Refuses missing or empty data before anything is drawn.
+    fn check(&self, data: &ColumnData) -> Result<(), ExportError>;
+
+    /// Draws everything under the title band into `body`; [`Figure::check`] has passed.
+    fn draw(&self, frame: &mut Frame<'_, '_>, body: &Area<'_>) -> Result<(), ExportError>;
+
+    /// The data it draws as CSV (see [`panel_csv`] for the columns of each figure).
+    fn csv(&self, data: &ColumnData) -> Result<String, ExportError>;
+
+    /// Its metadata after `Title`, `Software` and `figure` and before `scale`: by default the
+    /// scene, column, pattern, N, seed, signal, filter and reconstruction of the context.
+    fn metadata(&self, ctx: &FigureContext, _data: &ColumnData) -> Vec<(String, String)> {
+        context_metadata(ctx)
+    }
+}
+
+/// The figure of `kind`: the one registration list.
+pub fn figure(kind: PanelKind) -> &'static dyn Figure {
+    match kind {
+        PanelKind::Pattern => &pattern::Pattern,
+        PanelKind::Spectrum => &spectrum::Spectrum,
+        PanelKind::Raps => &raps::Raps,
+        PanelKind::Reconstruction => &reconstruction::Reconstruction,
+        PanelKind::Reference => &reference::Reference,
+        PanelKind::Error => &error::Error,
+        PanelKind::Kernel => &kernel::Kernel,
+        PanelKind::Response => &response::Response,
+        PanelKind::Convergence => &convergence::Convergence,
+        PanelKind::TheoremSignal => &theorem_signal::TheoremSignal,
+        PanelKind::TheoremSpectrum => &theorem_spectrum::TheoremSpectrum,
+        PanelKind::TheoremReconstructed => &theorem_reconstructed::TheoremReconstructed,
+        PanelKind::TheoremPair => &theorem_pair::TheoremPair,
+    }
+}
+
+/// Size of figure `kind` at scale 1, in pixels (width, height).
+pub fn base_size(kind: PanelKind) -> (u32, u32) {
+    figure(kind).base_size()
+}
+
+/// Checks a figure scale against [`SCALES`].
+pub fn check_scale(scale: u32) -> Result<(), ExportError> {
+    if SCALES.contains(&scale) {
+        Ok(())
+    } else {
+        Err(ExportError::OutOfRange {
+            field: "scale",
+            value: scale as i64,
+            min: *SCALES.start() as i64,
+            max: *SCALES.end() as i64,
+        })
+    }
+}
+
+/// An 8-bit RGB image, row 0 at the top.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct Rgb {
+    pub width: u32,
+    pub height: u32,
+    pub data: Vec<u8>,
+}
+
+/// The figure's title (also its `Title` metadata).
+pub fn figure_title(kind: PanelKind, ctx: &FigureContext, data: &ColumnData) -> String {
+    figure(kind).title(ctx, data)
+}
+
+/// The metadata of a figure, in a fixed order: (keyword, value).
+pub fn metadata(
+    kind: PanelKind,
+    ctx: &FigureContext,
+    data: &ColumnData,
+    scale: u32,
+) -> Vec<(String, String)> {
+    let f = figure(kind);
+    let mut m = vec![
+        ("Title".to_string(), f.title(ctx, data)),
+        (
+            "Software".to_string(),
+            format!("samplescope {}", env!("CARGO_PKG_VERSION")),
+        ),
+        ("figure".to_string(), kind.name().to_string()),
+    ];
+    m.extend(f.metadata(ctx, data));
+    m.push(("scale".into(), scale.to_string()));
+    m
+}
+
+/// The scene, column, pattern, N, seed, signal and filter of a context as metadata.
+fn context_metadata(ctx: &FigureContext) -> Vec<(String, String)> {
+    vec![
+        ("scene".into(), ctx.scene_title.clone()),
+        ("column".into(), ctx.column_title.clone()),
+        ("pattern".into(), ctx.pattern.clone()),
+        ("pattern parameters".into(), ctx.pattern_params.clone()),
+        ("N".into(), ctx.n.to_string()),
+        ("seed".into(), ctx.seed.to_string()),
+        ("signal".into(), ctx.signal.clone()),
+        ("filter".into(), ctx.filter.clone()),
+        ("reconstruction".into(), ctx.recon.clone()),
+    ]
+}
+
+/// Draws `kind` into an RGB bitmap of exactly its base size × `scale`.
+pub(crate) fn panel_rgb(
+    kind: PanelKind,
+    ctx: &FigureContext,
+    data: &ColumnData,
+    scale: u32,
+) -> Result<Rgb, ExportError> {
+    check_scale(scale)?;
+    draw::render_bitmap(figure(kind), ctx, data, scale)
+}
+
+/// The figure `kind` as PNG bytes (8-bit RGB, its base size × `scale`), with the
+/// [`metadata`] as text chunks.
+pub fn panel_png(
+    kind: PanelKind,
+    ctx: &FigureContext,
+    data: &ColumnData,
+    scale: u32,
+) -> Result<Vec<u8>, ExportError> {
+    let img = panel_rgb(kind, ctx, data, scale)?;
+    encode_png(&img, &metadata(kind, ctx, data, scale))
+}
+
+/// The figure `kind` as (width, height, RGBA8 bytes, row 0 at the top), for the clipboard.
+pub fn panel_rgba(
+    kind: PanelKind,
+    ctx: &FigureContext,
+    data: &ColumnData,
+    scale: u32,
+) -> Result<(u32, u32, Vec<u8>), ExportError> {
+    let img = panel_rgb(kind, ctx, data, scale)?;
+    Ok((img.width, img.height, rgb_to_rgba(&img.data)))
+}
+
+/// The figure `kind` as SVG text (its base size × `scale` user units), with the [`metadata`]
+/// as `<title>` and `<desc>`; images are embedded as PNG.
+pub fn panel_svg(
+    kind: PanelKind,
+    ctx: &FigureContext,
+    data: &ColumnData,
+    scale: u32,
+) -> Result<String, ExportError> {
+    check_scale(scale)?;
+    let (text, images) = draw::render_svg(figure(kind), ctx, data, scale)?;
+    svg::finish(text, &images, &metadata(kind, ctx, data, scale))
+}
+
+/// The data drawn by figure `kind` as CSV (round-trip precision):
+///
+/// | kind | columns |
+/// |---|---|
+/// | pattern | `x,y` |
+/// | spectrum | `kx,ky,log10_power` (the displayed image: ky ascending, then kx; a masked DC holds the mean of its 8 neighbours) |
+/// | raps | `radius,power` |
+/// | reconstruction, reference, error | one image row per line, top row first, no header |
+/// | kernel | `x,h` |
+/// | response | `omega,magnitude` (|H(ω)|/|H(0)|, linear) |
+/// | convergence | `spp,rmse` |
+/// | theorem-signal | `series,x,value`: series `f` (the signal), `sample` (f(nT) at x = nT), `f_r` (the reconstruction) |
+/// | theorem-spectrum | `series,omega,magnitude`: `F` (\|F\|), `replica_k` (\|F(ω − k f_s)\|, k = −3..3, k ≠ 0), `G` (\|G\|); line spectra: `line_k` (the lines of replica k, k = 0 the signal's) and `G` |
+/// | theorem-reconstructed | `series,omega,magnitude`: `F` and `F_r`; line spectra: `F_line` and `F_r_line` |
+/// | theorem-pair | `series,position,value`: `p` (x, p(x)), `abs_P`, `re_P`, `im_P` (ω, …); the shah: `impulse_x` (x, weight), `impulse_re`, `impulse_im` (ω, Re and Im of the weight) |
+pub fn panel_csv(
+    kind: PanelKind,
+    _ctx: &FigureContext,
+    data: &ColumnData,
+) -> Result<String, ExportError> {
+    figure(kind).csv(data)
+}
+
+/// The file name of figure `kind` of a column:
+/// `{scene}_{column}_n{N}_seed{S}_{kind}[@{scale}x][.{ext}]`, every part sanitised
+/// (`scale` is given for PNG and SVG, `None` for CSV; an empty `ext` gives no extension).
+/// The theorem figures, which depend on no column, are `{scene}_{kind}[@{scale}x][.{ext}]`.
+pub fn panel_file_name(
+    kind: PanelKind,
+    ctx: &FigureContext,
+    scale: Option<u32>,
+    ext: &str,
+) -> String {
+    let s = scale.map(|s| format!("@{s}x")).unwrap_or_default();
+    let ext = if ext.trim().is_empty() {
+        String::new()
+    } else {
+        format!(".{}", sanitize(ext))
+    };
+    if kind.is_theorem() {
+        return format!("{}_{}{s}{ext}", ctx.scene_name, kind.name());
+    }
+    format!(
+        "{}_{}_n{}_seed{}_{}{s}{ext}",
+        ctx.scene_name,
+        ctx.column_slug,
+        ctx.n,
+        ctx.seed,
+        kind.name(),
+    )
+}
+
+/// The file name of a column composite: `{scene}_{column}_n{N}_seed{S}_column@{scale}x.png`.
+pub fn column_file_name(ctx: &FigureContext, scale: u32) -> String {
+    format!(
+        "{}_{}_n{}_seed{}_column@{scale}x.png",
+        ctx.scene_name, ctx.column_slug, ctx.n, ctx.seed
+    )
+}
+
+/// The file name of the comparison of every column: `{scene}_n{N}_comparison@{scale}x.png`.
+pub fn comparison_file_name(scene_name: &str, n: usize, scale: u32) -> String {
+    format!("{}_n{n}_comparison@{scale}x.png", sanitize(scene_name))
+}
+
+fn rgb_to_rgba(rgb: &[u8]) -> Vec<u8> {
+    let mut out = Vec::with_capacity(rgb.len() / 3 * 4);
+    for p in rgb.chunks_exact(3) {
+        out.extend_from_slice(&[p[0], p[1], p[2], 255]);
+    }
+    out
+}
+
+/// Encodes an RGB image as PNG with `text` as tEXt chunks (iTXt for values that are not
+/// Latin-1).
+fn encode_png(img: &Rgb, text: &[(String, String)]) -> Result<Vec<u8>, ExportError> {
+    super::encode::png_rgb(img.width, img.height, &img.data, text)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn scale_outside_the_range_names_the_field() {
+        assert!(check_scale(1).is_ok() && check_scale(4).is_ok());
+        let e = check_scale(0).unwrap_err().to_string();
+        assert!(e.contains("scale = 0") && e.contains("1..=4"), "{e}");
+        assert!(check_scale(9).is_err());
+    }
+
+    #[test]
+    fn every_kind_has_its_own_figure() {
+        for kind in PanelKind::ALL {
+            assert_eq!(figure(kind).kind(), kind);
+            let (_, h) = base_size(kind);
+            assert_eq!(h, 510, "{kind:?}: figures sit side by side in a composite");
+        }
+    }
+}

@@ -1,0 +1,76 @@
+//! The radially averaged power spectrum against the white-noise level.
+
+use super::csv::curve;
+use super::draw::{
+    any_finite, axes, chart, draw_err, empty, finite, legend_box, line_sample, padded, present,
+    Frame, DATA, GUIDE,
+};
+use super::{Area, Figure};
+use crate::export::ExportError;
+use crate::model::{ColumnData, FigureContext, PanelKind};
+use plotters::prelude::*;
+
+/// The RAPS figure.
+pub(super) struct Raps;
+
+const KIND: PanelKind = PanelKind::Raps;
+
+impl Figure for Raps {
+    fn kind(&self) -> PanelKind {
+        KIND
+    }
+
+    fn base_size(&self) -> (u32, u32) {
+        (640, 510)
+    }
+
+    fn title(&self, ctx: &FigureContext, _data: &ColumnData) -> String {
+        format!("RAPS, {}", ctx.column_caption())
+    }
+
+    fn has_data(&self, data: &ColumnData) -> bool {
+        data.spectrum.is_some()
+    }
+
+    fn check(&self, data: &ColumnData) -> Result<(), ExportError> {
+        let s = present(KIND, data.spectrum.as_ref())?;
+        if !any_finite(&s.raps) {
+            return Err(empty(KIND, "the radial average has no finite bin"));
+        }
+        Ok(())
+    }
+
+    fn draw(&self, f: &mut Frame<'_, '_>, body: &Area<'_>) -> Result<(), ExportError> {
+        let de = |e| draw_err(KIND, e);
+        let look = f.look;
+        let pts = finite(&present(KIND, f.data.spectrum.as_ref())?.raps);
+        let x_hi = pts.iter().map(|p| p.0).fold(0.0f64, f64::max).max(1.0);
+        let y = padded(pts.iter().map(|p| p.1), &[0.0, 1.0]);
+        let mut ch = chart(body, 0.0..x_hi, y.start.max(0.0)..y.end, look, KIND)?;
+        axes(
+            &mut ch,
+            "|k| (cycles per unit)",
+            "RAPS  P",
+            true,
+            false,
+            look,
+            KIND,
+        )?;
+        let guide = look.line(GUIDE, 1);
+        ch.draw_series(LineSeries::new([(0.0, 1.0), (x_hi, 1.0)], guide))
+            .map_err(de)?
+            .label("white noise, P = 1")
+            .legend(line_sample(guide, look));
+        let line = look.line(DATA, 2);
+        ch.draw_series(LineSeries::new(pts, line))
+            .map_err(de)?
+            .label("RAPS")
+            .legend(line_sample(line, look));
+        legend_box(&mut ch, SeriesLabelPosition::LowerRight, look, KIND)
+    }
+
+    fn csv(&self, data: &ColumnData) -> Result<String, ExportError> {
+        let s = present(KIND, data.spectrum.as_ref())?;
+        curve("radius,power", &s.raps, KIND)
+    }
+}

@@ -1,0 +1,122 @@
+//! What the four figures of the 1D sampling theorem share: the view they draw, their data
+//! check, titles, caption line and metadata.
+
+use super::draw::{empty, present};
+use crate::export::ExportError;
+use crate::model::{ColumnData, FigureContext, PanelKind, TheoremView};
+
+/// The theorem view of `data`, or the error that it was not computed.
+pub(super) fn view(kind: PanelKind, data: &ColumnData) -> Result<&TheoremView, ExportError> {
+    present(kind, data.theorem.as_deref())
+}
+
+/// Refuses a missing view, one whose curves `has_curves` finds nothing to draw in, and a
+/// sampling rate that is not positive.
+pub(super) fn check(
+    kind: PanelKind,
+    data: &ColumnData,
+    has_curves: impl Fn(&TheoremView) -> bool,
+) -> Result<(), ExportError> {
+    let v = view(kind, data)?;
+    if !has_curves(v) {
+        return Err(empty(kind, "the curves have no finite point"));
+    }
+    if !(v.settings.rate.is_finite() && v.settings.rate > 0.0) {
+        return Err(empty(kind, "the sampling rate is not positive"));
+    }
+    Ok(())
+}
+
+/// "`what`: signal (params), f_s = …, filter" (`what` alone without a view).
+pub(super) fn title(what: &str, data: &ColumnData) -> String {
+    match &data.theorem {
+        Some(v) => format!("{what}: {}", setup(v)),
+        None => what.to_string(),
+    }
+}
+
+/// "signal (params), f_s = …, filter": the theorem view's settings in words.
+fn setup(v: &TheoremView) -> String {
+    let s = &v.settings;
+    let params = s
+        .signal
+        .params()
+        .iter()
+        .map(|(n, x, _)| format!("{n} {x}"))
+        .collect::<Vec<_>>()
+        .join(", ");
+    format!(
+        "{} ({params}), f_s = {}, {} filter",
+        s.signal.name(),
+        s.rate,
+        s.filter.name()
+    )
+}
+
+/// The caption line under the theorem figures: the pre- and post-aliasing terms, absolute
+/// and relative to the signal's energy (power, for periodic signals).
+pub fn theorem_caption(v: &TheoremView) -> String {
+    let e = &v.errors;
+    let unit = if e.periodic { "power" } else { "energy" };
+    format!(
+        "pre-aliasing {:.3e} ({:.3} % of {unit}) · post-aliasing {:.3e} ({:.3} %) · Nyquist f_s/2 = {}",
+        e.pre_aliasing,
+        100.0 * e.relative(e.pre_aliasing),
+        e.post_aliasing,
+        100.0 * e.relative(e.post_aliasing),
+        0.5 * v.settings.rate
+    )
+}
+
+/// The scene, then the theorem view's settings and error terms, as metadata (the 2D
+/// pattern, N and seed do not apply).
+pub(super) fn metadata(ctx: &FigureContext, data: &ColumnData) -> Vec<(String, String)> {
+    let mut m = vec![("scene".to_string(), ctx.scene_title.clone())];
+    let Some(v) = &data.theorem else {
+        return m;
+    };
+    let s = &v.settings;
+    let e = &v.errors;
+    let unit = if e.periodic { "power" } else { "energy" };
+    let term = |name: &str, x: f64| {
+        (
+            name.to_string(),
+            format!("{x:e} ({} % of the signal's {unit})", 100.0 * e.relative(x)),
+        )
+    };
+    m.extend([
+        (
+            "signal".into(),
+            ron::to_string(&s.signal).unwrap_or_else(|_| s.signal.name().into()),
+        ),
+        (
+            "sampling rate".into(),
+            format!("{} samples per unit", s.rate),
+        ),
+        (
+            "filter".into(),
+            ron::to_string(&s.filter).unwrap_or_else(|_| s.filter.name().into()),
+        ),
+        ("extent".into(), format!("x in [-{0}, {0}]", s.extent)),
+        (
+            "transform pair".into(),
+            format!(
+                "{}, a = {}, s = {}",
+                s.pair.kind.name(),
+                s.pair.scale,
+                s.pair.shift
+            ),
+        ),
+        (format!("signal {unit}"), format!("{:e}", e.signal_energy)),
+        term("pre-aliasing", e.pre_aliasing),
+        term("post-aliasing", e.post_aliasing),
+        term("smoothing", e.smoothing),
+        term("lost above Nyquist", e.lost),
+        term("total error", e.total),
+        (
+            "error band".into(),
+            format!("|omega| <= {}, tail <= {:e}", e.band, e.tail_bound),
+        ),
+    ]);
+    m
+}

@@ -1,0 +1,175 @@
+//! From a scene to what its figures say and draw: the [`FigureContext`] of a column (titles,
+//! metadata and file names as plain strings) and a column's [`ColumnData`] (its node results).
+//! Which figures a column has is [`super::panels`]' rule.
+
+use super::graph::{NodeKind, NodeResult};
+use super::{ReconMode, Scene};
+use crate::model::{sanitize, Colormap, ColumnData, FigureContext};
+use std::collections::HashMap;
+
+/// What names the "pattern" of a column whose points were imported from a file.
+const IMPORTED: &str = "imported";
+
+/// A column index the scene does not have.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[error("column = {column}: must be an integer in 0..={}", *.columns as i64 - 1)]
+pub struct NoSuchColumn {
+    /// The index asked for.
+    pub column: usize,
+    /// How many columns the scene has.
+    pub columns: usize,
+}
+
+/// The figure context of column `column` of `scene`; `scene_name` names the scene in file
+/// names (its file stem; the title is used when empty). The display choices start at what
+/// the GUI first shows: the data's own colour range, viridis, linear |H|, the column's own
+/// elementary intervals.
+pub fn context(
+    scene: &Scene,
+    column: usize,
+    scene_name: &str,
+) -> Result<FigureContext, NoSuchColumn> {
+    let col = scene.columns.get(column).ok_or(NoSuchColumn {
+        column,
+        columns: scene.columns.len(),
+    })?;
+    let slugs = column_slugs(scene);
+    let (pattern, pattern_params) = match &col.points {
+        Some(p) => (
+            IMPORTED.to_string(),
+            format!("file={} normalize={}", p.label(), p.normalize),
+        ),
+        None => (
+            col.pattern.name().to_string(),
+            col.pattern
+                .specs()
+                .iter()
+                .filter_map(|s| col.pattern.get(s.name).map(|v| format!("{}={v}", s.name)))
+                .collect::<Vec<_>>()
+                .join(" "),
+        ),
+    };
+    let recon = match scene.recon.mode {
+        ReconMode::Scattered => "scattered".to_string(),
+        ReconMode::Supersample { spp } => format!("supersample {spp} spp"),
+        ReconMode::Resample { grid } => format!("resample {grid}² grid"),
+    };
+    let name = if scene_name.trim().is_empty() {
+        &scene.title
+    } else {
+        scene_name
+    };
+    Ok(FigureContext {
+        scene_title: scene.title.clone(),
+        scene_name: sanitize(name),
+        column,
+        column_title: col.title(),
+        column_slug: slugs[column].clone(),
+        pattern,
+        pattern_params,
+        n: scene.n,
+        seed: col.seed,
+        signal: ron::to_string(&scene.signal).unwrap_or_else(|_| scene.signal.name().into()),
+        filter: ron::to_string(&scene.filter).unwrap_or_else(|_| scene.filter.filter.name().into()),
+        recon: format!("{recon}, {}²", scene.recon.size),
+        spectrum_range: None,
+        spectrum_colormap: Colormap::Viridis,
+        response_db: false,
+        elementary_k: col.elementary_k,
+    })
+}
+
+/// Picks the successful node values out of a column's results (the GUI's `ColumnResults`,
+/// or what `Evaluator::evaluate` sent for the column).
+pub fn column_data<R: AsRef<NodeResult>>(results: &HashMap<NodeKind, R>) -> ColumnData {
+    use super::graph::NodeValue;
+    let mut d = ColumnData::default();
+    for r in results.values() {
+        match &r.as_ref().value {
+            Ok(NodeValue::Points(v)) => d.points = Some(v.clone()),
+            Ok(NodeValue::Spectrum(v)) => d.spectrum = Some(v.clone()),
+            Ok(NodeValue::Reconstruction(v)) => d.reconstruction = Some(v.clone()),
+            Ok(NodeValue::Reference(v)) => d.reference = Some(v.clone()),
+            Ok(NodeValue::Error(v)) => d.error = Some(v.clone()),
+            Ok(NodeValue::Response(v)) => d.response = Some(v.clone()),
+            Ok(NodeValue::Convergence(v)) => d.convergence = Some(v.clone()),
+            Ok(NodeValue::Theorem(v)) => d.theorem = Some(v.clone()),
+            // Values no figure draws (statistics, samples, …) and failed nodes.
+            _ => {}
+        }
+    }
+    d
+}
+
+/// Unique file-name parts for the columns of a scene.
+fn column_slugs(scene: &Scene) -> Vec<String> {
+    let base: Vec<String> = scene
+        .columns
+        .iter()
+        .map(|c| {
+            let name = sanitize(if c.points.is_some() {
+                IMPORTED
+            } else {
+                c.pattern.name()
+            });
+            let label = sanitize(&c.title());
+            if label == name {
+                name
+            } else {
+                format!("{name}-{label}")
+            }
+        })
+        .collect();
+    base.iter()
+        .enumerate()
+        .map(|(i, s)| {
+            if base.iter().filter(|t| *t == s).count() > 1 {
+                format!("{s}-c{}", i + 1)
+            } else {
+                s.clone()
+            }
+        })
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn column_slugs_are_unique_within_a_scene() {
+        let mut scene = Scene {
+            columns: vec![Default::default(), Default::default()],
+            ..Default::default()
+        };
+        scene.columns[1].label = "jitter".into();
+        assert_eq!(column_slugs(&scene), vec!["jitter-c1", "jitter-c2"]);
+        scene.columns[1].label = "p1 = 3".into();
+        assert_eq!(column_slugs(&scene), vec!["jitter", "jitter-p1-3"]);
+    }
+
+    #[test]
+    fn imported_columns_are_named_by_their_file() {
+        let text = r#"(title: "x", n: 2, columns: [
+            (points: Some((path: "", points: [(0.5, 0.5), (0.25, 0.75)]))),
+            (pattern: (kind: "random")),
+        ])"#;
+        let scene = Scene::from_ron(text, "imported.ron").unwrap();
+        let ctx = context(&scene, 0, "imp").unwrap();
+        assert_eq!(ctx.pattern, "imported");
+        assert_eq!(ctx.pattern_params, "file=inline points normalize=false");
+        assert!(
+            ctx.column_slug.starts_with("imported"),
+            "{}",
+            ctx.column_slug
+        );
+        assert_eq!(context(&scene, 1, "imp").unwrap().pattern, "random");
+    }
+
+    #[test]
+    fn a_column_the_scene_lacks_names_the_range() {
+        let scene = Scene::default();
+        let e = context(&scene, 3, "x").unwrap_err().to_string();
+        assert_eq!(e, "column = 3: must be an integer in 0..=0");
+    }
+}

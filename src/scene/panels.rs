@@ -1,0 +1,95 @@
+//! The one rule for what a scene shows: which [`PanelKind`]s each column has. The node table's
+//! `shown` rules ([`super::graph::NODES`]) ask it which nodes the visible panels need,
+//! `samplescope render` writes exactly these figures, and the GUI saves its composites from
+//! the same lists.
+
+use super::Scene;
+use crate::model::PanelKind;
+
+/// Whether column `column` of `scene` shows `kind`: its panel is visible and the effects it
+/// draws are on. The theorem's figures belong to column 0 only (the view does not depend on
+/// the column).
+pub fn shows(scene: &Scene, column: usize, kind: PanelKind) -> bool {
+    let p = scene.panels;
+    let fx = scene.effects;
+    let recon = p.zoneplate && fx.reconstruction;
+    match kind {
+        PanelKind::Pattern => p.pattern,
+        PanelKind::Spectrum | PanelKind::Raps => p.spectrum,
+        PanelKind::Reconstruction => recon,
+        PanelKind::Reference | PanelKind::Error => recon && fx.error,
+        PanelKind::Kernel | PanelKind::Response => p.filter,
+        PanelKind::Convergence => p.cost && fx.convergence,
+        PanelKind::TheoremSignal
+        | PanelKind::TheoremSpectrum
+        | PanelKind::TheoremReconstructed
+        | PanelKind::TheoremPair => p.theorem && column == 0,
+    }
+}
+
+/// The figures column `column` has, in [`PanelKind::ALL`] order: what `render` writes for it.
+pub fn available_in(scene: &Scene, column: usize) -> Vec<PanelKind> {
+    PanelKind::ALL
+        .into_iter()
+        .filter(|&k| shows(scene, column, k))
+        .collect()
+}
+
+/// The figures the scene computes (those of column 0, the theorem's included).
+pub fn available(scene: &Scene) -> Vec<PanelKind> {
+    available_in(scene, 0)
+}
+
+/// The figures of column `column`'s composite: the [`PanelKind::COMPOSITE`] kinds it shows.
+pub fn composite_in(scene: &Scene, column: usize) -> Vec<PanelKind> {
+    PanelKind::COMPOSITE
+        .into_iter()
+        .filter(|&k| shows(scene, column, k))
+        .collect()
+}
+
+/// The figures of a column composite of the scene (column 0's, the theorem's included).
+pub fn composite(scene: &Scene) -> Vec<PanelKind> {
+    composite_in(scene, 0)
+}
+
+/// The figures of the comparison (every column one row, the same figures in each): the
+/// composite figures every column has, so the theorem figures only when the scene has a
+/// single column.
+pub fn comparison(scene: &Scene) -> Vec<PanelKind> {
+    let mut kinds = composite(scene);
+    kinds.retain(|k| scene.columns.len() == 1 || !k.is_theorem());
+    kinds
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn theorem_figures_belong_to_column_zero_and_single_column_comparisons() {
+        let mut scene = Scene {
+            columns: vec![Default::default(), Default::default()],
+            ..Default::default()
+        };
+        scene.panels.theorem = true;
+        assert!(available_in(&scene, 0).contains(&PanelKind::TheoremPair));
+        assert!(!available_in(&scene, 1).iter().any(|k| k.is_theorem()));
+        assert!(composite_in(&scene, 0).contains(&PanelKind::TheoremSignal));
+        assert!(!composite(&scene).contains(&PanelKind::TheoremPair));
+        assert!(!comparison(&scene).iter().any(|k| k.is_theorem()));
+        scene.columns.truncate(1);
+        assert!(comparison(&scene).contains(&PanelKind::TheoremSpectrum));
+    }
+
+    #[test]
+    fn error_figures_need_the_reconstruction_and_error_effects() {
+        let mut scene = Scene::default();
+        assert!(shows(&scene, 0, PanelKind::Error));
+        scene.effects.error = false;
+        assert!(shows(&scene, 0, PanelKind::Reconstruction));
+        assert!(!shows(&scene, 0, PanelKind::Reference));
+        scene.effects.reconstruction = false;
+        assert!(!shows(&scene, 0, PanelKind::Reconstruction));
+    }
+}
