@@ -427,7 +427,7 @@ impl SamplescopeApp {
                 .view
                 .lock_scales
                 .then_some((self.view.spectrum_lo, self.view.spectrum_hi)),
-            colormap: figures::figure_colormap(self.view.colormap),
+            colormap: self.view.colormap,
             response_db: self.view.response_db,
             elementary_k: self.view.elementary_k,
         }

@@ -7,7 +7,8 @@
 //! [`FigureRequests`]); the app renders requests on a background thread and reports each file
 //! written, or the error, in the top bar.
 
-use crate::export::figure::{self, ColumnData, FigureColormap, FigureContext, PanelKind};
+use crate::export::figure;
+use crate::model::{Colormap, ColumnData, FigureContext, PanelKind};
 use crate::scene::{self, Scene};
 use eframe::egui;
 use std::path::{Path, PathBuf};
@@ -199,7 +200,7 @@ pub struct Snapshot {
     pub scene_name: String,
     pub columns: Vec<ColumnData>,
     pub spectrum_range: Option<(f32, f32)>,
-    pub colormap: FigureColormap,
+    pub colormap: Colormap,
     pub response_db: bool,
     /// The shared elementary-interval overlay of the pattern panels (a column's own
     /// `elementary_k` takes precedence, as on screen).
@@ -414,15 +415,6 @@ impl Saver {
     }
 }
 
-/// The figure colour map matching the GUI's.
-pub fn figure_colormap(c: super::gpu::Colormap) -> FigureColormap {
-    match c {
-        super::gpu::Colormap::Viridis => FigureColormap::Viridis,
-        super::gpu::Colormap::Inferno => FigureColormap::Inferno,
-        super::gpu::Colormap::Greys => FigureColormap::Greys,
-    }
-}
-
 /// The short scene name used in file names: the file stem of a path or built-in name.
 pub fn scene_stem(name: &str) -> String {
     Path::new(name)
@@ -449,7 +441,7 @@ mod tests {
             scene_name: "bad".into(),
             columns: vec![ColumnData::default()],
             spectrum_range: None,
-            colormap: FigureColormap::Viridis,
+            colormap: Colormap::Viridis,
             response_db: false,
             elementary_k: None,
         };
@@ -503,7 +495,7 @@ mod tests {
             scene_name: "overlay".into(),
             columns: Vec::new(),
             spectrum_range: None,
-            colormap: FigureColormap::Viridis,
+            colormap: Colormap::Viridis,
             response_db: false,
             elementary_k: Some(1),
         };
@@ -530,7 +522,7 @@ mod tests {
             scene_name: "gui-theorem".into(),
             columns: results.iter().map(scene::figure::column_data).collect(),
             spectrum_range: None,
-            colormap: FigureColormap::Viridis,
+            colormap: Colormap::Viridis,
             response_db: false,
             elementary_k: None,
         };

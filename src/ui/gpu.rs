@@ -10,49 +10,8 @@ use eframe::egui_wgpu::{self, wgpu};
 use std::collections::HashMap;
 use std::sync::Arc;
 
-/// Colour maps available for float images.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, serde::Serialize, serde::Deserialize)]
-pub enum Colormap {
-    /// Perceptually uniform (matplotlib's viridis).
-    #[default]
-    Viridis,
-    /// Perceptually uniform, high contrast (inferno).
-    Inferno,
-    /// Grey ramp, for images of signals.
-    Greys,
-}
-
-impl Colormap {
-    /// Every colour map.
-    pub const ALL: [Colormap; 3] = [Colormap::Viridis, Colormap::Inferno, Colormap::Greys];
-
-    /// 256 sRGB entries.
-    pub fn lut(self) -> [[u8; 4]; 256] {
-        let mut out = [[0u8; 4]; 256];
-        for (i, o) in out.iter_mut().enumerate() {
-            let t = i as f64 / 255.0;
-            let c = match self {
-                Colormap::Viridis => colorous::VIRIDIS.eval_continuous(t),
-                Colormap::Inferno => colorous::INFERNO.eval_continuous(t),
-                Colormap::Greys => {
-                    let g = (t * 255.0).round() as u8;
-                    colorous::Color { r: g, g, b: g }
-                }
-            };
-            *o = [c.r, c.g, c.b, 255];
-        }
-        out
-    }
-
-    /// Display name.
-    pub fn name(self) -> &'static str {
-        match self {
-            Colormap::Viridis => "viridis",
-            Colormap::Inferno => "inferno",
-            Colormap::Greys => "greys",
-        }
-    }
-}
+/// Colour maps available for float images (the one colour map of [`crate::model`]).
+pub use crate::model::Colormap;
 
 /// How a float image is mapped to colour.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -536,19 +495,19 @@ fn write_lut(queue: &wgpu::Queue, lut: &wgpu::Texture, colormap: Colormap) {
     );
 }
 
-/// CPU colour mapping of a float image (fallback when wgpu is unavailable, and figure export).
+/// CPU colour mapping of a float image (the fallback when wgpu is unavailable): the one
+/// colorizer of [`crate::model::colorize`], after log10 when the range asks for it.
 pub fn colorize(image: &FloatImage, range: DisplayRange) -> egui::ColorImage {
-    let lut = range.colormap.lut();
-    let span = (range.hi - range.lo).max(1e-30);
-    let pixels = image
-        .values
-        .iter()
-        .map(|&v| {
-            let v = if range.log { v.max(1e-30).log10() } else { v };
-            let t = ((v - range.lo) / span).clamp(0.0, 1.0);
-            let [r, g, b, _] = lut[(t * 255.0).round() as usize];
-            egui::Color32::from_rgb(r, g, b)
-        })
+    let (lo, hi) = (range.lo as f64, range.hi as f64);
+    let rgb = if range.log {
+        let logs: Vec<f32> = image.values.iter().map(|v| v.max(1e-30).log10()).collect();
+        crate::model::colorize(&logs, lo, hi, range.colormap)
+    } else {
+        crate::model::colorize(image.values.as_slice(), lo, hi, range.colormap)
+    };
+    let pixels = rgb
+        .chunks_exact(3)
+        .map(|p| egui::Color32::from_rgb(p[0], p[1], p[2]))
         .collect();
     egui::ColorImage::new([image.width as usize, image.height as usize], pixels)
 }

@@ -59,9 +59,13 @@ impl Panel for FilterPanel {
         let mag: Vec<[f64; 2]> = d
             .magnitude
             .iter()
-            .map(|&[w, m]| [w, if db { 20.0 * m.max(1e-12).log10() } else { m }])
+            .map(|&[w, m]| [w, if db { crate::model::amplitude_db(m) } else { m }])
             .collect();
-        let (one, zero) = if db { (0.0, -120.0) } else { (1.0, 0.0) };
+        let (one, zero) = if db {
+            (0.0, crate::model::DB_FLOOR)
+        } else {
+            (1.0, 0.0)
+        };
         let ideal_parts = [
             vec![[0.0, one], [0.5, one]],
             vec![[0.5, one], [0.5, zero]],

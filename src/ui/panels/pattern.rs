@@ -73,32 +73,29 @@ impl Panel for PatternPanel {
                 );
             }
         }
-        if let Some(k) = cx.scene.columns[ci].elementary_k.or(cx.view.elementary_k) {
-            let n = data.points.len();
-            if n.is_power_of_two() {
-                let m = n.trailing_zeros();
-                let k = k.min(m);
-                let (cx, cy) = (1usize << k, 1usize << (m - k));
-                for i in 1..cx {
-                    let x = i as f64 / cx as f64;
-                    painter.line_segment(
-                        [
-                            screen_from_unit(rect, [x, 0.0]),
-                            screen_from_unit(rect, [x, 1.0]),
-                        ],
-                        Stroke::new(0.6, Color32::from_rgb(120, 160, 220)),
-                    );
-                }
-                for j in 1..cy {
-                    let y = j as f64 / cy as f64;
-                    painter.line_segment(
-                        [
-                            screen_from_unit(rect, [0.0, y]),
-                            screen_from_unit(rect, [1.0, y]),
-                        ],
-                        Stroke::new(0.6, Color32::from_rgb(120, 160, 220)),
-                    );
-                }
+        let k = cx.scene.columns[ci].elementary_k.or(cx.view.elementary_k);
+        if let Some((cols, rows)) = crate::model::elementary_grid(k, data.points.len()) {
+            let [r, g, b] = crate::model::palette::INTERVALS;
+            let stroke = Stroke::new(0.6, Color32::from_rgb(r, g, b));
+            for i in 1..cols {
+                let x = i as f64 / cols as f64;
+                painter.line_segment(
+                    [
+                        screen_from_unit(rect, [x, 0.0]),
+                        screen_from_unit(rect, [x, 1.0]),
+                    ],
+                    stroke,
+                );
+            }
+            for j in 1..rows {
+                let y = j as f64 / rows as f64;
+                painter.line_segment(
+                    [
+                        screen_from_unit(rect, [0.0, y]),
+                        screen_from_unit(rect, [1.0, y]),
+                    ],
+                    stroke,
+                );
             }
         }
         let stats = match cx.result(NodeKind::Statistics).map(|r| &r.value) {

@@ -7,7 +7,7 @@ use crate::core::signal::theorem::{
     AliasingErrors, PairKind, Reconstructor, Signal1D, TheoremSettings, TheoremView,
     PAIR_SCALE_RANGE, PAIR_SHIFT_RANGE,
 };
-use crate::export::figure::PanelKind;
+use crate::model::{palette, PanelKind};
 use crate::scene::graph::{NodeKind, NodeValue};
 use crate::scene::Panels;
 use crate::ui::figures::FigureRequests;
@@ -15,18 +15,13 @@ use crate::ui::widgets::params::param_ui;
 use eframe::egui::{self, Color32};
 use egui_plot::{Legend, Line, Plot, Points, VLine};
 
-/// Colours of the replicas k = −3..=3 (k = 0, the original, is drawn in the text colour).
-const REPLICA_COLOURS: [Color32; 7] = [
-    Color32::from_rgb(148, 103, 189),
-    Color32::from_rgb(44, 160, 44),
-    Color32::from_rgb(255, 127, 14),
-    Color32::from_rgb(31, 119, 180),
-    Color32::from_rgb(214, 39, 40),
-    Color32::from_rgb(23, 190, 207),
-    Color32::from_rgb(188, 189, 34),
-];
-const NYQUIST: Color32 = Color32::from_rgb(200, 60, 60);
-const RECON: Color32 = Color32::from_rgb(230, 120, 20);
+const fn colour(c: [u8; 3]) -> Color32 {
+    Color32::from_rgb(c[0], c[1], c[2])
+}
+
+const NYQUIST: Color32 = colour(palette::NYQUIST);
+const RECON: Color32 = colour(palette::RECON);
+const DATA: Color32 = colour(palette::DATA);
 
 /// Small legend text, so that the legend leaves the curves visible.
 fn legend() -> Legend {
@@ -35,8 +30,9 @@ fn legend() -> Legend {
         .background_alpha(0.5)
 }
 
+/// The colour of replica k (k = 0, the original, is drawn in the text colour).
 fn replica_colour(k: i64) -> Color32 {
-    REPLICA_COLOURS[(k + 3).clamp(0, 6) as usize]
+    colour(palette::replica(k))
 }
 
 /// The panel's own display state.
@@ -237,7 +233,7 @@ fn signal_plot_ui(ui: &mut egui::Ui, v: &TheoremView, width: f32, height: f32) {
                 Points::new("samples f(nT)", v.samples.clone())
                     .stems(0.0)
                     .radius(2.5)
-                    .color(Color32::from_rgb(31, 119, 180)),
+                    .color(DATA),
             );
             p.line(Line::new("f_r(x)", v.reconstruction.clone()).color(RECON));
         });
