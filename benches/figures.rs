@@ -8,9 +8,10 @@
 //! criterion measurements.
 
 use criterion::{criterion_group, criterion_main, Criterion};
+use samplescope::core::recon::{Reconstruction, ZERO_WEIGHT_FILL};
 use samplescope::export::figure::panel_png;
-use samplescope::export::{png_bytes, PngColormap};
-use samplescope::model::{ColumnData, FigureContext, ImageData, PanelKind, ReconData};
+use samplescope::export::{flip_rows, png_bytes, PngColormap};
+use samplescope::model::{ColumnData, FigureContext, PanelKind, ReconData};
 use samplescope::scene::{figure, Scene};
 use std::hint::black_box;
 use std::sync::Arc;
@@ -34,12 +35,18 @@ fn zone_plate() -> Vec<f64> {
 
 fn setup() -> (FigureContext, ColumnData, Vec<f64>) {
     let values = zone_plate();
-    let image = ImageData::new(W, W, values.iter().map(|&v| v as f32).collect());
+    // The reconstruction's pixels are stored with row 0 at the bottom.
+    let exact = Reconstruction {
+        w: W,
+        pixels: flip_rows(&values, W),
+        zero_weight: 0,
+        mask: vec![false; W * W],
+        fill: ZERO_WEIGHT_FILL,
+        samples: W * W,
+        wall_time: Duration::ZERO,
+    };
     let data = ColumnData {
-        reconstruction: Some(Arc::new(ReconData {
-            image,
-            zero_weight: 0,
-        })),
+        reconstruction: Some(Arc::new(ReconData::new(exact))),
         ..Default::default()
     };
     let ctx = figure::context(&Scene::default(), 0, "bench").expect("column 0 exists");

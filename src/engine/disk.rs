@@ -2,12 +2,13 @@
 //! [`DiskCache`] ([`ImagePayload`]), keyed by the node key.
 //!
 //! Only complete, successful results are stored. A file that does not decode (corrupt,
-//! foreign, another version) is ignored and the node is computed again. The payload's method
-//! is the RON text of the [`ReferenceMethod`].
+//! foreign, another version) is ignored and the node is computed again. The payload holds the
+//! reference's f64 pixels as computed (row 0 at the bottom; the display image is made from
+//! them as the node makes it) and the RON text of its [`ReferenceMethod`].
 
 use super::disk_cache::{DiskCache, ImagePayload};
 use crate::core::recon::ReferenceMethod;
-use crate::model::{ImageData, ReferenceData};
+use crate::model::ReferenceData;
 use crate::scene::graph::{NodeKey, NodeResult, NodeValue};
 use std::sync::Arc;
 use std::time::Duration;
@@ -17,14 +18,18 @@ pub(crate) fn load(disk: &DiskCache, key: &NodeKey) -> Option<NodeResult> {
     let bytes = disk.get(key.kind.name(), &key.hash)?;
     // `from_bytes` checks that the values are exactly width × height.
     let p = ImagePayload::from_bytes(&bytes)?;
-    let (w, h) = (p.width as usize, p.height as usize);
+    // Reference images are square.
+    if p.width != p.height {
+        return None;
+    }
     let method: ReferenceMethod = ron::from_str(&p.method).ok()?;
     Some(NodeResult {
-        value: Ok(NodeValue::Reference(Arc::new(ReferenceData {
-            image: ImageData::new(w, h, p.values),
-            error_estimate: p.error_estimate,
+        value: Ok(NodeValue::Reference(Arc::new(ReferenceData::new(
+            p.width as usize,
+            p.values,
+            p.error_estimate,
             method,
-        }))),
+        )))),
         // The same accuracy text as when computed: a render from the cache writes the same
         // bytes as one that computed the reference.
         wall: Duration::ZERO,
@@ -44,7 +49,7 @@ pub(crate) fn store(disk: &DiskCache, key: &NodeKey, result: &NodeResult) {
     let payload = ImagePayload {
         width: r.image.width as u32,
         height: r.image.height as u32,
-        values: r.image.values.as_ref().clone(),
+        values: r.pixels.as_ref().clone(),
         error_estimate: r.error_estimate,
         method,
         accuracy: result.accuracy.clone(),

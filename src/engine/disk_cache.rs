@@ -547,7 +547,7 @@ fn is_temp_name(name: &str) -> bool {
     name.starts_with(TEMP_PREFIX) && name.ends_with(TEMP_SUFFIX)
 }
 
-/// One reference image as a cache payload: a `width × height` grid of `f32` values (row-major)
+/// One reference image as a cache payload: a `width × height` grid of `f64` values (row-major)
 /// with how it was computed.
 ///
 /// Encoding, little-endian, with nothing after it:
@@ -556,7 +556,7 @@ fn is_temp_name(name: &str) -> bool {
 /// | --- | --- |
 /// | 4 | `width`, `u32` |
 /// | 4 | `height`, `u32` |
-/// | 4 · width · height | `values`, `f32` bit patterns (NaNs kept bit for bit) |
+/// | 8 · width · height | `values`, `f64` bit patterns (NaNs kept bit for bit) |
 /// | 1, then 8 if 1 | `error_estimate`: 0 = `None`; 1 = `Some`, then the `f64` |
 /// | 4 + n | `method`: length `u32`, then n bytes of UTF-8 |
 /// | 1, then 4 + n if 1 | `accuracy`: 0 = `None`; 1 = `Some`, then length `u32` and UTF-8 |
@@ -565,7 +565,7 @@ pub struct ImagePayload {
     pub width: u32,
     pub height: u32,
     /// Row-major, exactly `width * height` values.
-    pub values: Vec<f32>,
+    pub values: Vec<f64>,
     pub error_estimate: Option<f64>,
     pub method: String,
     pub accuracy: Option<String>,
@@ -586,7 +586,7 @@ impl ImagePayload {
             self.height
         );
         let strings = self.method.len() + self.accuracy.as_ref().map_or(0, String::len);
-        let mut out = Vec::with_capacity(8 + 4 * self.values.len() + 9 + 4 + 1 + 4 + strings);
+        let mut out = Vec::with_capacity(8 + 8 * self.values.len() + 9 + 4 + 1 + 4 + strings);
         out.extend_from_slice(&self.width.to_le_bytes());
         out.extend_from_slice(&self.height.to_le_bytes());
         for v in &self.values {
@@ -611,7 +611,7 @@ impl ImagePayload {
     }
 
     /// Decodes [`to_bytes`](Self::to_bytes)'s encoding. `None` unless the lengths agree exactly
-    /// (4 · width · height value bytes, computed without overflow; string lengths; no trailing
+    /// (8 · width · height value bytes, computed without overflow; string lengths; no trailing
     /// bytes), the option tags are 0 or 1 and the strings are UTF-8. Allocates only what the
     /// input actually holds.
     pub fn from_bytes(b: &[u8]) -> Option<ImagePayload> {
@@ -619,10 +619,10 @@ impl ImagePayload {
         let width = u32::from_le_bytes(r.array()?);
         let height = u32::from_le_bytes(r.array()?);
         let count = (width as usize).checked_mul(height as usize)?;
-        let raw = r.take(count.checked_mul(4)?)?;
+        let raw = r.take(count.checked_mul(8)?)?;
         let values = raw
-            .chunks_exact(4)
-            .map(|c| f32::from_le_bytes(c.try_into().expect("4 bytes")))
+            .chunks_exact(8)
+            .map(|c| f64::from_le_bytes(c.try_into().expect("8 bytes")))
             .collect();
         let error_estimate = match r.array::<1>()?[0] {
             0 => None,
@@ -1273,8 +1273,8 @@ mod tests {
             values: vec![
                 0.0,
                 -1.5,
-                f32::from_bits(0x7fc0_1234),
-                f32::INFINITY,
+                f64::from_bits(0x7ff8_0000_0000_1234),
+                f64::INFINITY,
                 1e-42,
                 7.25,
             ],
@@ -1315,10 +1315,10 @@ mod tests {
         let b = full.to_bytes();
         assert_eq!(&b[0..4], &3u32.to_le_bytes());
         assert_eq!(&b[4..8], &2u32.to_le_bytes());
-        assert_eq!(&b[8..12], &0.0f32.to_le_bytes());
-        assert_eq!(&b[12..16], &(-1.5f32).to_le_bytes());
-        assert_eq!(b[32], 1);
-        assert_eq!(&b[33..41], &1.0e-4f64.to_le_bytes());
+        assert_eq!(&b[8..16], &0.0f64.to_le_bytes());
+        assert_eq!(&b[16..24], &(-1.5f64).to_le_bytes());
+        assert_eq!(b[56], 1);
+        assert_eq!(&b[57..65], &1.0e-4f64.to_le_bytes());
     }
 
     #[test]
@@ -1343,19 +1343,19 @@ mod tests {
         }
         // An option tag other than 0 or 1.
         let mut b = good.clone();
-        b[32] = 2;
+        b[56] = 2;
         assert_eq!(ImagePayload::from_bytes(&b), None);
         // Invalid UTF-8 in the method.
         let mut bad = image();
         bad.method = "ab".to_string();
         let mut b = bad.to_bytes();
-        let at = 8 + 24 + 9 + 4;
+        let at = 8 + 48 + 9 + 4;
         assert_eq!(&b[at..at + 2], b"ab");
         b[at] = 0xff;
         assert_eq!(ImagePayload::from_bytes(&b), None);
         // A string length past the end.
         let mut b = good.clone();
-        b[41..45].copy_from_slice(&u32::MAX.to_le_bytes());
+        b[65..69].copy_from_slice(&u32::MAX.to_le_bytes());
         assert_eq!(ImagePayload::from_bytes(&b), None);
     }
 

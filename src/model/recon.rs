@@ -1,7 +1,8 @@
 //! Reconstructions, reference images, their error, and convergence curves.
 
 use super::ImageData;
-use crate::core::recon::ReferenceMethod;
+use crate::core::recon::{Reconstruction, ReferenceMethod};
+use std::sync::Arc;
 
 /// A reconstructed image.
 #[derive(Debug, Clone)]
@@ -10,6 +11,22 @@ pub struct ReconData {
     pub image: ImageData,
     /// Pixels with zero total filter weight (shown at the fill value).
     pub zero_weight: usize,
+    /// The reconstruction as computed (f64 pixels, row 0 at the bottom): what its error
+    /// against the reference is measured on.
+    pub exact: Arc<Reconstruction>,
+}
+
+impl ReconData {
+    /// A reconstruction with its display image: rows flipped (the pixels' row j lies at
+    /// y = (j + ½)/W, y up; the image's row 0 is the top), values as f32.
+    pub fn new(r: Reconstruction) -> Self {
+        let w = r.w;
+        ReconData {
+            image: ImageData::from_y_up(w, w, |i| r.pixels[i] as f32),
+            zero_weight: r.zero_weight,
+            exact: Arc::new(r),
+        }
+    }
 }
 
 /// A reference image.
@@ -17,16 +34,38 @@ pub struct ReconData {
 pub struct ReferenceData {
     /// The reference for display (f32, row 0 at the top).
     pub image: ImageData,
+    /// The pixel means as computed (f64, row-major, row 0 at the bottom): what errors are
+    /// measured against.
+    pub pixels: Arc<Vec<f64>>,
     /// The image's own error, where known (a bound or an estimate: see [`Self::method`]).
     pub error_estimate: Option<f64>,
     /// How the pixels were computed.
     pub method: ReferenceMethod,
 }
 
+impl ReferenceData {
+    /// A W×W reference from its pixel means (row-major, row 0 at the bottom), with its
+    /// display image made as [`ReconData::new`] makes a reconstruction's.
+    pub fn new(
+        w: usize,
+        pixels: Vec<f64>,
+        error_estimate: Option<f64>,
+        method: ReferenceMethod,
+    ) -> Self {
+        ReferenceData {
+            image: ImageData::from_y_up(w, w, |i| pixels[i] as f32),
+            pixels: Arc::new(pixels),
+            error_estimate,
+            method,
+        }
+    }
+}
+
 /// Error of a reconstruction against its reference.
 #[derive(Debug, Clone)]
 pub struct ErrorData {
-    /// √(mean of (I − R)²).
+    /// √(mean of (I − R)²) over the f64 pixels ([`crate::core::recon::error_report`]): the
+    /// number `samplescope recon` prints for the same scene.
     pub rmse: f64,
     /// 10·log₁₀(1/MSE) dB (peak 1).
     pub psnr: f64,

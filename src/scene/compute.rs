@@ -69,8 +69,9 @@ impl NodeValue {
             NodeValue::Statistics(_) => std::mem::size_of::<StatsData>(),
             NodeValue::Spectrum(s) => img(&s.image) + pairs(&s.raps) + pairs(&s.anisotropy),
             NodeValue::Samples(v) => v.len() * 8,
-            NodeValue::Reconstruction(r) => img(&r.image),
-            NodeValue::Reference(r) => img(&r.image),
+            // The f64 pixels and the zero-weight mask besides the display image.
+            NodeValue::Reconstruction(r) => img(&r.image) + r.exact.pixels.len() * 9,
+            NodeValue::Reference(r) => img(&r.image) + r.pixels.len() * 8,
             NodeValue::Error(e) => img(&e.image),
             NodeValue::Response(r) => img(&r.image) + pairs(&r.kernel) + pairs(&r.magnitude),
             NodeValue::Convergence(c) => c.len() * std::mem::size_of::<ConvergencePoint>(),
@@ -166,11 +167,6 @@ pub(super) fn samples(ctx: &JobCtx) -> Output {
     Ok((NodeValue::Samples(Arc::new(v)), None))
 }
 
-fn image_from_pixels(w: usize, pixels: &[f64]) -> ImageData {
-    // Reconstruction pixels are stored with row j at y = (j + ½)/W (y up): flip for display.
-    ImageData::from_y_up(w, w, |i| pixels[i] as f32)
-}
-
 pub(super) fn reconstruction(ctx: &JobCtx) -> Output {
     let (scene, c, done, cancel) = (ctx.scene, ctx.column, ctx.deps, ctx.cancel);
     let w = scene.recon.size;
@@ -211,10 +207,7 @@ pub(super) fn reconstruction(ctx: &JobCtx) -> Output {
                 )
                 .map_err(|e| e.to_string())?;
                 (ctx.progress)(Partial {
-                    value: NodeValue::Reconstruction(Arc::new(ReconData {
-                        image: image_from_pixels(w, &p.pixels),
-                        zero_weight: p.zero_weight,
-                    })),
+                    value: NodeValue::Reconstruction(Arc::new(ReconData::new(p))),
                     accuracy: Some(format!(
                         "preview at {preview_spp} of {spp} spp: noise ≳ {}× the final's",
                         (PREVIEW_DIVISOR as f64).sqrt()
@@ -229,10 +222,7 @@ pub(super) fn reconstruction(ctx: &JobCtx) -> Output {
     };
     let accuracy = (r.zero_weight > 0).then(|| format!("{} zero-weight pixels", r.zero_weight));
     Ok((
-        NodeValue::Reconstruction(Arc::new(ReconData {
-            image: image_from_pixels(w, &r.pixels),
-            zero_weight: r.zero_weight,
-        })),
+        NodeValue::Reconstruction(Arc::new(ReconData::new(r))),
         accuracy,
     ))
 }
@@ -253,11 +243,12 @@ pub(super) fn reference(ctx: &JobCtx) -> Output {
                 format!("own RMS error ≈ {e:.1e}")
             }
         });
-        let value = NodeValue::Reference(Arc::new(ReferenceData {
-            image: image_from_pixels(w, &r.pixels),
-            error_estimate: r.error_estimate,
-            method: r.method,
-        }));
+        let value = NodeValue::Reference(Arc::new(ReferenceData::new(
+            w,
+            r.pixels.clone(),
+            r.error_estimate,
+            r.method,
+        )));
         (value, accuracy)
     };
     // A supersampled reference shows its s×s pass first, then the 2s×2s one.
@@ -294,7 +285,11 @@ pub(super) fn error(ctx: &JobCtx) -> Output {
     if a.values.len() != b.values.len() {
         return Err("reconstruction and reference sizes differ".into());
     }
-    let mut sum = 0.0f64;
+    // RMSE and PSNR over the f64 pixels, as `samplescope recon` reports them; the image
+    // shown is the difference of the two display images.
+    let report = crate::core::recon::error_report(&recon.exact, &reference.pixels)
+        .map_err(|e| e.to_string())?;
+    let (rmse, psnr) = (report.rmse, report.psnr);
     let mut max = 0.0f32;
     let diff: Vec<f32> = a
         .values
@@ -302,13 +297,10 @@ pub(super) fn error(ctx: &JobCtx) -> Output {
         .zip(b.values.iter())
         .map(|(x, y)| {
             let d = (x - y).abs();
-            sum += (d as f64) * (d as f64);
             max = max.max(d);
             d
         })
         .collect();
-    let rmse = (sum / diff.len().max(1) as f64).sqrt();
-    let psnr = crate::core::recon::psnr(rmse);
     Ok((
         NodeValue::Error(Arc::new(ErrorData {
             rmse,

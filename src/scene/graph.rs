@@ -342,7 +342,8 @@ pub static NODES: [NodeDef; 10] = [
         },
         run: compute::error,
         disk_cached: false,
-        version: 1,
+        // 2: RMSE and PSNR over the f64 pixels (core's error report).
+        version: 2,
     },
     NodeDef {
         kind: NodeKind::Response,

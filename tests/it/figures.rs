@@ -2,6 +2,7 @@
 //! errors, on a small scene evaluated through the compute graph (N = 256, 64² images).
 
 use samplescope::core::cancel::Cancel;
+use samplescope::core::recon::{Reconstruction, ZERO_WEIGHT_FILL};
 use samplescope::core::signal::theorem::TheoremView;
 use samplescope::engine::Evaluator;
 use samplescope::export::figure::{
@@ -9,7 +10,7 @@ use samplescope::export::figure::{
     panel_file_name, panel_png, panel_rgba, panel_svg, MAX_COMPOSITE_PIXELS, SCALES,
 };
 use samplescope::export::ExportError;
-use samplescope::model::{ColumnData, FigureContext, ImageData, PanelKind, PointsData};
+use samplescope::model::{ColumnData, FigureContext, PanelKind, PointsData, ReconData};
 use samplescope::scene::graph::{NodeKind, NodeResult};
 use samplescope::scene::{figure as scene_figure, panels, Scene};
 use std::collections::HashMap;
@@ -377,12 +378,17 @@ fn images_and_points_are_drawn_where_their_data_says() {
     let scene = quick_scene();
     let ctx = scene_figure::context(&scene, 0, "x").unwrap();
     let mut colours = Vec::new();
-    for level in [0.0f32, 1.0] {
+    for level in [0.0, 1.0] {
         let data = ColumnData {
-            reconstruction: Some(Arc::new(samplescope::scene::graph::ReconData {
-                image: ImageData::new(8, 8, vec![level; 64]),
+            reconstruction: Some(Arc::new(ReconData::new(Reconstruction {
+                w: 8,
+                pixels: vec![level; 64],
                 zero_weight: 0,
-            })),
+                mask: vec![false; 64],
+                fill: ZERO_WEIGHT_FILL,
+                samples: 64,
+                wall_time: std::time::Duration::ZERO,
+            }))),
             ..Default::default()
         };
         let (w, h, rgba) = panel_rgba(PanelKind::Reconstruction, &ctx, &data, 1).unwrap();

@@ -75,3 +75,118 @@ fn error_report_counts_zero_weight_pixels_with_their_fill() {
         .starts_with("reference[3] = NaN"));
     assert!(error_report(&r, &reference[..15]).is_err());
 }
+
+/// The RMSE and PSNR of the engine's error node for a one-column scene of `signal` sampled
+/// by `pattern` (seed 3, N = 1024) in `mode`, reconstructed with the default Gaussian onto
+/// 96², the reference computed or (with `disk`) taken from the disk cache.
+fn engine_error(
+    signal: &str,
+    pattern: &str,
+    mode: samplescope::scene::ReconMode,
+    disk: Option<&std::path::Path>,
+) -> (f64, f64) {
+    use samplescope::core::filter::{Filter, Filter2D, Mode2D};
+    use samplescope::core::pattern::Pattern;
+    use samplescope::core::signal::Signal;
+    use samplescope::engine::disk_cache::DiskCache;
+    use samplescope::engine::Evaluator;
+    use samplescope::scene::graph::{NodeKind, NodeValue};
+    use samplescope::scene::{Column, Scene};
+    let mut scene = Scene {
+        columns: vec![Column {
+            pattern: Pattern::from_name(pattern).unwrap(),
+            seed: 3,
+            ..Default::default()
+        }],
+        n: 1024,
+        signal: Signal::all()
+            .into_iter()
+            .find(|s| s.name() == signal)
+            .unwrap(),
+        filter: Filter2D::new(Filter::from_name("gaussian").unwrap(), Mode2D::Separable).unwrap(),
+        ..Default::default()
+    };
+    scene.recon.mode = mode;
+    scene.recon.size = 96;
+    scene.panels.pattern = false;
+    scene.panels.spectrum = false;
+    scene.panels.filter = false;
+    let disk = disk.map(|d| DiskCache::open(d.to_path_buf(), 1 << 30).unwrap());
+    let eval = Evaluator::new(1 << 30, disk);
+    let mut out = None;
+    eval.evaluate(&scene, &Cancel::never(), &mut |_, kind, r| {
+        if kind == NodeKind::Error {
+            match &r.value {
+                Ok(NodeValue::Error(e)) => out = Some((e.rmse, e.psnr)),
+                other => panic!("error node: {other:?}"),
+            }
+        }
+    });
+    out.expect("the scene shows the error")
+}
+
+/// (rmse, psnr) as `samplescope recon --json` prints them for the same settings.
+fn recon_cli_error(signal: &str, pattern: &str, samples: &[&str]) -> (f64, f64) {
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_samplescope"))
+        .args(["recon", "--json", "--signal", signal, "--pattern", pattern])
+        .args(["--seed", "3", "--filter", "gaussian", "--mode", "separable"])
+        .args(["--size", "96"])
+        .args(samples)
+        .output()
+        .expect("run samplescope");
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    // Read the numbers with Rust's correctly rounded parser: the JSON text is the shortest
+    // round-trip form, so this gives back the printed f64 exactly.
+    let text = String::from_utf8(out.stdout).expect("UTF-8");
+    let number = |key: &str| -> f64 {
+        let at = text.find(&format!("\"{key}\":")).expect(key) + key.len() + 3;
+        let end = text[at..].find([',', '}']).expect("a number") + at;
+        text[at..end].trim().parse().expect("a finite number")
+    };
+    (number("rmse"), number("psnr"))
+}
+
+#[test]
+fn engine_error_node_and_recon_cli_report_the_same_rmse_bit_for_bit() {
+    use samplescope::scene::ReconMode;
+    // Both are core's error report over the f64 pixels: the same bits, whether the engine
+    // computed the reference or read it back from the disk cache.
+    let dir = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR"))
+        .join(format!("recon_error-disk-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    for (signal, pattern, mode, samples) in [
+        ("zone-plate", "jitter", ReconMode::Scattered, ["-n", "1024"]),
+        (
+            "checkerboard",
+            "random",
+            ReconMode::Supersample { spp: 4 },
+            ["--spp", "4"],
+        ),
+    ] {
+        let cli = recon_cli_error(signal, pattern, &samples);
+        let computed = engine_error(signal, pattern, mode, Some(&dir));
+        let from_disk = engine_error(signal, pattern, mode, Some(&dir));
+        let in_memory = engine_error(signal, pattern, mode, None);
+        for (what, e) in [
+            ("computed", computed),
+            ("from disk", from_disk),
+            ("in memory", in_memory),
+        ] {
+            assert_eq!(
+                e.0.to_bits(),
+                cli.0.to_bits(),
+                "{signal} {what}: RMSE {e:?} vs {cli:?}"
+            );
+            assert_eq!(
+                e.1.to_bits(),
+                cli.1.to_bits(),
+                "{signal} {what}: PSNR {e:?} vs {cli:?}"
+            );
+        }
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
