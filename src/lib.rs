@@ -44,7 +44,10 @@
 //! A scene is planned into nodes by the node table of [`scene::graph`] (keys: BLAKE3 of the
 //! node's kind, algorithm version, scene fields and input keys) and evaluated by [`engine`]:
 //! in parallel, cancelled per node, coarse results first for slow nodes, every completed
-//! result cached (memory bounded by bytes; reference images also on disk). See ARCHITECTURE.md.
+//! result cached (memory bounded by bytes; reference images also on disk). Which nodes a
+//! scene needs follows from the panels it shows ([`scene::panels`], one rule for the graph,
+//! `render` and the GUI). Results are the plain data of [`model`], which the panels and the
+//! figures of [`export`] only draw. See ARCHITECTURE.md.
 //!
 //! ## Errors
 //! Bad input never panics: every fallible routine returns a typed error (e.g.

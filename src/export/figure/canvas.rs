@@ -22,7 +22,7 @@ type SvgError = <SVGBackend<'static> as DrawingBackend>::ErrorType;
 
 /// A bitmap or an SVG document being drawn.
 pub enum Canvas<'a> {
-    /// An RGB buffer whose text is drawn by [`CrispText`] (boxed: the font tables make it
+    /// An RGB buffer whose text is drawn by `CrispText` (boxed: the font tables make it
     /// large).
     Bitmap(Box<CrispText<BitMapBackend<'a>>>),
     /// SVG text (the viewer lays out the text).
@@ -39,7 +39,9 @@ pub(super) type Chart<'a, 'b> =
 /// Why the canvas's backend failed.
 #[derive(Debug)]
 pub enum CanvasError {
+    /// The bitmap backend's error.
     Bitmap(BitmapError),
+    /// The SVG backend's error.
     Svg(SvgError),
 }
 
