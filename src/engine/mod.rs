@@ -186,7 +186,7 @@ impl Evaluator {
         cancel: &Cancel,
         sink: &mut dyn FnMut(usize, NodeKind, Arc<NodeResult>),
     ) {
-        let never = |_: crate::scene::compute::Partial| {};
+        let never = |_: crate::scene::node::Partial| {};
         for (c, plan) in crate::scene::graph::plan(scene).into_iter().enumerate() {
             let mut done: std::collections::HashMap<NodeKind, Arc<NodeResult>> = Default::default();
             for n in plan.nodes {
@@ -196,7 +196,7 @@ impl Evaluator {
                 let key = match n.key {
                     Ok(k) => k,
                     Err(e) => {
-                        let r = Arc::new(NodeResult::error(e.to_string()));
+                        let r = Arc::new(NodeResult::error(crate::scene::node::NodeError::Key(e)));
                         done.insert(n.kind, r.clone());
                         sink(c, n.kind, r);
                         continue;
@@ -216,7 +216,7 @@ impl Evaluator {
                             Some(e) => NodeResult::error(e),
                             None => {
                                 self.shared.counts[n.kind as usize].fetch_add(1, Ordering::Relaxed);
-                                let ctx = crate::scene::compute::JobCtx {
+                                let ctx = crate::scene::node::JobCtx {
                                     scene,
                                     column: c,
                                     deps: &deps,

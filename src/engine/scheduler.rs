@@ -18,8 +18,8 @@
 use super::cache::MemoryCache;
 use super::disk_cache::DiskCache;
 use crate::core::cancel::Cancel;
-use crate::scene::compute::{JobCtx, Partial};
 use crate::scene::graph::{self, NodeKey, NodeKind, NodeResult};
+use crate::scene::node::{JobCtx, NodeError, Partial};
 use crate::scene::Scene;
 use std::collections::HashMap;
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -193,7 +193,7 @@ impl Scheduler {
                             });
                         }
                     },
-                    Err(e) => errors.push((c, n.kind, e.to_string())),
+                    Err(e) => errors.push((c, n.kind, NodeError::Key(e))),
                 }
             }
         }
@@ -438,9 +438,7 @@ fn spawn_job(
         let _ = failed_events.send(Event::Done {
             job,
             key,
-            result: Some(NodeResult::error(format!(
-                "cannot start a thread for the job: {e}"
-            ))),
+            result: Some(NodeResult::error(NodeError::Thread(e.to_string()))),
         });
     }
 }
@@ -455,7 +453,7 @@ pub(crate) fn run_job(kind: NodeKind, ctx: &JobCtx) -> Option<NodeResult> {
         Err(_) | Ok(Err(_)) if ctx.cancel.is_cancelled() => return None,
         Ok(Ok((value, accuracy))) => (Ok(value), accuracy),
         Ok(Err(e)) => (Err(e), None),
-        Err(panic) => (Err(panic_message(panic)), None),
+        Err(panic) => (Err(NodeError::Panic(panic_message(panic))), None),
     };
     Some(NodeResult {
         value,
@@ -468,12 +466,12 @@ pub(crate) fn run_job(kind: NodeKind, ctx: &JobCtx) -> Option<NodeResult> {
 /// failed input in the given order, which callers take from the node table), if any.
 pub(crate) fn failed_input<'a>(
     inputs: impl IntoIterator<Item = (&'a NodeKind, &'a Arc<NodeResult>)>,
-) -> Option<String> {
+) -> Option<NodeError> {
     inputs.into_iter().find_map(|(k, r)| {
-        r.value
-            .as_ref()
-            .err()
-            .map(|e| format!("{} failed: {e}", k.name()))
+        r.value.as_ref().err().map(|e| NodeError::Input {
+            input: *k,
+            cause: Arc::new(e.clone()),
+        })
     })
 }
 
@@ -483,5 +481,5 @@ fn panic_message(panic: Box<dyn std::any::Any + Send>) -> String {
         .cloned()
         .or_else(|| panic.downcast_ref::<&str>().map(|s| s.to_string()))
         .unwrap_or_else(|| "unknown panic".into());
-    format!("internal error (panic): {text}")
+    text
 }

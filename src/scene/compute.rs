@@ -1,9 +1,7 @@
 //! What each node computes, as plain data for the panels.
 
-use super::graph::{NodeKind, NodeResult};
-use super::{ReconMode, Scene};
-use crate::core::cancel::Cancel;
-use std::collections::HashMap;
+use super::node::{Deps, JobCtx, NodeError, NodeKind, NodeValue, Output, Partial};
+use super::ReconMode;
 use std::sync::Arc;
 use std::time::Duration;
 
@@ -12,78 +10,15 @@ pub use crate::model::{
     ResponseData, ResponseMetrics, SpectrumData, StatsData,
 };
 
-/// The value of a node.
-#[derive(Debug, Clone)]
-pub enum NodeValue {
-    Points(Arc<PointsData>),
-    Statistics(Arc<StatsData>),
-    Spectrum(Arc<SpectrumData>),
-    Samples(Arc<Vec<f64>>),
-    Reconstruction(Arc<ReconData>),
-    Reference(Arc<ReferenceData>),
-    Error(Arc<ErrorData>),
-    Response(Arc<ResponseData>),
-    Convergence(Arc<Vec<ConvergencePoint>>),
-    /// The 1D sampling-theorem view.
-    Theorem(Arc<crate::core::signal::theorem::TheoremView>),
-}
-
-/// The results of a node's declared inputs, by kind.
-pub type Deps = HashMap<NodeKind, Arc<NodeResult>>;
-
-/// What a job returns: its value and the accuracy reached, or the error that stopped it.
-pub type Output = Result<(NodeValue, Option<String>), String>;
-
-/// A coarse result a node publishes while it refines (step `step` of `steps`; the last step
-/// is the node's final result and is returned, not published).
-pub struct Partial {
-    pub value: NodeValue,
-    pub accuracy: Option<String>,
-    pub step: usize,
-    pub steps: usize,
-}
-
-/// Everything a job sees: the scene, its column, its declared inputs' results, its own
-/// cancellation token, and where to publish coarse results.
-pub struct JobCtx<'a> {
-    pub scene: &'a Scene,
-    pub column: usize,
-    pub deps: &'a Deps,
-    pub cancel: &'a Cancel,
-    pub progress: &'a (dyn Fn(Partial) + Sync),
-}
-
 impl JobCtx<'_> {
     fn col(&self) -> &super::Column {
         &self.scene.columns[self.column]
     }
 }
 
-impl NodeValue {
-    /// Approximate heap bytes held by the value (what the cache budget counts).
-    pub fn bytes(&self) -> usize {
-        let img = |i: &ImageData| i.values.len() * 4;
-        let pairs = |v: &Vec<[f64; 2]>| v.len() * 16;
-        match self {
-            NodeValue::Points(p) => p.points.len() * 16 + p.gpu.len() * 8,
-            NodeValue::Statistics(_) => std::mem::size_of::<StatsData>(),
-            NodeValue::Spectrum(s) => img(&s.image) + pairs(&s.raps) + pairs(&s.anisotropy),
-            NodeValue::Samples(v) => v.len() * 8,
-            // The f64 pixels and the zero-weight mask besides the display image.
-            NodeValue::Reconstruction(r) => img(&r.image) + r.exact.pixels.len() * 9,
-            NodeValue::Reference(r) => img(&r.image) + r.pixels.len() * 8,
-            NodeValue::Error(e) => img(&e.image),
-            NodeValue::Response(r) => img(&r.image) + pairs(&r.kernel) + pairs(&r.magnitude),
-            NodeValue::Convergence(c) => c.len() * std::mem::size_of::<ConvergencePoint>(),
-            NodeValue::Theorem(t) => t.approx_bytes(),
-        }
-    }
-}
-
 pub(super) fn theorem(ctx: &JobCtx) -> Output {
-    ctx.cancel.check().map_err(|e| e.to_string())?;
-    let v = crate::core::signal::theorem::compute_view(&ctx.scene.theorem)
-        .map_err(|e| e.to_string())?;
+    ctx.cancel.check()?;
+    let v = crate::core::signal::theorem::compute_view(&ctx.scene.theorem)?;
     let e = &v.errors;
     let accuracy = Some(format!(
         "band ±{:.3} cycles/unit, tail ≤ {:.1e}",
@@ -92,18 +27,26 @@ pub(super) fn theorem(ctx: &JobCtx) -> Output {
     Ok((NodeValue::Theorem(Arc::new(v)), accuracy))
 }
 
-fn dep(done: &Deps, kind: NodeKind) -> Result<&NodeValue, String> {
+fn dep(done: &Deps, kind: NodeKind) -> Result<&NodeValue, NodeError> {
     match done.get(&kind).map(|r| &r.value) {
         Some(Ok(v)) => Ok(v),
-        Some(Err(e)) => Err(format!("{} failed: {e}", kind.name())),
-        None => Err(format!("{} missing", kind.name())),
+        Some(Err(e)) => Err(NodeError::Input {
+            input: kind,
+            cause: Arc::new(e.clone()),
+        }),
+        None => Err(NodeError::Internal(format!(
+            "the {} input is missing",
+            kind.name()
+        ))),
     }
 }
 
-fn points_of(done: &Deps) -> Result<Arc<PointsData>, String> {
+fn points_of(done: &Deps) -> Result<Arc<PointsData>, NodeError> {
     match dep(done, NodeKind::Points)? {
         NodeValue::Points(p) => Ok(p.clone()),
-        _ => Err("points node has the wrong type".into()),
+        _ => Err(NodeError::Internal(
+            "the points input has another kind".into(),
+        )),
     }
 }
 
@@ -126,10 +69,7 @@ pub(super) fn points(ctx: &JobCtx) -> Output {
             Some(format!("imported from {}", imp.label())),
         ));
     }
-    let g = col
-        .pattern
-        .generate_with(scene.n, col.seed, cancel)
-        .map_err(|e| e.to_string())?;
+    let g = col.pattern.generate_with(scene.n, col.seed, cancel)?;
     let gpu = g.points.iter().map(|p| [p.x as f32, p.y as f32]).collect();
     Ok((
         NodeValue::Points(Arc::new(PointsData {
@@ -145,7 +85,7 @@ pub(super) fn points(ctx: &JobCtx) -> Output {
 pub(super) fn statistics(ctx: &JobCtx) -> Output {
     let (done, cancel) = (ctx.deps, ctx.cancel);
     let p = points_of(done)?;
-    let s = crate::core::metrics::statistics(&p.points, cancel).map_err(|e| e.to_string())?;
+    let s = crate::core::metrics::statistics(&p.points, cancel)?;
     let md = s.min_distance.as_ref();
     Ok((
         NodeValue::Statistics(Arc::new(StatsData {
@@ -162,8 +102,7 @@ pub(super) fn statistics(ctx: &JobCtx) -> Output {
 
 pub(super) fn samples(ctx: &JobCtx) -> Output {
     let p = points_of(ctx.deps)?;
-    let v = crate::core::recon::sample_signal(&ctx.scene.signal, &p.points, ctx.cancel)
-        .map_err(|e| e.to_string())?;
+    let v = crate::core::recon::sample_signal(&ctx.scene.signal, &p.points, ctx.cancel)?;
     Ok((NodeValue::Samples(Arc::new(v)), None))
 }
 
@@ -175,19 +114,24 @@ pub(super) fn reconstruction(ctx: &JobCtx) -> Output {
             let p = points_of(done)?;
             let values = match dep(done, NodeKind::Samples)? {
                 NodeValue::Samples(v) => v.clone(),
-                _ => return Err("samples node has the wrong type".into()),
+                _ => {
+                    return Err(NodeError::Internal(
+                        "the samples input has another kind".into(),
+                    ))
+                }
             };
-            crate::core::recon::reconstruct_scattered(&p.points, &values, w, &scene.filter, cancel)
-                .map_err(|e| e.to_string())?
+            crate::core::recon::reconstruct_scattered(&p.points, &values, w, &scene.filter, cancel)?
         }
         ReconMode::Resample { grid } => {
-            crate::core::recon::resample_grid(&scene.signal, grid, w, &scene.filter, cancel)
-                .map_err(|e| e.to_string())?
+            crate::core::recon::resample_grid(&scene.signal, grid, w, &scene.filter, cancel)?
         }
         ReconMode::Supersample { spp } => {
             let col = &scene.columns[c];
             if col.points.is_some() {
-                return Err(imported_needs_pattern(c, "supersampling"));
+                return Err(NodeError::ImportedNeedsPattern {
+                    column: c,
+                    what: "supersampling",
+                });
             }
             let provider = crate::core::recon::PatternProvider {
                 pattern: col.pattern,
@@ -204,8 +148,7 @@ pub(super) fn reconstruction(ctx: &JobCtx) -> Output {
                     &provider,
                     &scene.filter,
                     cancel,
-                )
-                .map_err(|e| e.to_string())?;
+                )?;
                 (ctx.progress)(Partial {
                     value: NodeValue::Reconstruction(Arc::new(ReconData::new(p))),
                     accuracy: Some(format!(
@@ -216,8 +159,14 @@ pub(super) fn reconstruction(ctx: &JobCtx) -> Output {
                     steps: 2,
                 });
             }
-            crate::core::recon::supersample(&scene.signal, w, spp, &provider, &scene.filter, cancel)
-                .map_err(|e| e.to_string())?
+            crate::core::recon::supersample(
+                &scene.signal,
+                w,
+                spp,
+                &provider,
+                &scene.filter,
+                cancel,
+            )?
         }
     };
     let accuracy = (r.zero_weight > 0).then(|| format!("{} zero-weight pixels", r.zero_weight));
@@ -266,8 +215,7 @@ pub(super) fn reference(ctx: &JobCtx) -> Output {
                 steps,
             });
         },
-    )
-    .map_err(|e| e.to_string())?;
+    )?;
     Ok(data(&r))
 }
 
@@ -278,17 +226,22 @@ pub(super) fn error(ctx: &JobCtx) -> Output {
         dep(done, NodeKind::Reference)?,
     ) {
         (NodeValue::Reconstruction(a), NodeValue::Reference(b)) => (a.clone(), b.clone()),
-        _ => return Err("error inputs have the wrong type".into()),
+        _ => {
+            return Err(NodeError::Internal(
+                "the error node's inputs have other kinds".into(),
+            ))
+        }
     };
     let a = &recon.image;
     let b = &reference.image;
     if a.values.len() != b.values.len() {
-        return Err("reconstruction and reference sizes differ".into());
+        return Err(NodeError::Internal(
+            "reconstruction and reference sizes differ".into(),
+        ));
     }
     // RMSE and PSNR over the f64 pixels, as `samplescope recon` reports them; the image
     // shown is the difference of the two display images.
-    let report = crate::core::recon::error_report(&recon.exact, &reference.pixels)
-        .map_err(|e| e.to_string())?;
+    let report = crate::core::recon::error_report(&recon.exact, &reference.pixels)?;
     let (rmse, psnr) = (report.rmse, report.psnr);
     let mut max = 0.0f32;
     let diff: Vec<f32> = a
@@ -319,7 +272,7 @@ pub const RESPONSE_IMAGE_SIZE: usize = 96;
 
 pub(super) fn response(ctx: &JobCtx) -> Output {
     let (f2, cancel) = (&ctx.scene.filter, ctx.cancel);
-    cancel.check().map_err(|e| e.to_string())?;
+    cancel.check()?;
     let f = &f2.filter;
     let r = f.radius();
     let kernel: Vec<[f64; 2]> = (0..=400)
@@ -328,17 +281,13 @@ pub(super) fn response(ctx: &JobCtx) -> Output {
             [x, f.eval(x)]
         })
         .collect();
-    let curve = f
-        .response_curve(RESPONSE_OMEGA_MAX, 300)
-        .map_err(|e| e.to_string())?;
+    let curve = f.response_curve(RESPONSE_OMEGA_MAX, 300)?;
     let magnitude = curve
         .samples
         .iter()
         .map(|s| [s.omega, s.magnitude])
         .collect();
-    let image = f2
-        .response_image(RESPONSE_IMAGE_SIZE, RESPONSE_OMEGA_MAX)
-        .map_err(|e| e.to_string())?;
+    let image = f2.response_image(RESPONSE_IMAGE_SIZE, RESPONSE_OMEGA_MAX)?;
     let norm = image
         .iter()
         .fold(0.0f64, |a, &b| a.max(b.abs()))
@@ -346,10 +295,8 @@ pub(super) fn response(ctx: &JobCtx) -> Output {
     let n = RESPONSE_IMAGE_SIZE;
     // Row 0 of the response image is the most negative ω_y: flip so ω_y points up.
     let image = ImageData::from_y_up(n, n, |i| (image[i].abs() / norm) as f32);
-    cancel.check().map_err(|e| e.to_string())?;
-    let m = f2
-        .metrics_with(crate::core::filter::metrics::OMEGA_MAX, cancel)
-        .map_err(|e| e.to_string())?;
+    cancel.check()?;
+    let m = f2.metrics_with(crate::core::filter::metrics::OMEGA_MAX, cancel)?;
     Ok((
         NodeValue::Response(Arc::new(ResponseData {
             kernel,
@@ -372,20 +319,14 @@ pub const CONVERGENCE_SPP: [usize; 5] = [1, 4, 16, 64, 256];
 /// Image size of the convergence curve (small: 256 spp per pixel).
 pub const CONVERGENCE_SIZE: usize = 64;
 
-/// The error of a node that needs a generating pattern on a column with imported points.
-fn imported_needs_pattern(c: usize, what: &str) -> String {
-    format!(
-        "column {} shows imported points: {what} needs a pattern that generates new samples \
-         for every pixel; use scattered reconstruction, or a pattern in this column",
-        c + 1
-    )
-}
-
 pub(super) fn convergence(ctx: &JobCtx) -> Output {
     let (scene, c, cancel) = (ctx.scene, ctx.column, ctx.cancel);
     let col = &scene.columns[c];
     if col.points.is_some() {
-        return Err(imported_needs_pattern(c, "the convergence curve"));
+        return Err(NodeError::ImportedNeedsPattern {
+            column: c,
+            what: "the convergence curve",
+        });
     }
     let provider = crate::core::recon::PatternProvider {
         pattern: col.pattern,
@@ -418,8 +359,7 @@ pub(super) fn convergence(ctx: &JobCtx) -> Output {
                 steps,
             })
         },
-    )
-    .map_err(|e| e.to_string())?;
+    )?;
     Ok((NodeValue::Convergence(Arc::new(plain(&curve.points))), None))
 }
 
@@ -483,8 +423,7 @@ pub(super) fn spectrum(ctx: &JobCtx) -> Output {
         cancel,
         crate::core::spectrum::average::PARTIAL_INTERVAL,
         &mut on_partial,
-    )
-    .map_err(|e| e.to_string())?;
+    )?;
     let stages = report
         .stages
         .iter()
@@ -514,7 +453,7 @@ pub(super) fn spectrum(ctx: &JobCtx) -> Output {
 fn spectrum_data(
     spec: &crate::core::spectrum::Spectrum,
     stages: Vec<(String, f64)>,
-) -> Result<SpectrumData, String> {
+) -> Result<SpectrumData, crate::core::spectrum::SpectrumError> {
     let m = spec.m;
     let log = spec.to_display_image();
     // The q-quantiles by selection (O(M²), the same elements a full sort would give).
@@ -528,7 +467,7 @@ fn spectrum_data(
     };
     let (lo, hi) = (pick(0.02), pick(0.998));
     let auto_range = (lo, hi.max(lo + 1e-3));
-    let bins = crate::core::spectrum::radial_average(spec).map_err(|e| e.to_string())?;
+    let bins = crate::core::spectrum::radial_average(spec)?;
     let raps = bins.iter().map(|b| [b.radius, b.mean_power]).collect();
     let anisotropy = bins
         .iter()

@@ -22,86 +22,19 @@
 //! builds and platforms (the on-disk cache relies on it). A field that cannot be serialised
 //! makes no key: the node (and its dependents) reports that error instead of running.
 
-use super::compute::{self, JobCtx, Output};
+use super::compute;
+use super::node::Output;
 use super::{panels, ReconMode, Scene};
 use crate::model::PanelKind;
 use serde::Serialize;
-use std::fmt::Write as _;
-use std::time::Duration;
 
-pub use super::compute::NodeValue;
+pub use super::node::{
+    JobCtx, KeyError, NodeError, NodeKey, NodeKind, NodeResult, NodeValue, Partial,
+};
 pub use crate::model::{
     ConvergencePoint, ErrorData, ImageData, PointsData, ReconData, ReferenceData, ResponseData,
     SpectrumData, StatsData,
 };
-
-/// The kinds of node, in an order where every node comes after its inputs.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize)]
-pub enum NodeKind {
-    Points,
-    Statistics,
-    Spectrum,
-    Samples,
-    Reconstruction,
-    Reference,
-    Error,
-    Response,
-    Convergence,
-    /// The 1D sampling-theorem view (column-independent: computed for column 0 only).
-    Theorem,
-}
-
-impl NodeKind {
-    /// Every kind, in dependency (evaluation) order.
-    pub const ALL: [NodeKind; 10] = [
-        NodeKind::Points,
-        NodeKind::Statistics,
-        NodeKind::Spectrum,
-        NodeKind::Samples,
-        NodeKind::Reconstruction,
-        NodeKind::Reference,
-        NodeKind::Error,
-        NodeKind::Response,
-        NodeKind::Convergence,
-        NodeKind::Theorem,
-    ];
-
-    /// Display name.
-    pub fn name(self) -> &'static str {
-        self.def().name
-    }
-
-    /// This kind's entry in the node table.
-    pub fn def(self) -> &'static NodeDef {
-        &NODES[self as usize]
-    }
-}
-
-/// A node's identity: its kind and the BLAKE3 hash of everything it depends on.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub struct NodeKey {
-    pub kind: NodeKind,
-    pub hash: [u8; 32],
-}
-
-impl NodeKey {
-    /// The hash as 64 lowercase hex digits (file names of the disk cache).
-    pub fn hex(&self) -> String {
-        let mut s = String::with_capacity(64);
-        for b in self.hash {
-            let _ = write!(s, "{b:02x}");
-        }
-        s
-    }
-}
-
-/// Why a node's key could not be made.
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
-#[error("{kind} node: its inputs cannot be keyed: {message}")]
-pub struct KeyError {
-    pub kind: &'static str,
-    pub message: String,
-}
 
 /// A `fmt::Write` that feeds BLAKE3 (RON text is streamed, never built in memory).
 struct HashWriter(blake3::Hasher);
@@ -150,36 +83,6 @@ pub fn key_of(
     Ok(finish_key(kind, fields_hasher(kind, fields)?, deps))
 }
 
-/// A node's result: its value or the error that stopped it, what it cost, and its accuracy.
-#[derive(Debug, Clone)]
-pub struct NodeResult {
-    pub value: Result<NodeValue, String>,
-    /// Wall time of this evaluation (of the original evaluation for cache hits).
-    pub wall: Duration,
-    /// Accuracy reached, where defined (e.g. "rel. ℓ2 error 3.1e-8 (asked 1e-6)").
-    pub accuracy: Option<String>,
-}
-
-impl NodeResult {
-    /// A result that is only an error.
-    pub fn error(message: String) -> Self {
-        NodeResult {
-            value: Err(message),
-            wall: Duration::ZERO,
-            accuracy: None,
-        }
-    }
-
-    /// Approximate heap bytes held (the cache budget counts these).
-    pub fn bytes(&self) -> usize {
-        let base = std::mem::size_of::<Self>() + self.accuracy.as_ref().map_or(0, |s| s.len());
-        base + match &self.value {
-            Ok(v) => v.bytes(),
-            Err(e) => e.len(),
-        }
-    }
-}
-
 /// What a node reads: the nodes it takes results from and its scene fields (hashed).
 pub struct Inputs {
     pub nodes: Vec<NodeKind>,
@@ -209,11 +112,16 @@ impl Inputs {
     }
 }
 
+impl NodeKind {
+    /// This kind's entry in the node table.
+    pub fn def(self) -> &'static NodeDef {
+        &NODES[self as usize]
+    }
+}
+
 /// One row of the node table.
 pub struct NodeDef {
     pub kind: NodeKind,
-    /// Display name.
-    pub name: &'static str,
     /// Whether a visible panel or an effect that is on asks for this node in column `c`
     /// (the rule of [`panels::shows`]; nodes that only feed others say `false`; [`plan`]
     /// adds inputs itself).
@@ -234,7 +142,6 @@ pub struct NodeDef {
 pub static NODES: [NodeDef; 10] = [
     NodeDef {
         kind: NodeKind::Points,
-        name: "points",
         shown: |s, c| panels::shows(s, c, PanelKind::Pattern),
         inputs: |s, c| {
             let col = &s.columns[c];
@@ -250,7 +157,6 @@ pub static NODES: [NodeDef; 10] = [
     },
     NodeDef {
         kind: NodeKind::Statistics,
-        name: "statistics",
         shown: |s, c| panels::shows(s, c, PanelKind::Pattern) && s.effects.statistics,
         inputs: |_, _| Inputs::new(NodeKind::Statistics, &[NodeKind::Points], ()),
         run: compute::statistics,
@@ -259,7 +165,6 @@ pub static NODES: [NodeDef; 10] = [
     },
     NodeDef {
         kind: NodeKind::Spectrum,
-        name: "spectrum",
         shown: |s, c| panels::shows(s, c, PanelKind::Spectrum),
         // Realization 0 is the points node's set; realizations r > 0 are generated from the
         // pattern (an imported file has one realization: K does not matter, see `import`).
@@ -285,7 +190,6 @@ pub static NODES: [NodeDef; 10] = [
     },
     NodeDef {
         kind: NodeKind::Samples,
-        name: "samples",
         shown: |_, _| false,
         inputs: |s, _| Inputs::new(NodeKind::Samples, &[NodeKind::Points], s.signal),
         run: compute::samples,
@@ -294,7 +198,6 @@ pub static NODES: [NodeDef; 10] = [
     },
     NodeDef {
         kind: NodeKind::Reconstruction,
-        name: "reconstruction",
         shown: |s, c| panels::shows(s, c, PanelKind::Reconstruction),
         inputs: |s, c| {
             let col = &s.columns[c];
@@ -321,7 +224,6 @@ pub static NODES: [NodeDef; 10] = [
     },
     NodeDef {
         kind: NodeKind::Reference,
-        name: "reference",
         shown: |s, c| panels::shows(s, c, PanelKind::Reference),
         inputs: |s, _| Inputs::new(NodeKind::Reference, &[], (&s.signal, s.recon.size)),
         run: compute::reference,
@@ -331,7 +233,6 @@ pub static NODES: [NodeDef; 10] = [
     },
     NodeDef {
         kind: NodeKind::Error,
-        name: "error",
         shown: |s, c| panels::shows(s, c, PanelKind::Error),
         inputs: |_, _| {
             Inputs::new(
@@ -347,7 +248,6 @@ pub static NODES: [NodeDef; 10] = [
     },
     NodeDef {
         kind: NodeKind::Response,
-        name: "filter response",
         shown: |s, c| panels::shows(s, c, PanelKind::Response),
         inputs: |s, _| Inputs::new(NodeKind::Response, &[], s.filter),
         run: compute::response,
@@ -356,7 +256,6 @@ pub static NODES: [NodeDef; 10] = [
     },
     NodeDef {
         kind: NodeKind::Convergence,
-        name: "convergence",
         shown: |s, c| panels::shows(s, c, PanelKind::Convergence),
         inputs: |s, c| {
             let col = &s.columns[c];
@@ -372,7 +271,6 @@ pub static NODES: [NodeDef; 10] = [
     },
     NodeDef {
         kind: NodeKind::Theorem,
-        name: "sampling theorem",
         // Column-independent: keyed by its settings alone, listed for column 0 only.
         shown: |s, c| panels::shows(s, c, PanelKind::TheoremSignal),
         inputs: |s, _| Inputs::new(NodeKind::Theorem, &[], s.theorem),

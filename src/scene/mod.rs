@@ -10,6 +10,7 @@ pub mod figure;
 pub mod graph;
 pub mod import;
 pub mod motion;
+pub mod node;
 pub mod panels;
 
 pub use import::ImportedPoints;

@@ -7,6 +7,7 @@ use samplescope::core::cancel::Cancel;
 use samplescope::core::pointset::{read_points_file, OutOfRange, PointsFileError};
 use samplescope::engine::Evaluator;
 use samplescope::scene::graph::{NodeKind, NodeValue};
+use samplescope::scene::node::NodeError;
 use samplescope::scene::{Column, ImportedPoints, ReconMode, Scene, SceneError};
 use std::path::{Path, PathBuf};
 
@@ -191,8 +192,19 @@ fn supersampling_an_imported_column_fails_on_that_panel_only() {
     let (c, kind, msg) = &errors[0];
     assert_eq!((*c, *kind), (0, NodeKind::Reconstruction));
     assert!(
-        msg.contains("column 1") && msg.contains("imported"),
-        "{msg}"
+        matches!(
+            msg,
+            NodeError::ImportedNeedsPattern {
+                column: 0,
+                what: "supersampling"
+            }
+        ),
+        "{msg:?}"
+    );
+    let text = msg.to_string();
+    assert!(
+        text.contains("column 1") && text.contains("imported"),
+        "{text}"
     );
 }
 

@@ -33,6 +33,6 @@ pub fn time_label(ui: &mut egui::Ui, r: &Shown, show_timings: bool) {
 }
 
 /// A node's error, in red, prefixed with what failed.
-pub fn error_label(ui: &mut egui::Ui, what: &str, e: &str) {
+pub fn error_label(ui: &mut egui::Ui, what: &str, e: &dyn std::fmt::Display) {
     ui.colored_label(Color32::from_rgb(200, 40, 40), format!("{what}: {e}"));
 }
