@@ -90,7 +90,6 @@ impl Panel for FilterPanel {
         let range = DisplayRange {
             lo: 0.0,
             hi: 1.0,
-            log: false,
             colormap: cx.view.colormap,
         };
         cx.images.ui(
