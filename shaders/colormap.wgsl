@@ -1,10 +1,10 @@
 // Float image display: the value texture (R32Float, read with textureLoad, nearest) is mapped
-// through an optional log10, a [lo, hi] window and a 256-entry colour map. Changing the window,
-// the log switch or the colour map only rewrites the uniforms: nothing is recomputed.
+// through a [lo, hi] window and a 256-entry colour map. Changing the window or the colour map
+// only rewrites the uniforms: nothing is recomputed.
 
 struct Uniforms {
     view: vec4<f32>,   // uv window: origin.xy, size.zw (nearest-neighbour zoom)
-    range: vec4<f32>,  // lo, hi, log (0/1), floor for the log
+    range: vec4<f32>,  // lo, hi, unused, unused
     size: vec4<f32>,   // texture width, height, unused, unused
 };
 
@@ -36,10 +36,7 @@ fn fs_main(in: VsOut) -> @location(0) vec4<f32> {
     let h = i32(u.size.y);
     let x = clamp(i32(floor(in.uv.x * u.size.x)), 0, w - 1);
     let y = clamp(i32(floor(in.uv.y * u.size.y)), 0, h - 1);
-    var v = textureLoad(values, vec2<i32>(x, y), 0).r;
-    if (u.range.z > 0.5) {
-        v = log(max(v, u.range.w)) / log(10.0);
-    }
+    let v = textureLoad(values, vec2<i32>(x, y), 0).r;
     let t = clamp((v - u.range.x) / max(u.range.y - u.range.x, 1e-30), 0.0, 1.0);
     let i = i32(round(t * 255.0));
     return vec4<f32>(textureLoad(lut, vec2<i32>(i, 0), 0).rgb, 1.0);

@@ -3,7 +3,7 @@
 //!
 //! Resources live in the renderer's `callback_resources`, keyed per panel, because every
 //! `prepare` runs before any `paint`. Data are uploaded only when their version changes; a
-//! change of display range, log switch or colour map rewrites a 48-byte uniform buffer.
+//! change of display range or colour map rewrites a 48-byte uniform buffer.
 
 use eframe::egui;
 use eframe::egui_wgpu::{self, wgpu};
@@ -16,12 +16,10 @@ pub use crate::model::Colormap;
 /// How a float image is mapped to colour.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct DisplayRange {
-    /// Value (or log10 value) mapped to the first colour.
+    /// Value mapped to the first colour.
     pub lo: f32,
-    /// Value (or log10 value) mapped to the last colour.
+    /// Value mapped to the last colour.
     pub hi: f32,
-    /// Apply log10 before the window.
-    pub log: bool,
     /// Colour map.
     pub colormap: Colormap,
 }
@@ -442,12 +440,7 @@ impl egui_wgpu::CallbackTrait for ImageCallback {
         }
         let uniforms = ImageUniforms {
             view: self.window,
-            range: [
-                self.range.lo,
-                self.range.hi,
-                if self.range.log { 1.0 } else { 0.0 },
-                1e-30,
-            ],
+            range: [self.range.lo, self.range.hi, 0.0, 0.0],
             size: [w as f32, h as f32, 0.0, 0.0],
         };
         queue.write_buffer(&slot.uniforms, 0, bytemuck::bytes_of(&uniforms));
@@ -496,15 +489,10 @@ fn write_lut(queue: &wgpu::Queue, lut: &wgpu::Texture, colormap: Colormap) {
 }
 
 /// CPU colour mapping of a float image (the fallback when wgpu is unavailable): the one
-/// colorizer of [`crate::model::colorize`], after log10 when the range asks for it.
+/// colorizer of [`crate::model::colorize`].
 pub fn colorize(image: &FloatImage, range: DisplayRange) -> egui::ColorImage {
     let (lo, hi) = (range.lo as f64, range.hi as f64);
-    let rgb = if range.log {
-        let logs: Vec<f32> = image.values.iter().map(|v| v.max(1e-30).log10()).collect();
-        crate::model::colorize(&logs, lo, hi, range.colormap)
-    } else {
-        crate::model::colorize(image.values.as_slice(), lo, hi, range.colormap)
-    };
+    let rgb = crate::model::colorize(image.values.as_slice(), lo, hi, range.colormap);
     let pixels = rgb
         .chunks_exact(3)
         .map(|p| egui::Color32::from_rgb(p[0], p[1], p[2]))

@@ -84,12 +84,12 @@ impl Panel for FilterPanel {
                     p.line(Line::new("ideal low-pass", part.clone()).color(Color32::GRAY));
                 }
                 p.line(Line::new("|H(ω)|", mag));
-                p.vline(VLine::new("Nyquist", 0.5).color(Color32::from_rgb(200, 60, 60)));
+                let [r, g, b] = crate::model::palette::NYQUIST;
+                p.vline(VLine::new("Nyquist", 0.5).color(Color32::from_rgb(r, g, b)));
             });
         let range = DisplayRange {
             lo: 0.0,
             hi: 1.0,
-            log: false,
             colormap: cx.view.colormap,
         };
         cx.images.ui(

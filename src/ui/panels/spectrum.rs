@@ -53,7 +53,6 @@ impl Panel for SpectrumPanel {
         let range = DisplayRange {
             lo,
             hi,
-            log: false,
             colormap: cx.view.colormap,
         };
         cx.images.ui(

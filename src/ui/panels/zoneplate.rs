@@ -71,7 +71,6 @@ impl Panel for ZonePlatePanel {
         let grey = DisplayRange {
             lo: 0.0,
             hi: 1.0,
-            log: false,
             colormap: Colormap::Greys,
         };
         let (image, range) = match &r.value {
@@ -82,7 +81,6 @@ impl Panel for ZonePlatePanel {
                 DisplayRange {
                     lo: 0.0,
                     hi: d.max_error.max(1e-6),
-                    log: false,
                     colormap: Colormap::Inferno,
                 },
             ),

@@ -12,7 +12,7 @@ pub struct ImageView {
     /// Whether the wgpu pipelines are installed (else images are colour-mapped on the CPU).
     gpu: bool,
     /// CPU textures for the fallback path, keyed per panel: (image version, range key, texture).
-    textures: HashMap<egui::Id, (u64, [u32; 4], egui::TextureHandle)>,
+    textures: HashMap<egui::Id, (u64, [u32; 3], egui::TextureHandle)>,
 }
 
 impl ImageView {
@@ -61,7 +61,6 @@ impl ImageView {
             let key = [
                 range.lo.to_bits(),
                 range.hi.to_bits(),
-                range.log as u32,
                 range.colormap as u32,
             ];
             let entry = self.textures.get(&id);
