@@ -596,6 +596,19 @@ pub fn csv(n: usize, sphere: bool) -> Estimate {
     )
 }
 
+/// Writing `rows` lines of numbers as text (a CSV of values), e.g. a spectrum's `kx,ky,power`.
+pub fn text_rows(what: &str, rows: usize) -> Estimate {
+    let r = rows as f64;
+    let bytes = 40.0 * r;
+    Estimate::new(
+        format!("{what} of {rows} rows"),
+        r,
+        Unit::Points,
+        r * cpu(CSV_LINE_NS) + touch(bytes),
+        bytes,
+    )
+}
+
 // ---------------------------------------------------------------------------------------
 // Sampling and reconstruction.
 
