@@ -6,6 +6,7 @@ use samplescope::ui::SamplescopeApp;
 use std::sync::Arc;
 
 mod bad_input;
+mod budget_cli;
 mod cli_points;
 mod figures;
 mod filter_cli;
