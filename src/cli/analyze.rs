@@ -135,8 +135,7 @@ pub fn run(args: &AnalyzeArgs, session: &Session) -> Result<(), CliError> {
         let n = args.n.unwrap_or(0);
         (None, Some((pattern_from_args(name, &args.set)?, n)))
     };
-    req.validate()
-        .map_err(|e| CliError::Usage(e.to_string()))?;
+    req.validate().map_err(|e| CliError::Usage(e.to_string()))?;
     let n = match (&file_points, &generator) {
         (Some(pts), _) => pts.len(),
         (None, Some((_, n))) => *n,
@@ -178,8 +177,7 @@ pub fn run(args: &AnalyzeArgs, session: &Session) -> Result<(), CliError> {
     timings.push(("points".into(), t0.elapsed().as_secs_f64() * 1e3));
 
     progress.stage(first);
-    let stats =
-        metrics::statistics(&points, cancel).map_err(|e| CliError::Usage(e.to_string()))?;
+    let stats = metrics::statistics(&points, cancel).map_err(|e| CliError::Usage(e.to_string()))?;
     for (name, d) in &stats.timings {
         timings.push((name.to_string(), d.as_secs_f64() * 1e3));
     }

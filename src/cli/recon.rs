@@ -196,8 +196,7 @@ pub fn run(args: &ReconArgs, session: &Session) -> Result<(), CliError> {
             progress.stage(1);
             let values = sample_signal(&signal, &g.points, cancel).map_err(|e| usage(&e))?;
             progress.stage(2);
-            reconstruct_scattered(&g.points, &values, w, &filter, cancel)
-                .map_err(|e| usage(&e))?
+            reconstruct_scattered(&g.points, &values, w, &filter, cancel).map_err(|e| usage(&e))?
         }
     };
     let recon_ms = t0.elapsed().as_secs_f64() * 1e3;

@@ -81,7 +81,13 @@ fn node_estimates(scene: &Scene, c: usize, kind: NodeKind) -> Vec<Estimate> {
                 let mut v = Vec::new();
                 let preview = spp / PREVIEW_DIVISOR;
                 if preview >= 1 && w * w * spp > PREVIEW_SAMPLES {
-                    v.push(budget::supersampling(signal, w, preview, &col.pattern, filter));
+                    v.push(budget::supersampling(
+                        signal,
+                        w,
+                        preview,
+                        &col.pattern,
+                        filter,
+                    ));
                 }
                 v.push(budget::supersampling(signal, w, spp, &col.pattern, filter));
                 v

@@ -49,7 +49,14 @@ fn the_measured_failures_are_refused_at_once() {
         limit,
     );
     assert_refused(
-        &["points", "best-candidate", "-n", "16777216", "--set", "m=1000"],
+        &[
+            "points",
+            "best-candidate",
+            "-n",
+            "16777216",
+            "--set",
+            "m=1000",
+        ],
         "best-candidate n = 16777216, m = 1000",
         limit,
     );
@@ -84,7 +91,17 @@ fn the_measured_failures_are_refused_at_once() {
     );
     // 256 exact 2048² periodograms.
     assert_refused(
-        &["analyze", "jitter", "-n", "4096", "--size", "2048", "--exact", "--realizations", "256"],
+        &[
+            "analyze",
+            "jitter",
+            "-n",
+            "4096",
+            "--size",
+            "2048",
+            "--exact",
+            "--realizations",
+            "256",
+        ],
         "spectrum 2048×2048 of 4096 points, K = 256, exact DFT",
         limit,
     );
@@ -94,7 +111,15 @@ fn the_measured_failures_are_refused_at_once() {
 fn memory_has_a_limit_of_its_own() {
     // Measured peak 2.4 GB: within the default 4 GiB, refused below it.
     assert_refused(
-        &["recon", "--size", "8192", "-n", "16777216", "--budget-memory", "1"],
+        &[
+            "recon",
+            "--size",
+            "8192",
+            "-n",
+            "16777216",
+            "--budget-memory",
+            "1",
+        ],
         "scattered reconstruction of 16777216 samples on 8192×8192",
         "the memory limit is 1 GiB (raise it with --budget-memory GIB)",
     );
@@ -124,7 +149,11 @@ fn budget_moves_the_limit_and_work_inside_it_runs() {
     // A limit is a positive number.
     let (o, _) = samplescope(&["points", "random", "-n", "4", "--budget", "0"]);
     assert_eq!(o.status.code(), Some(2));
-    assert!(stderr(&o).contains("must be a positive number"), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains("must be a positive number"),
+        "{}",
+        stderr(&o)
+    );
 }
 
 #[test]
@@ -144,10 +173,19 @@ fn estimate_prints_the_plan_and_computes_nothing() {
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
     assert!(took < Duration::from_secs(1));
     let text = String::from_utf8_lossy(&o.stdout);
-    assert!(text.contains("supersampling 1024×1024 at 256 spp"), "{text}");
+    assert!(
+        text.contains("supersampling 1024×1024 at 256 spp"),
+        "{text}"
+    );
     assert!(text.contains("reference image 1024×1024"), "{text}");
     assert!(text.contains("PNG 1024×1024"), "{text}");
-    assert!(text.lines().last().unwrap_or("").starts_with("total: about "), "{text}");
+    assert!(
+        text.lines()
+            .last()
+            .unwrap_or("")
+            .starts_with("total: about "),
+        "{text}"
+    );
     assert!(!out.exists());
 }
 
@@ -174,8 +212,16 @@ const HEAVY_SPECTRUM: &str = r#"(
 fn render_refuses_a_scene_beyond_the_budget() {
     let dir = temp_dir("scene");
     for (name, text, operation) in [
-        ("ss.ron", HEAVY_SUPERSAMPLING, "supersampling 2048×2048 at 1024 spp"),
-        ("spec.ron", HEAVY_SPECTRUM, "spectrum 2048×2048 of 4096 points, K = 256"),
+        (
+            "ss.ron",
+            HEAVY_SUPERSAMPLING,
+            "supersampling 2048×2048 at 1024 spp",
+        ),
+        (
+            "spec.ron",
+            HEAVY_SPECTRUM,
+            "spectrum 2048×2048 of 4096 points, K = 256",
+        ),
     ] {
         let scene = dir.join(name);
         std::fs::write(&scene, text).expect("scene");
@@ -190,8 +236,10 @@ fn render_refuses_a_scene_beyond_the_budget() {
             operation,
             "the limit is 60 s",
         );
-        assert!(stderr(&samplescope(&["render", scene.to_str().unwrap_or(""), "--out", "x"]).0)
-            .starts_with(&format!("error: {}", scene.display())));
+        assert!(
+            stderr(&samplescope(&["render", scene.to_str().unwrap_or(""), "--out", "x"]).0)
+                .starts_with(&format!("error: {}", scene.display()))
+        );
         assert!(!out.exists(), "nothing is written");
     }
 }

@@ -30,6 +30,7 @@ mod recon_reference;
 mod recon_scattered;
 mod recon_supersample;
 mod render_cli;
+mod scene_cost;
 mod scene_graph;
 mod scenes_all;
 mod signal_shapes;
