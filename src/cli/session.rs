@@ -223,6 +223,11 @@ pub fn write_output(path: &Path, bytes: &[u8], cancel: &Cancel) -> Result<(), Cl
         path: path.display().to_string(),
         source,
     };
+    // A device or a pipe (`--out /dev/null`, `--out /dev/stdout`) is written as it is: it
+    // holds no partial file, and renaming over it would replace it.
+    if std::fs::metadata(path).is_ok_and(|m| !m.is_file() && !m.is_dir()) {
+        return std::fs::write(path, bytes).map_err(io);
+    }
     let partial = partial_path(path);
     if let Err(e) = std::fs::write(&partial, bytes) {
         let _ = std::fs::remove_file(&partial);

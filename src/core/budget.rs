@@ -35,8 +35,8 @@
 //! | try | Bridson annulus candidates | [`BRIDSON_TRY_NS`] |
 //! | point | the other patterns, CSV lines | 30–150, 600 |
 //! | evaluation | signal evaluations | 40–60 (parallel) |
-//! | tap | kernel taps of splatting | 2 (separable), 30 (radial) |
-//! | multiply-add | exact DFT | 1.5 (parallel) |
+//! | tap | kernel taps of splatting | 2 (separable, plus 40 per 1D factor), 50 (radial) |
+//! | multiply-add | exact DFT | 2 (parallel) |
 //! | cell | star-discrepancy sweep | 0.65 |
 //!
 //! Touching freshly allocated memory costs about [`BYTE_NS`] per byte on that machine (page
@@ -317,7 +317,7 @@ pub const BC_CANDIDATE_NS: f64 = 20.0;
 pub const BC_CACHE_POINTS: f64 = 250_000.0;
 /// Per placed point of best candidate (the rebuilt rasters and grids; dominant for the
 /// small per-pixel patterns of supersampling).
-const BC_POINT_NS: f64 = 1_700.0;
+const BC_POINT_NS: f64 = 3_000.0;
 /// One dart of dart throwing (3×3 cells of the grid searched), while the grid fits in cache.
 pub const DART_NS: f64 = 170.0;
 /// One Bridson annulus try (about 1.7 draws of the rejection sampler, a 5×5 cell search).
@@ -337,9 +337,9 @@ const EVAL_NS: f64 = 40.0;
 /// One kernel tap of a separable splat (a packed multiply-add), of a radial one (a filter
 /// evaluation at |d|).
 const TAP_NS: f64 = 2.0;
-const RADIAL_TAP_NS: f64 = 30.0;
+const RADIAL_TAP_NS: f64 = 50.0;
 /// One 1D filter factor of a separable splat (2·taps per axis per sample).
-const FACTOR_NS: f64 = 30.0;
+const FACTOR_NS: f64 = 40.0;
 /// Per sample of a scattered splat: its range in each of the
 /// [`SPLAT_BANDS`] bands of rows, the tile sort.
 const SPLAT_SAMPLE_NS: f64 = 30.0;
@@ -347,21 +347,21 @@ const SPLAT_BAND_NS: f64 = 3.0;
 /// Bands of output rows of the parallel splat on the reference machine (4 per thread).
 const SPLAT_BANDS: f64 = 8.0;
 /// Per sample of the serial supersampling splat (range, bookkeeping, the batch buffer).
-const SUPERSAMPLE_SAMPLE_NS: f64 = 40.0;
+const SUPERSAMPLE_SAMPLE_NS: f64 = 80.0;
 /// Per output pixel of an image (normalising, the mask, copying out).
 const PIXEL_NS: f64 = 15.0;
 /// Per byte of freshly allocated memory touched (page faults).
-pub const BYTE_NS: f64 = 0.5;
+pub const BYTE_NS: f64 = 0.8;
 /// One pixel of an exact area-coverage reference (clipping the pixel square).
 const AREA_PIXEL_NS: f64 = 90.0;
 /// One pixel of a closed-form reference (sin_pi and sincs in double-double).
-const INTEGRAL_PIXEL_NS: f64 = 200.0;
+const INTEGRAL_PIXEL_NS: f64 = 300.0;
 /// One integrand evaluation of the quadrature reference (sin_pi and cos_pi of a double-double).
 const QUADRATURE_EVAL_NS: f64 = 40.0;
 /// One PNG pixel (row flip, colour map, deflate).
 const PNG_PIXEL_NS: f64 = 12.0;
 /// One complex multiply-add of the exact DFT's phasor recurrences.
-const DFT_NS: f64 = 1.5;
+const DFT_NS: f64 = 2.0;
 /// One NUFFT spreading tap, one FFT butterfly unit (n² log₂ n on the n×n upsampled grid).
 const NUFFT_TAP_NS: f64 = 3.0;
 const FFT_NS: f64 = 2.0;

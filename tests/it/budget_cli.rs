@@ -270,3 +270,14 @@ fn ctrl_c_stops_with_status_130_and_leaves_no_file() {
     let left: Vec<_> = std::fs::read_dir(&dir).expect("dir").collect();
     assert!(left.is_empty(), "no file, partial or not: {left:?}");
 }
+
+#[cfg(unix)]
+#[test]
+fn an_output_that_is_a_device_is_written_through() {
+    use std::os::unix::fs::FileTypeExt;
+    let (o, _) = samplescope(&["points", "random", "-n", "10", "--out", "/dev/null"]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let meta = std::fs::metadata("/dev/null").expect("/dev/null");
+    assert!(meta.file_type().is_char_device(), "still the device");
+    assert!(!std::path::Path::new("/dev/.null.partial").exists());
+}
