@@ -50,6 +50,9 @@ fn main() -> ExitCode {
         }
     };
     let session = cli::session::Session::new(&cli.budget);
+    if cli.command.is_some() {
+        session.stop_on_ctrl_c();
+    }
     let result = match cli.command {
         Some(Command::Points(args)) => cli::points::run(&args, &session),
         Some(Command::Filter(args)) => cli::filter::run(&args, &session),

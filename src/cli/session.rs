@@ -57,20 +57,15 @@ pub struct Session {
     pub budget: Budget,
     /// Cancelled by Ctrl-C; every computation of the command takes it.
     pub cancel: Cancel,
+    /// The flag under `cancel`, which the signal handlers set.
+    flag: Arc<AtomicBool>,
     estimate_only: bool,
 }
 
 impl Session {
-    /// A session with the limits of `args`; Ctrl-C and SIGTERM trip its token (a second one
-    /// ends the process with status 130).
+    /// A session with the limits of `args` and a fresh token (see [`Session::stop_on_ctrl_c`]).
     pub fn new(args: &BudgetArgs) -> Self {
         let flag = Arc::new(AtomicBool::new(false));
-        for signal in [signal_hook::consts::SIGINT, signal_hook::consts::SIGTERM] {
-            // Failing to install a handler only loses the clean stop: the default handler
-            // still ends the process.
-            let _ = signal_hook::flag::register_conditional_shutdown(signal, 130, flag.clone());
-            let _ = signal_hook::flag::register(signal, flag.clone());
-        }
         let defaults = Budget::default();
         Session {
             budget: Budget {
@@ -79,8 +74,21 @@ impl Session {
                     .budget_memory
                     .map_or(defaults.bytes, |g| g * (1u64 << 30) as f64),
             },
+            flag: flag.clone(),
             cancel: Cancel::from_flag(flag),
             estimate_only: args.estimate,
+        }
+    }
+
+    /// From now on Ctrl-C and SIGTERM trip the session's token; a second one ends the process
+    /// with status 130. (Only subcommands call this: the GUI keeps the default handlers.)
+    pub fn stop_on_ctrl_c(&self) {
+        for signal in [signal_hook::consts::SIGINT, signal_hook::consts::SIGTERM] {
+            // Failing to install a handler only loses the clean stop: the default handler
+            // still ends the process.
+            let _ =
+                signal_hook::flag::register_conditional_shutdown(signal, 130, self.flag.clone());
+            let _ = signal_hook::flag::register(signal, self.flag.clone());
         }
     }
 
