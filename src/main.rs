@@ -20,6 +20,8 @@ struct Cli {
     /// rejecting points outside.
     #[arg(long, global = false, requires = "points")]
     normalize: bool,
+    #[command(flatten)]
+    budget: cli::session::BudgetArgs,
     #[command(subcommand)]
     command: Option<Command>,
 }
@@ -47,12 +49,16 @@ fn main() -> ExitCode {
             return ExitCode::from(code);
         }
     };
+    let session = cli::session::Session::new(&cli.budget);
+    if cli.command.is_some() {
+        session.stop_on_ctrl_c();
+    }
     let result = match cli.command {
-        Some(Command::Points(args)) => cli::points::run(&args),
-        Some(Command::Filter(args)) => cli::filter::run(&args),
-        Some(Command::Analyze(args)) => cli::analyze::run(&args),
-        Some(Command::Recon(args)) => cli::recon::run(&args),
-        Some(Command::Render(args)) => cli::render::run(&args),
+        Some(Command::Points(args)) => cli::points::run(&args, &session),
+        Some(Command::Filter(args)) => cli::filter::run(&args, &session),
+        Some(Command::Analyze(args)) => cli::analyze::run(&args, &session),
+        Some(Command::Recon(args)) => cli::recon::run(&args, &session),
+        Some(Command::Render(args)) => cli::render::run(&args, &session),
         None => {
             samplescope::ui::run_gui_with_points(cli.scene, cli.points.map(|p| (p, cli.normalize)))
                 .map_err(cli::CliError::Gui)
@@ -66,6 +72,11 @@ fn main() -> ExitCode {
     match result {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) if e.is_broken_pipe() => ExitCode::SUCCESS,
+        // Whatever error a computation stopped by Ctrl-C returned, it was the interruption.
+        Err(_) if session.cancel.is_cancelled() => {
+            eprintln!("interrupted");
+            ExitCode::from(cli::CliError::Cancelled.exit_code())
+        }
         Err(e) => {
             eprintln!("error: {e}");
             ExitCode::from(e.exit_code())

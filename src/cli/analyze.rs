@@ -2,17 +2,19 @@
 //! the time and accuracy of every stage.
 
 use super::outln;
+use super::session::{write_output, Session};
 use super::{parse_n, pattern_from_args, CliError};
-use samplescope::core::cancel::Cancel;
+use samplescope::core::budget;
 use samplescope::core::metrics;
 use samplescope::core::pointset::{read_points, OutOfRange, PointsFileError};
 use samplescope::core::rng::derive_seed;
 use samplescope::core::spectrum::{
     average_periodogram, radial_average, DcMode, Method, SpectrumRequest,
 };
-use samplescope::export::{flip_rows, png_bytes, write_file, PngColormap};
+use samplescope::export::{flip_rows, png_bytes, PngColormap};
 use serde_json::json;
 use std::fmt::Write as _;
+use std::path::Path;
 use std::time::Instant;
 
 /// The NUFFT tolerance without --tolerance.
@@ -87,11 +89,25 @@ fn io_err(path: &str) -> impl FnOnce(std::io::Error) -> CliError + '_ {
 }
 
 /// Runs `samplescope analyze`.
-pub fn run(args: &AnalyzeArgs) -> Result<(), CliError> {
-    let cancel = Cancel::never();
+pub fn run(args: &AnalyzeArgs, session: &Session) -> Result<(), CliError> {
+    let cancel = &session.cancel;
     let mut timings: Vec<(String, f64)> = Vec::new();
+    let req = SpectrumRequest {
+        size: args.size,
+        method: if args.exact {
+            Method::Exact
+        } else {
+            Method::Nufft {
+                tolerance: args.tolerance.unwrap_or(DEFAULT_TOLERANCE),
+            }
+        },
+        realizations: args.realizations,
+        dc: DcMode::Show,
+        ..SpectrumRequest::default()
+    };
     let t0 = Instant::now();
-    let (points, generator) = if let Some(path) = &args.points {
+    // A point file is read first (bounded and streamed): its size sets the estimates.
+    let (file_points, generator) = if let Some(path) = &args.points {
         if args.realizations != 1 {
             return Err(CliError::Usage(format!(
                 "--realizations = {}: must be 1 with --points (a file is one realization)",
@@ -113,39 +129,61 @@ pub fn run(args: &AnalyzeArgs) -> Result<(), CliError> {
             },
             e => CliError::Usage(format!("{path}: {e}")),
         })?;
-        (pts, None)
+        (Some(pts), None)
     } else {
         let name = args.pattern.as_deref().unwrap_or_default();
         let n = args.n.unwrap_or(0);
-        let pattern = pattern_from_args(name, &args.set)?;
-        let g = pattern.generate_with(n, args.seed, &cancel)?;
-        if let Some(note) = &g.note {
-            eprintln!("note: {note}");
+        (None, Some((pattern_from_args(name, &args.set)?, n)))
+    };
+    req.validate().map_err(|e| CliError::Usage(e.to_string()))?;
+    let n = match (&file_points, &generator) {
+        (Some(pts), _) => pts.len(),
+        (None, Some((_, n))) => *n,
+        (None, None) => 0,
+    };
+    let m = args.size;
+    let mut plan = Vec::new();
+    if let Some((pattern, n)) = &generator {
+        plan.push(budget::pattern(pattern, *n));
+    }
+    let first = plan.len();
+    plan.push(budget::statistics(n));
+    plan.push(budget::spectrum(
+        &req,
+        n,
+        generator.as_ref().map(|(p, _)| p),
+    ));
+    if args.spectrum.is_some() {
+        plan.push(budget::spectrum_image(m));
+    }
+    if args.spectrum_data.is_some() {
+        plan.push(budget::text_rows("spectrum CSV", m * m));
+    }
+    let Some(progress) = session.admit(plan)? else {
+        return Ok(());
+    };
+    progress.stage(0);
+    let points = match (file_points, &generator) {
+        (Some(pts), _) => pts,
+        (None, Some((pattern, n))) => {
+            let g = pattern.generate_with(*n, args.seed, cancel)?;
+            if let Some(note) = &g.note {
+                eprintln!("note: {note}");
+            }
+            g.points
         }
-        (g.points, Some((pattern, n)))
+        (None, None) => Vec::new(),
     };
     timings.push(("points".into(), t0.elapsed().as_secs_f64() * 1e3));
 
-    let stats =
-        metrics::statistics(&points, &cancel).map_err(|e| CliError::Usage(e.to_string()))?;
+    progress.stage(first);
+    let stats = metrics::statistics(&points, cancel).map_err(|e| CliError::Usage(e.to_string()))?;
     for (name, d) in &stats.timings {
         timings.push((name.to_string(), d.as_secs_f64() * 1e3));
     }
 
-    let req = SpectrumRequest {
-        size: args.size,
-        method: if args.exact {
-            Method::Exact
-        } else {
-            Method::Nufft {
-                tolerance: args.tolerance.unwrap_or(DEFAULT_TOLERANCE),
-            }
-        },
-        realizations: args.realizations,
-        dc: DcMode::Show,
-        ..SpectrumRequest::default()
-    };
-    let first = derive_seed(args.seed, 0);
+    progress.stage(first + 1);
+    let first_seed = derive_seed(args.seed, 0);
     let seed = args.seed;
     let pts = points.clone();
     let (spec, report) = average_periodogram(
@@ -153,15 +191,16 @@ pub fn run(args: &AnalyzeArgs) -> Result<(), CliError> {
         seed,
         move |sd| match &generator {
             // Realization 0 is the analysed point set; others are fresh seeds.
-            Some((pattern, n)) if sd != first => pattern.generate(*n, sd),
+            Some((pattern, n)) if sd != first_seed => pattern.generate(*n, sd),
             _ => Ok(pts.clone()),
         },
-        &cancel,
+        cancel,
     )
     .map_err(|e| CliError::Usage(e.to_string()))?;
     for (name, d) in &report.stages {
         timings.push((format!("spectrum {name}"), d.as_secs_f64() * 1e3));
     }
+    progress.stage(first + 2);
     let bins = radial_average(&spec).map_err(|e| CliError::Usage(e.to_string()))?;
 
     if let Some(path) = &args.spectrum {
@@ -193,22 +232,23 @@ pub fn run(args: &AnalyzeArgs) -> Result<(), CliError> {
         ];
         let bytes = png_bytes(&values, m, m, lo, hi, PngColormap::Viridis, &text)
             .map_err(|e| CliError::Usage(e.to_string()))?;
-        write_file(path, &bytes).map_err(|e| CliError::Usage(e.to_string()))?;
+        write_output(Path::new(path), &bytes, cancel)?;
     }
     if let Some(path) = &args.spectrum_data {
         let mut s = String::from("kx,ky,power\n");
         for (kx, ky, p) in spec.to_csv_rows() {
             let _ = writeln!(s, "{kx},{ky},{p:?}");
         }
-        std::fs::write(path, s).map_err(io_err(path))?;
+        write_output(Path::new(path), s.as_bytes(), cancel)?;
     }
     if let Some(path) = &args.raps {
         let mut s = String::from("radius,power\n");
         for b in &bins {
             let _ = writeln!(s, "{:?},{:?}", b.radius, b.mean_power);
         }
-        std::fs::write(path, s).map_err(io_err(path))?;
+        write_output(Path::new(path), s.as_bytes(), cancel)?;
     }
+    drop(progress);
 
     let md = stats.min_distance.as_ref();
     let error = report.error.map(|e| e.relative_l2);

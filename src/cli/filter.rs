@@ -9,8 +9,10 @@
 //!   mode writes the 1D response H(ω); radial mode the Hankel profile H₂(ρ).
 //! - `--list`: every filter and preset with its parameters, defaults and allowed ranges.
 
+use super::session::{write_output, Session};
 use super::CliError;
 use super::{out, outln};
+use samplescope::core::budget;
 use samplescope::core::filter::{
     params::{ParamKind, ParamValue, BOOL_OPTIONS},
     Filter, Filter2D, FilterMetrics, Mode2D,
@@ -46,7 +48,7 @@ pub struct FilterArgs {
 }
 
 /// Runs `samplescope filter`.
-pub fn run(args: &FilterArgs) -> Result<(), CliError> {
+pub fn run(args: &FilterArgs, session: &Session) -> Result<(), CliError> {
     if args.list {
         out!("{}", list_text())?;
         return Ok(());
@@ -59,12 +61,12 @@ pub fn run(args: &FilterArgs) -> Result<(), CliError> {
     let filter = filter_from_args(name, &args.set)?;
     let mode = Mode2D::from_name(&args.mode)?;
     let f2 = Filter2D::new(filter, mode)?;
+    if session.admit(vec![budget::filter_metrics(&f2)])?.is_none() {
+        return Ok(());
+    }
     if let Some(path) = &args.response {
         let text = response_csv(&f2)?;
-        std::fs::write(path, text).map_err(|source| CliError::Io {
-            path: path.clone(),
-            source,
-        })?;
+        write_output(std::path::Path::new(path), text.as_bytes(), &session.cancel)?;
     }
     let metrics = f2.metrics()?;
     if args.json {

@@ -6,6 +6,7 @@ pub mod filter;
 pub mod points;
 pub mod recon;
 pub mod render;
+pub mod session;
 
 use samplescope::core::filter::FilterError;
 use samplescope::core::pattern::{Pattern, PatternError};
@@ -22,6 +23,13 @@ pub enum CliError {
     /// A filter could not be built or evaluated from the given parameters (exit status 2).
     #[error("{0}")]
     Filter(#[from] FilterError),
+    /// The work is estimated beyond the budget (exit status 2); the message names the
+    /// operation, its estimate, the limit and the flag that raises it.
+    #[error("{0}")]
+    Budget(String),
+    /// Ctrl-C stopped the command (exit status 130).
+    #[error("interrupted")]
+    Cancelled,
     /// The window could not be opened (exit status 1).
     #[error("cannot open the window: {0}")]
     Gui(String),
@@ -71,6 +79,7 @@ impl CliError {
     pub fn exit_code(&self) -> u8 {
         match self {
             CliError::Io { .. } | CliError::Gui(_) | CliError::Output(_) => 1,
+            CliError::Cancelled => 130,
             _ => 2,
         }
     }

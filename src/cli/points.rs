@@ -1,10 +1,12 @@
 //! `samplescope points`: generate a pattern and write CSV.
 
 use super::out;
+use super::session::{write_output, Session};
 use super::{parse_n, pattern_from_args, CliError};
-use samplescope::core::cancel::Cancel;
+use samplescope::core::budget;
 use samplescope::core::pattern::{sphere, Pattern};
 use std::io::Write;
+use std::path::Path;
 
 /// Arguments of `samplescope points`.
 #[derive(clap::Args, Debug)]
@@ -33,7 +35,7 @@ pub struct PointsArgs {
 }
 
 /// Runs `samplescope points`.
-pub fn run(args: &PointsArgs) -> Result<(), CliError> {
+pub fn run(args: &PointsArgs, session: &Session) -> Result<(), CliError> {
     if args.list {
         out!("{}", list_text())?;
         return Ok(());
@@ -44,29 +46,40 @@ pub fn run(args: &PointsArgs) -> Result<(), CliError> {
         ));
     };
     let pattern = pattern_from_args(name, &args.set)?;
-    let generated = pattern.generate_with(n, args.seed, &Cancel::never())?;
+    let plan = vec![budget::pattern(&pattern, n), budget::csv(n, args.sphere)];
+    let Some(progress) = session.admit(plan)? else {
+        return Ok(());
+    };
+    let cancel = &session.cancel;
+    progress.stage(0);
+    let generated = pattern.generate_with(n, args.seed, cancel)?;
     if let Some(note) = &generated.note {
         eprintln!("note: {note}");
     }
+    progress.stage(1);
     let mut text = String::with_capacity(generated.points.len() * 44);
     if args.sphere {
         text.push_str("x,y,z\n");
-        for p in &generated.points {
+        for (i, p) in generated.points.iter().enumerate() {
+            if i % 4096 == 0 {
+                cancel.check().map_err(|_| CliError::Cancelled)?;
+            }
             let v = sphere::square_to_sphere(*p);
             text.push_str(&format!("{:?},{:?},{:?}\n", v.x, v.y, v.z));
         }
     } else {
         text.push_str("x,y\n");
-        for p in &generated.points {
+        for (i, p) in generated.points.iter().enumerate() {
+            if i % 4096 == 0 {
+                cancel.check().map_err(|_| CliError::Cancelled)?;
+            }
             // `{:?}` prints the shortest string that parses back to the same f64.
             text.push_str(&format!("{:?},{:?}\n", p.x, p.y));
         }
     }
+    drop(progress);
     match &args.out {
-        Some(path) => std::fs::write(path, text).map_err(|source| CliError::Io {
-            path: path.clone(),
-            source,
-        }),
+        Some(path) => write_output(Path::new(path), text.as_bytes(), cancel),
         None => {
             let stdout = std::io::stdout();
             let mut lock = stdout.lock();

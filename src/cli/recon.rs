@@ -2,15 +2,17 @@
 //! error against the signal's reference image.
 
 use super::outln;
+use super::session::{write_output, Session};
 use super::{parse_n, pattern_from_args, CliError};
-use samplescope::core::cancel::Cancel;
+use samplescope::core::budget;
 use samplescope::core::filter::{Filter, Filter2D, Mode2D};
 use samplescope::core::recon::{
     error_report, reconstruct_scattered, reference_image_with, sample_signal, supersample,
-    PatternProvider, ReferenceOptions,
+    PatternProvider, ReconError, ReferenceOptions, MAX_SPP, MAX_W,
 };
 use samplescope::core::signal::Signal;
-use samplescope::export::{flip_rows, png_bytes, write_file, PngColormap};
+use samplescope::export::{flip_rows, png_bytes, PngColormap};
+use std::path::Path;
 use std::time::Instant;
 
 /// Arguments of `samplescope recon`.
@@ -125,44 +127,88 @@ pub fn filter_from_args(name: &str, settings: &[String], mode: &str) -> Result<F
 }
 
 /// Runs `samplescope recon`.
-pub fn run(args: &ReconArgs) -> Result<(), CliError> {
-    let cancel = Cancel::never();
+pub fn run(args: &ReconArgs, session: &Session) -> Result<(), CliError> {
+    let cancel = &session.cancel;
     let signal = signal_from_args(&args.signal, &args.signal_set)?;
     let pattern = pattern_from_args(&args.pattern, &args.set)?;
     let filter = filter_from_args(&args.filter, &args.filter_set, &args.mode)?;
     let usage = |e: &dyn std::fmt::Display| CliError::Usage(e.to_string());
-    let t0 = Instant::now();
-    let recon = match (args.spp, args.n) {
-        (Some(spp), _) => {
-            let provider = PatternProvider {
-                pattern,
-                seed: args.seed,
-            };
-            supersample(&signal, args.size, spp, &provider, &filter, &cancel)
-                .map_err(|e| usage(&e))?
+    // The sizes the estimates take are checked first (the same errors the core gives).
+    let range = |field: &'static str, value: usize, max: usize| {
+        if (1..=max).contains(&value) {
+            Ok(())
+        } else {
+            Err(usage(&ReconError::OutOfRange {
+                field,
+                value,
+                min: 1,
+                max,
+            }))
         }
-        (None, Some(n)) => {
-            let g = pattern.generate_with(n, args.seed, &cancel)?;
-            if let Some(note) = &g.note {
-                eprintln!("note: {note}");
-            }
-            let values = sample_signal(&signal, &g.points, &cancel).map_err(|e| usage(&e))?;
-            reconstruct_scattered(&g.points, &values, args.size, &filter, &cancel)
-                .map_err(|e| usage(&e))?
-        }
+    };
+    range("w", args.size, MAX_W)?;
+    let w = args.size;
+    // Ok(spp): supersampling; Err(n): n scattered samples.
+    let sampling = match (args.spp, args.n) {
+        (Some(spp), _) => Ok(spp),
+        (None, Some(n)) => Err(n),
         (None, None) => {
             return Err(CliError::Usage(
                 "recon: give -n N (scattered samples) or --spp S (samples per pixel)".into(),
             ))
         }
     };
+    let mut plan = match sampling {
+        Ok(spp) => {
+            range("spp", spp, MAX_SPP)?;
+            vec![budget::supersampling(&signal, w, spp, &pattern, &filter)]
+        }
+        Err(n) => vec![
+            budget::pattern(&pattern, n),
+            budget::sampling(&signal, n),
+            budget::scattered(n, w, &filter),
+        ],
+    };
+    let after = plan.len();
+    plan.push(budget::reference(&signal, w));
+    plan.push(budget::error_image(w));
+    if args.out.is_some() {
+        plan.push(budget::png(w, w));
+    }
+    let Some(progress) = session.admit(plan)? else {
+        return Ok(());
+    };
+    progress.stage(0);
+    let t0 = Instant::now();
+    let recon = match sampling {
+        Ok(spp) => {
+            let provider = PatternProvider {
+                pattern,
+                seed: args.seed,
+            };
+            supersample(&signal, w, spp, &provider, &filter, cancel).map_err(|e| usage(&e))?
+        }
+        Err(n) => {
+            let g = pattern.generate_with(n, args.seed, cancel)?;
+            if let Some(note) = &g.note {
+                eprintln!("note: {note}");
+            }
+            progress.stage(1);
+            let values = sample_signal(&signal, &g.points, cancel).map_err(|e| usage(&e))?;
+            progress.stage(2);
+            reconstruct_scattered(&g.points, &values, w, &filter, cancel).map_err(|e| usage(&e))?
+        }
+    };
     let recon_ms = t0.elapsed().as_secs_f64() * 1e3;
     let t1 = Instant::now();
-    let reference = reference_image_with(&signal, args.size, &ReferenceOptions::default(), &cancel)
+    progress.stage(after);
+    let reference = reference_image_with(&signal, args.size, &ReferenceOptions::default(), cancel)
         .map_err(|e| usage(&e))?;
     let reference_ms = t1.elapsed().as_secs_f64() * 1e3;
+    progress.stage(after + 1);
     let report = error_report(&recon, &reference.pixels).map_err(|e| usage(&e))?;
     if let Some(path) = &args.out {
+        progress.stage(after + 2);
         let w = args.size;
         let values = flip_rows(&recon.pixels, w);
         let text = [
@@ -177,8 +223,9 @@ pub fn run(args: &ReconArgs) -> Result<(), CliError> {
         ];
         let bytes =
             png_bytes(&values, w, w, 0.0, 1.0, PngColormap::Greys, &text).map_err(|e| usage(&e))?;
-        write_file(path, &bytes).map_err(|e| usage(&e))?;
+        write_output(Path::new(path), &bytes, cancel)?;
     }
+    drop(progress);
     if args.json {
         outln!(
             "{}",

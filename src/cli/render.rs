@@ -9,6 +9,7 @@
 //! the GUI. Same scene → byte-identical files.
 
 use super::outln;
+use super::session::{write_output, Session};
 use super::CliError;
 use samplescope::core::cancel::Cancel;
 use samplescope::engine::Evaluator;
@@ -16,7 +17,7 @@ use samplescope::export::figure::{
     column_file_name, column_png, comparison_file_name, comparison_png, comparison_size, panel_csv,
     panel_file_name, panel_png, panel_svg, MAX_COMPOSITE_PIXELS, SCALES,
 };
-use samplescope::export::{write_file, ExportError};
+use samplescope::export::ExportError;
 use samplescope::model::{ColumnData, FigureContext};
 use samplescope::scene::graph::{NodeKind, NodeResult};
 use samplescope::scene::{figure, panels, Scene, SceneError};
@@ -83,8 +84,8 @@ fn export_err(e: ExportError) -> CliError {
     }
 }
 
-fn write(path: &Path, bytes: &[u8]) -> Result<(), CliError> {
-    write_file(&path.display().to_string(), bytes).map_err(export_err)?;
+fn write(path: &Path, bytes: &[u8], cancel: &Cancel) -> Result<(), CliError> {
+    write_output(path, bytes, cancel)?;
     outln!("{}", path.display())?;
     Ok(())
 }
@@ -95,6 +96,7 @@ fn evaluate(
     scene: &Scene,
     source: &str,
     no_cache: bool,
+    cancel: &Cancel,
 ) -> Result<Vec<HashMap<NodeKind, Arc<NodeResult>>>, CliError> {
     let mut results: Vec<HashMap<NodeKind, Arc<NodeResult>>> =
         vec![HashMap::new(); scene.columns.len()];
@@ -104,11 +106,14 @@ fn evaluate(
         samplescope::engine::default_disk_cache()
     };
     let eval = Evaluator::new(samplescope::engine::cache::DEFAULT_BUDGET, disk);
-    eval.evaluate(scene, &Cancel::never(), &mut |c, kind, r| {
+    eval.evaluate(scene, cancel, &mut |c, kind, r| {
         if let Some(col) = results.get_mut(c) {
             col.insert(kind, r);
         }
     });
+    if cancel.is_cancelled() {
+        return Err(CliError::Cancelled);
+    }
     for (c, col) in results.iter().enumerate() {
         for kind in NodeKind::ALL {
             if let Some(Err(e)) = col.get(&kind).map(|r| &r.value) {
@@ -125,7 +130,7 @@ fn evaluate(
 }
 
 /// Runs `samplescope render`.
-pub fn run(args: &RenderArgs) -> Result<(), CliError> {
+pub fn run(args: &RenderArgs, session: &Session) -> Result<(), CliError> {
     if !SCALES.contains(&args.scale) {
         return Err(CliError::Usage(format!(
             "--scale = {}: must be an integer in {}..={}",
@@ -148,7 +153,19 @@ pub fn run(args: &RenderArgs) -> Result<(), CliError> {
         .file_stem()
         .map(|s| s.to_string_lossy().into_owned())
         .unwrap_or_default();
-    let results = evaluate(&scene, &source, args.no_cache)?;
+    // The scene's nodes are estimated and checked before any is evaluated.
+    let plan = samplescope::scene::cost::estimate(&scene);
+    let Some(progress) = session.admit(plan).map_err(|e| match e {
+        CliError::Budget(m) => CliError::Budget(format!("{source}: {m}")),
+        other => other,
+    })?
+    else {
+        return Ok(());
+    };
+    progress.stage(0);
+    let cancel = &session.cancel;
+    let results = evaluate(&scene, &source, args.no_cache, cancel)?;
+    drop(progress);
 
     let mut columns: Vec<(FigureContext, ColumnData)> = Vec::new();
     for (c, res) in results.iter().enumerate() {
@@ -200,13 +217,13 @@ pub fn run(args: &RenderArgs) -> Result<(), CliError> {
                         panel_csv(kind, ctx, data).map_err(export_err)?.into_bytes(),
                     ),
                 };
-                write(&args.out.join(name), &bytes)?;
+                write(&args.out.join(name), &bytes, cancel)?;
             }
         }
         let own = panels::composite_in(&scene, c);
         if !own.is_empty() && formats.contains(&Format::Png) {
             let bytes = column_png(&own, ctx, data, s).map_err(export_err)?;
-            write(&args.out.join(column_file_name(ctx, s)), &bytes)?;
+            write(&args.out.join(column_file_name(ctx, s)), &bytes, cancel)?;
         }
     }
     let (cw, ch) = comparison_size(&composite, columns.len(), s);
@@ -222,7 +239,7 @@ pub fn run(args: &RenderArgs) -> Result<(), CliError> {
             .first()
             .map(|(c, _)| comparison_file_name(&c.scene_name, scene.n, s))
             .unwrap_or_else(|| comparison_file_name(&stem, scene.n, s));
-        write(&args.out.join(name), &bytes)?;
+        write(&args.out.join(name), &bytes, cancel)?;
     }
     Ok(())
 }

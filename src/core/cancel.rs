@@ -27,6 +27,12 @@ impl Cancel {
         Self::default()
     }
 
+    /// A token on an existing flag, e.g. one a signal handler sets (an atomic store is all a
+    /// handler may do): the token is cancelled once the flag is `true`.
+    pub fn from_flag(flag: Arc<AtomicBool>) -> Self {
+        Cancel(flag)
+    }
+
     /// Requests cancellation; every holder sees it at its next check.
     pub fn cancel(&self) {
         self.0.store(true, Ordering::Relaxed);
@@ -46,5 +52,20 @@ impl Cancel {
         } else {
             Ok(())
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_token_on_a_flag_sees_the_flag() {
+        let flag = Arc::new(AtomicBool::new(false));
+        let c = Cancel::from_flag(flag.clone());
+        assert!(c.check().is_ok());
+        flag.store(true, Ordering::Relaxed);
+        assert_eq!(c.check(), Err(Cancelled));
+        assert!(c.clone().is_cancelled());
     }
 }

@@ -1,5 +1,6 @@
 //! Pure computation: never imports egui, eframe or wgpu.
 
+pub mod budget;
 pub mod cancel;
 pub mod filter;
 pub mod metrics;

@@ -177,9 +177,9 @@ pub(super) fn reconstruction(ctx: &JobCtx) -> Output {
 }
 
 /// Supersampled reconstructions of more samples than this show a preview first.
-const PREVIEW_SAMPLES: usize = 2 << 20;
+pub(crate) const PREVIEW_SAMPLES: usize = 2 << 20;
 /// The preview's samples per pixel are the full spp over this.
-const PREVIEW_DIVISOR: usize = 16;
+pub(crate) const PREVIEW_DIVISOR: usize = 16;
 
 pub(super) fn reference(ctx: &JobCtx) -> Output {
     let (scene, cancel) = (ctx.scene, ctx.cancel);

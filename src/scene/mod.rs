@@ -6,6 +6,7 @@
 //! panels need; nothing else is computed.
 
 pub mod compute;
+pub mod cost;
 pub mod figure;
 pub mod graph;
 pub mod import;

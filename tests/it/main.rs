@@ -6,6 +6,7 @@ use samplescope::ui::SamplescopeApp;
 use std::sync::Arc;
 
 mod bad_input;
+mod budget_cli;
 mod cli_points;
 mod figures;
 mod filter_cli;
@@ -29,6 +30,7 @@ mod recon_reference;
 mod recon_scattered;
 mod recon_supersample;
 mod render_cli;
+mod scene_cost;
 mod scene_graph;
 mod scenes_all;
 mod signal_shapes;

@@ -51,7 +51,7 @@ pub use convergence::{
 pub use grid::{resample_grid, sample_grid};
 pub use reference::{
     reference_image, reference_image_progressive, reference_image_with, reference_supersampled,
-    ReferenceImage, ReferenceMethod, ReferenceOptions,
+    reference_work, ReferenceImage, ReferenceMethod, ReferenceOptions,
 };
 pub use scattered::{
     reconstruct_scattered, reconstruct_scattered_gather, reconstruct_scattered_serial,

@@ -302,6 +302,57 @@ pub fn reference_image_progressive(
     })
 }
 
+/// The work [`reference_image_with`] does for `signal` at size `w`, counted from the same
+/// parameters its loops use and without allocating: the method it will use and the count of
+/// its inner-loop steps. Exact methods count pixels (one area coverage or closed-form
+/// integral each); quadrature counts integrand evaluations (Σᵢ mᵢ subintervals times the 36
+/// nodes of the two rules, per distinct axis; the loop of the quadrature itself); supersampling
+/// counts signal evaluations (5s² per pixel: the s×s and 2s×2s passes). `w` and
+/// `options.strata` are not checked here; the reference itself refuses them.
+pub fn reference_work(
+    signal: &Signal,
+    w: usize,
+    options: &ReferenceOptions,
+) -> (ReferenceMethod, u128) {
+    let pixels = (w as u128) * (w as u128);
+    let axis = |phase: &QuadraticPhase| -> u128 {
+        (0..w).map(|i| phase.subintervals(i) as u128).sum::<u128>()
+            * quadrature::EVALS_PER_SUBINTERVAL
+    };
+    match signal {
+        Signal::StepEdge(_) | Signal::Polygon(_) => (ReferenceMethod::ExactArea, pixels),
+        Signal::Grating(_) | Signal::SumOfSines(_) | Signal::Square(_) | Signal::Constant(_) => {
+            (ReferenceMethod::ExactIntegral, pixels)
+        }
+        Signal::ZonePlate(z) => {
+            let px = QuadraticPhase::zone_plate_axis(z.k, z.cx, w);
+            let py = QuadraticPhase::zone_plate_axis(z.k, z.cy, w);
+            let work = if px == py {
+                axis(&px)
+            } else {
+                axis(&px) + axis(&py)
+            };
+            (
+                ReferenceMethod::SeparableQuadrature { nodes: FINE_NODES },
+                work,
+            )
+        }
+        Signal::Chirp(c) => (
+            ReferenceMethod::SeparableQuadrature { nodes: FINE_NODES },
+            axis(&QuadraticPhase::chirp(c.f0, c.f1, w)),
+        ),
+        Signal::Checkerboard(_) => {
+            let s = options.strata as u128;
+            (
+                ReferenceMethod::Supersampled {
+                    strata: options.strata,
+                },
+                pixels * 5 * s * s,
+            )
+        }
+    }
+}
+
 /// Name of the quadrature references in [`ReconError::TooMuchWork`].
 const QUADRATURE_WORK: &str = "separable quadrature reference (its cost grows with |K|)";
 
@@ -514,4 +565,47 @@ fn box_integral(signal: &Signal, i: usize, j: usize, w: usize) -> f64 {
         other => other.eval(m),
     };
     v.clamp(0.0, 1.0)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::core::signal::Checkerboard;
+
+    #[test]
+    fn reference_work_is_what_the_quadrature_plans() {
+        // The plan the quadrature loops run (and check against MAX_WORK), per distinct axis.
+        let w = 300;
+        for z in [
+            ZonePlate::default(),
+            ZonePlate {
+                k: 4000.0,
+                cx: 0.1,
+                cy: 0.8,
+            },
+        ] {
+            let px = QuadraticPhase::zone_plate_axis(z.k, z.cx, w);
+            let py = QuadraticPhase::zone_plate_axis(z.k, z.cy, w);
+            let planned = plan(&px, w).1 + if px == py { 0 } else { plan(&py, w).1 };
+            let (method, work) =
+                reference_work(&Signal::ZonePlate(z), w, &ReferenceOptions::default());
+            assert_eq!(work, planned);
+            assert!(matches!(
+                method,
+                ReferenceMethod::SeparableQuadrature { .. }
+            ));
+        }
+        let c = Chirp::default();
+        let (_, work) = reference_work(&Signal::Chirp(c), w, &ReferenceOptions::default());
+        assert_eq!(work, plan(&QuadraticPhase::chirp(c.f0, c.f1, w), w).1);
+        // Supersampled: the s×s and 2s×2s passes, 5s² evaluations per pixel.
+        let options = ReferenceOptions {
+            strata: 3,
+            ..ReferenceOptions::default()
+        };
+        let (method, work) =
+            reference_work(&Signal::Checkerboard(Checkerboard::default()), 10, &options);
+        assert_eq!(work, 100 * (9 + 36));
+        assert_eq!(method, ReferenceMethod::Supersampled { strata: 3 });
+    }
 }
