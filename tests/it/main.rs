@@ -4,6 +4,7 @@
 use samplescope::engine::Engine;
 use samplescope::ui::SamplescopeApp;
 use std::sync::Arc;
+use std::time::{Duration, Instant};
 
 mod bad_input;
 mod budget_cli;
@@ -49,4 +50,22 @@ pub fn hermetic_app(cc: &eframe::CreationContext<'_>) -> SamplescopeApp {
     let ctx = cc.egui_ctx.clone();
     let engine = Engine::new_in_memory(Arc::new(move || ctx.request_repaint()));
     SamplescopeApp::with_engine(cc, None, engine)
+}
+
+/// Steps the UI until the engine has delivered every node of the current scene, then `extra`
+/// more frames (so the last results are drawn).
+pub fn settle(h: &mut egui_kittest::Harness<'static, SamplescopeApp>, extra: usize) {
+    let deadline = Instant::now() + Duration::from_secs(120);
+    loop {
+        h.step();
+        let app = h.state();
+        if app.engine.is_idle() && app.results.len() == app.scene.columns.len() {
+            break;
+        }
+        assert!(Instant::now() < deadline, "engine did not finish");
+        std::thread::sleep(Duration::from_millis(5));
+    }
+    for _ in 0..extra {
+        h.step();
+    }
 }

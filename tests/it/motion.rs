@@ -328,22 +328,8 @@ mod ui {
                 app.set_scene(scene.clone(), name.to_string());
                 app
             });
-        settle(&mut h);
+        crate::settle(&mut h, 1);
         h
-    }
-
-    fn settle(h: &mut Harness<'static, SamplescopeApp>) {
-        let deadline = Instant::now() + Duration::from_secs(120);
-        loop {
-            h.step();
-            let app = h.state();
-            if app.engine.is_idle() && app.results.len() == app.scene.columns.len() {
-                break;
-            }
-            assert!(Instant::now() < deadline, "engine did not finish");
-            std::thread::sleep(Duration::from_millis(5));
-        }
-        h.step();
     }
 
     fn count(h: &Harness<'static, SamplescopeApp>, kind: NodeKind) -> usize {
@@ -377,7 +363,7 @@ mod ui {
         assert_eq!(count(&h, NodeKind::Samples), samples);
         h.get_by_label("Step forward").click();
         h.step();
-        settle(&mut h);
+        crate::settle(&mut h, 1);
         assert_eq!(h.state().motion_frame(), 1);
         h.get_by_label_contains("t = 0.042 s · frame 1 at 24 fps");
         assert_eq!(count(&h, NodeKind::Points), points);
@@ -386,7 +372,7 @@ mod ui {
         // Back to frame 0: every node is cached.
         h.get_by_label("Step back").click();
         h.step();
-        settle(&mut h);
+        crate::settle(&mut h, 1);
         assert_eq!(h.state().motion_frame(), 0);
         assert_eq!(count(&h, NodeKind::Samples), samples + cols);
     }

@@ -17,24 +17,8 @@ fn harness() -> Harness<'static, SamplescopeApp> {
             app.view.show_timings = false;
             app
         });
-    settle(&mut h);
+    crate::settle(&mut h, 2);
     h
-}
-
-/// Steps the UI until the engine has delivered every node of the current scene.
-fn settle(h: &mut Harness<'static, SamplescopeApp>) {
-    let deadline = Instant::now() + Duration::from_secs(120);
-    loop {
-        h.step();
-        let app = h.state();
-        if app.engine.is_idle() && app.results.len() == app.scene.columns.len() {
-            break;
-        }
-        assert!(Instant::now() < deadline, "engine did not finish");
-        std::thread::sleep(Duration::from_millis(5));
-    }
-    h.step();
-    h.step();
 }
 
 #[test]
@@ -61,7 +45,7 @@ fn add_column_by_button_and_equal_inputs_share_one_evaluation() {
     let mut h = harness();
     let before = h.state().engine.evaluator().count(NodeKind::Response);
     h.get_by_label("Add column").click();
-    settle(&mut h);
+    crate::settle(&mut h, 2);
     let app = h.state();
     assert_eq!(app.scene.columns.len(), 2);
     assert_eq!(app.results.len(), 2);
@@ -75,13 +59,13 @@ fn add_column_by_button_and_equal_inputs_share_one_evaluation() {
 fn hiding_the_spectrum_panel_stops_spectrum_work() {
     let mut h = harness();
     h.get_by_label("Spectrum (F2)").click();
-    settle(&mut h);
+    crate::settle(&mut h, 2);
     assert!(!h.state().scene.panels.spectrum);
     let spectra = h.state().engine.evaluator().count(NodeKind::Spectrum);
     // Change N: points and reconstruction recompute, the hidden spectrum does not.
     h.get_by_role_and_label(Role::Slider, "N")
         .set_value_accesskit(1000.0);
-    settle(&mut h);
+    crate::settle(&mut h, 2);
     let app = h.state();
     assert_eq!(app.scene.n, 1000);
     assert_eq!(app.engine.evaluator().count(NodeKind::Spectrum), spectra);
@@ -93,7 +77,7 @@ fn dragging_n_updates_every_panel() {
     let mut h = harness();
     h.get_by_role_and_label(Role::Slider, "N")
         .set_value_accesskit(256.0);
-    settle(&mut h);
+    crate::settle(&mut h, 2);
     let app = h.state();
     assert_eq!(app.scene.n, 256);
     match &app.results[0][&NodeKind::Points].value {
@@ -109,7 +93,7 @@ fn changing_the_pattern_through_the_combo_box() {
     h.run_steps(2);
     h.get_by_label("halton").click_accesskit();
     h.run_steps(2);
-    settle(&mut h);
+    crate::settle(&mut h, 2);
     assert_eq!(h.state().scene.columns[0].pattern.name(), "halton");
     // The filter did not change: no new response evaluation.
     assert_eq!(h.state().engine.evaluator().count(NodeKind::Response), 1);
@@ -291,7 +275,7 @@ fn a_figure_saved_during_a_recompute_has_labels_and_pixels_of_one_scene() {
         std::thread::sleep(Duration::from_millis(10));
     }
     assert!(mid, "never saw the recompute in flight");
-    settle(&mut h);
+    crate::settle(&mut h, 2);
     let snap = check(h.state(), "after the recompute");
     assert_eq!(snap.scene.n, 1000);
 }

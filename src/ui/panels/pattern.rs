@@ -52,51 +52,13 @@ impl Panel for PatternPanel {
         let grid_stroke = Stroke::new(0.5, Color32::from_gray(190));
         if cx.view.show_strata {
             let (c, rws) = strata_shape(cx.scene, ci, data.points.len());
-            for i in 1..c {
-                let x = i as f64 / c as f64;
-                painter.line_segment(
-                    [
-                        screen_from_unit(rect, [x, 0.0]),
-                        screen_from_unit(rect, [x, 1.0]),
-                    ],
-                    grid_stroke,
-                );
-            }
-            for j in 1..rws {
-                let y = j as f64 / rws as f64;
-                painter.line_segment(
-                    [
-                        screen_from_unit(rect, [0.0, y]),
-                        screen_from_unit(rect, [1.0, y]),
-                    ],
-                    grid_stroke,
-                );
-            }
+            grid_lines(&painter, rect, c, rws, grid_stroke);
         }
         let k = cx.scene.columns[ci].elementary_k.or(cx.view.elementary_k);
         if let Some((cols, rows)) = crate::model::elementary_grid(k, data.points.len()) {
             let [r, g, b] = crate::model::palette::INTERVALS;
             let stroke = Stroke::new(0.6, Color32::from_rgb(r, g, b));
-            for i in 1..cols {
-                let x = i as f64 / cols as f64;
-                painter.line_segment(
-                    [
-                        screen_from_unit(rect, [x, 0.0]),
-                        screen_from_unit(rect, [x, 1.0]),
-                    ],
-                    stroke,
-                );
-            }
-            for j in 1..rows {
-                let y = j as f64 / rows as f64;
-                painter.line_segment(
-                    [
-                        screen_from_unit(rect, [0.0, y]),
-                        screen_from_unit(rect, [1.0, y]),
-                    ],
-                    stroke,
-                );
-            }
+            grid_lines(&painter, rect, cols, rows, stroke);
         }
         let stats = match cx.result(NodeKind::Statistics).map(|r| &r.value) {
             Some(Ok(NodeValue::Statistics(s))) => Some(s.clone()),
@@ -204,4 +166,28 @@ fn strata_shape(scene: &Scene, ci: usize, n: usize) -> (usize, usize) {
         _ => 0,
     };
     resolve_cols("strata", cols, n).unwrap_or((1, 1))
+}
+
+/// The inner lines of a `cols × rows` grid over the unit square drawn in `rect`.
+fn grid_lines(painter: &egui::Painter, rect: Rect, cols: usize, rows: usize, stroke: Stroke) {
+    for i in 1..cols {
+        let x = i as f64 / cols as f64;
+        painter.line_segment(
+            [
+                screen_from_unit(rect, [x, 0.0]),
+                screen_from_unit(rect, [x, 1.0]),
+            ],
+            stroke,
+        );
+    }
+    for j in 1..rows {
+        let y = j as f64 / rows as f64;
+        painter.line_segment(
+            [
+                screen_from_unit(rect, [0.0, y]),
+                screen_from_unit(rect, [1.0, y]),
+            ],
+            stroke,
+        );
+    }
 }
