@@ -10,6 +10,7 @@
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use samplescope::core::cancel::Cancel;
+use samplescope::core::params::Params;
 use samplescope::engine::Evaluator;
 use samplescope::scene::graph::{NodeKind, NodeResult};
 use samplescope::scene::Scene;

@@ -13,10 +13,8 @@ use super::session::{write_output, Session};
 use super::CliError;
 use super::{out, outln};
 use samplescope::core::budget;
-use samplescope::core::filter::{
-    params::{ParamKind, ParamValue, BOOL_OPTIONS},
-    Filter, Filter2D, FilterMetrics, Mode2D,
-};
+use samplescope::core::filter::{Filter, Filter2D, FilterMetrics, Mode2D};
+use samplescope::core::params::{ParamValue, Params};
 use serde_json::{json, Map, Value};
 
 /// Upper end of the `--response` CSV, in cycles per sample.
@@ -81,19 +79,7 @@ pub fn run(args: &FilterArgs, session: &Session) -> Result<(), CliError> {
 /// `beta` can follow a switch to the Kaiser window in any order).
 pub fn filter_from_args(name: &str, settings: &[String]) -> Result<Filter, CliError> {
     let mut filter = Filter::from_name(name)?;
-    let mut pairs = Vec::with_capacity(settings.len());
-    for s in settings {
-        let (k, v) = s.split_once('=').ok_or_else(|| {
-            CliError::Usage(format!(
-                "--set {s}: expected key=value (see `samplescope filter --list`)"
-            ))
-        })?;
-        pairs.push((k.trim(), v));
-    }
-    pairs.sort_by_key(|(k, _)| *k != "window");
-    for (k, v) in pairs {
-        filter.set(k, v)?;
-    }
+    super::apply_settings(&mut filter, "--set", settings, "samplescope filter --list")?;
     Ok(filter)
 }
 
@@ -115,10 +101,9 @@ pub fn params_json(filter: &Filter) -> Value {
         let v = match filter.get(spec.name) {
             Some(ParamValue::Float(x)) => json!(x),
             Some(ParamValue::Int(x)) => json!(x),
-            Some(ParamValue::Choice(c)) => match &spec.kind {
-                ParamKind::Choice { options, .. } if *options == BOOL_OPTIONS => json!(c == "true"),
-                _ => json!(c),
-            },
+            Some(ParamValue::Choice(c)) => json!(c),
+            Some(ParamValue::Bool(b)) => json!(b),
+            Some(ParamValue::List(v)) => json!(v),
             None => Value::Null,
         };
         map.insert(spec.name.to_string(), v);

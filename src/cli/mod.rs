@@ -9,6 +9,7 @@ pub mod render;
 pub mod session;
 
 use samplescope::core::filter::FilterError;
+use samplescope::core::params::{ParamError, ParamKind, ParamSpec, Params};
 use samplescope::core::pattern::{Pattern, PatternError};
 
 /// An error of a subcommand.
@@ -23,6 +24,10 @@ pub enum CliError {
     /// A filter could not be built or evaluated from the given parameters (exit status 2).
     #[error("{0}")]
     Filter(#[from] FilterError),
+    /// A `--set`, `--filter-set` or `--signal-set` value is unknown, malformed or out of range
+    /// (exit status 2).
+    #[error(transparent)]
+    Param(#[from] ParamError),
     /// The work is estimated beyond the budget (exit status 2); the message names the
     /// operation, its estimate, the limit and the flag that raises it.
     #[error("{0}")]
@@ -88,15 +93,39 @@ impl CliError {
 /// Builds a pattern from its name and `key=value` settings.
 pub fn pattern_from_args(name: &str, settings: &[String]) -> Result<Pattern, CliError> {
     let mut pattern = Pattern::from_name(name)?;
+    apply_settings(&mut pattern, "--set", settings, "samplescope points --list")?;
+    Ok(pattern)
+}
+
+/// Applies `key=value` settings (from `flag`, e.g. `--set`) to any parameter set through its
+/// descriptors: enum values unquoted (`shape=square`), booleans `true`/`false`, lists
+/// `amps=[0.5,0.25]`. Enum settings go first, so that a parameter that exists only for one
+/// option (`beta` with `window=kaiser`) may be given in any order. Every value is checked;
+/// the error names the owner, the field and the allowed range.
+pub fn apply_settings(
+    params: &mut impl Params,
+    flag: &str,
+    settings: &[String],
+    list_hint: &str,
+) -> Result<(), CliError> {
+    let mut pairs = Vec::with_capacity(settings.len());
     for s in settings {
         let (k, v) = s.split_once('=').ok_or_else(|| {
             CliError::Usage(format!(
-                "--set {s}: expected key=value (see `samplescope points --list`)"
+                "{flag} {s}: expected key=value (see `{list_hint}`)"
             ))
         })?;
-        pattern.set(k.trim(), v)?;
+        pairs.push((k.trim(), v));
     }
-    Ok(pattern)
+    let is_choice = |p: &dyn Fn(&str) -> Option<ParamSpec>, k: &str| {
+        matches!(p(k).map(|s| s.kind), Some(ParamKind::Choice { .. }))
+    };
+    let snapshot = params.clone();
+    pairs.sort_by_key(|(k, _)| !is_choice(&|key| snapshot.spec(key), k));
+    for (k, v) in pairs {
+        params.set(k, v)?;
+    }
+    Ok(())
 }
 
 /// Parses `-n`, accepting only a positive integer that fits in memory.

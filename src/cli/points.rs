@@ -4,6 +4,7 @@ use super::out;
 use super::session::{write_output, Session};
 use super::{parse_n, pattern_from_args, CliError};
 use samplescope::core::budget;
+use samplescope::core::params::Params;
 use samplescope::core::pattern::{sphere, Pattern};
 use std::io::Write;
 use std::path::Path;

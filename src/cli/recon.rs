@@ -60,7 +60,7 @@ pub struct ReconArgs {
 }
 
 /// The signal named `name` with default parameters, then `key=value` settings applied
-/// through its serialised form; the result is validated.
+/// through its parameter descriptors (each checked).
 pub fn signal_from_args(name: &str, settings: &[String]) -> Result<Signal, CliError> {
     let wanted = match name.trim().to_ascii_lowercase().as_str() {
         "zoneplate" => "zone-plate".to_string(),
@@ -79,49 +79,25 @@ pub fn signal_from_args(name: &str, settings: &[String]) -> Result<Signal, CliEr
                     .join(", ")
             ))
         })?;
-    let mut value = serde_json::to_value(signal).map_err(|e| CliError::Usage(e.to_string()))?;
-    for s in settings {
-        let (k, v) = s
-            .split_once('=')
-            .ok_or_else(|| CliError::Usage(format!("--signal-set {s}: expected key=value")))?;
-        let obj = value
-            .as_object_mut()
-            .ok_or_else(|| CliError::Usage("signal is not an object".into()))?;
-        let Some(slot) = obj.get_mut(k.trim()).filter(|_| k.trim() != "kind") else {
-            let keys: Vec<&String> = obj.keys().filter(|k| *k != "kind").collect();
-            return Err(CliError::Usage(format!(
-                "{}: unknown parameter '{}': allowed parameters are {keys:?}",
-                signal.name(),
-                k.trim()
-            )));
-        };
-        let parsed: serde_json::Value = serde_json::from_str(v.trim()).map_err(|_| {
-            CliError::Usage(format!(
-                "{}.{} = {v}: not a number or value",
-                signal.name(),
-                k.trim()
-            ))
-        })?;
-        *slot = parsed;
-    }
-    let signal: Signal = serde_json::from_value(value)
-        .map_err(|e| CliError::Usage(format!("{}: {e}", signal.name())))?;
-    signal
-        .validate()
-        .map_err(|e| CliError::Usage(e.to_string()))?;
+    let mut signal = signal;
+    super::apply_settings(
+        &mut signal,
+        "--signal-set",
+        settings,
+        "samplescope recon --help",
+    )?;
     Ok(signal)
 }
 
 /// The 2D filter from its name, settings and mode.
 pub fn filter_from_args(name: &str, settings: &[String], mode: &str) -> Result<Filter2D, CliError> {
     let mut f = Filter::from_name(name).map_err(|e| CliError::Usage(e.to_string()))?;
-    for s in settings {
-        let (k, v) = s
-            .split_once('=')
-            .ok_or_else(|| CliError::Usage(format!("--filter-set {s}: expected key=value")))?;
-        f.set(k.trim(), v)
-            .map_err(|e| CliError::Usage(e.to_string()))?;
-    }
+    super::apply_settings(
+        &mut f,
+        "--filter-set",
+        settings,
+        "samplescope filter --list",
+    )?;
     let mode = Mode2D::from_name(mode).map_err(|e| CliError::Usage(e.to_string()))?;
     Filter2D::new(f, mode).map_err(|e| CliError::Usage(e.to_string()))
 }

@@ -4,6 +4,7 @@ pub mod budget;
 pub mod cancel;
 pub mod filter;
 pub mod metrics;
+pub mod params;
 pub mod pattern;
 pub mod pointset;
 pub mod recon;

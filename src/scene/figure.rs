@@ -4,6 +4,7 @@
 
 use super::graph::{NodeKind, NodeResult};
 use super::{ReconMode, Scene};
+use crate::core::params::Params;
 use crate::model::{sanitize, Colormap, ColumnData, FigureContext};
 use std::collections::HashMap;
 

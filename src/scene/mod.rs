@@ -13,11 +13,13 @@ pub mod import;
 pub mod motion;
 pub mod node;
 pub mod panels;
+pub mod ron_path;
 
 pub use import::ImportedPoints;
 pub use motion::Motion;
 
 use crate::core::filter::Filter2D;
+use crate::core::params::{fmt_num, ParamError, Params};
 use crate::core::pattern::Pattern;
 use crate::core::signal::theorem::{TheoremError, TheoremSettings};
 use crate::core::signal::Signal;
@@ -236,10 +238,12 @@ pub enum SceneError {
         column: usize,
         message: String,
     },
-    /// The scene parsed but a value is out of range.
-    #[error("{source_name}: {field} = {value}: must be {allowed}")]
+    /// The scene parsed but a value is out of range; `location` is where the field (or the
+    /// innermost part of its path that is written) stands in the text, when known.
+    #[error("{source_name}{location}: {field} = {value}: must be {allowed}")]
     Invalid {
         source_name: String,
+        location: Location,
         field: String,
         value: String,
         allowed: String,
@@ -255,6 +259,33 @@ pub enum SceneError {
         path: String,
         error: crate::core::pointset::PointsFileError,
     },
+}
+
+/// A 1-based line and column in a scene's text (displayed as `:line:column`, or nothing when
+/// unknown, e.g. for a scene built in code).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct Location(pub Option<(usize, usize)>);
+
+impl std::fmt::Display for Location {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self.0 {
+            Some((line, column)) => write!(f, ":{line}:{column}"),
+            None => Ok(()),
+        }
+    }
+}
+
+impl SceneError {
+    /// The error with the location of its field in `text` (for [`SceneError::Invalid`]).
+    pub fn located_in(mut self, text: &str) -> Self {
+        if let SceneError::Invalid {
+            location, field, ..
+        } = &mut self
+        {
+            *location = Location(ron_path::locate(text, field));
+        }
+        self
+    }
 }
 
 /// The largest scene file read (inline points included): 256 MiB.
@@ -472,7 +503,9 @@ impl Scene {
             message: e.code.to_string(),
         })?;
         scene.resolve_points(source_name, base_dir)?;
-        scene.validate(source_name)?;
+        scene
+            .validate(source_name)
+            .map_err(|e| e.located_in(text))?;
         Ok(scene)
     }
 
@@ -516,6 +549,7 @@ impl Scene {
                 };
                 SceneError::Invalid {
                     source_name: self.title.clone(),
+                    location: Location::default(),
                     field,
                     value,
                     allowed,
@@ -548,92 +582,144 @@ impl Scene {
         ron::ser::to_string_pretty(self, ron::ser::PrettyConfig::default()).unwrap_or_default()
     }
 
-    /// Checks ranges that the types alone cannot express.
+    /// Checks every value against its documented range ([`limits`]) and every parameter of
+    /// every pattern, signal and filter against its descriptor; the error names the field path
+    /// (`columns[1].pattern.cols`, `signal.k`, `filter.filter.sigma`, `recon.mode.spp`).
     pub fn validate(&self, source_name: &str) -> Result<(), SceneError> {
         let invalid = |field: &str, value: String, allowed: &str| SceneError::Invalid {
             source_name: source_name.to_string(),
+            location: Location::default(),
             field: field.to_string(),
             value,
             allowed: allowed.to_string(),
         };
-        if self.columns.is_empty() || self.columns.len() > MAX_COLUMNS {
+        let param = |prefix: &str, e: ParamError| match e {
+            ParamError::Invalid {
+                field,
+                value,
+                allowed,
+                ..
+            } => invalid(&format!("{prefix}.{field}"), value, &allowed),
+            ParamError::Unknown { key, allowed, .. } => invalid(
+                &format!("{prefix}.{key}"),
+                "(set)".into(),
+                &format!("one of the parameters [{allowed}]"),
+            ),
+        };
+        fn int_range<T: PartialOrd + std::fmt::Display + Copy>(
+            v: T,
+            r: &std::ops::RangeInclusive<T>,
+        ) -> Option<String> {
+            (!r.contains(&v)).then(|| format!("an integer in {}..={}", r.start(), r.end()))
+        }
+        let ncols = self.columns.len();
+        if !limits::COLUMNS.contains(&ncols) {
             return Err(invalid(
                 "columns",
-                format!("{} columns", self.columns.len()),
-                &format!("1..={MAX_COLUMNS} columns"),
+                format!("{ncols} columns"),
+                &format!(
+                    "{}..={} columns",
+                    limits::COLUMNS.start(),
+                    limits::COLUMNS.end()
+                ),
             ));
         }
+        if let Some(allowed) = int_range(self.n, &limits::N) {
+            return Err(invalid("n", self.n.to_string(), &allowed));
+        }
         for (i, c) in self.columns.iter().enumerate() {
+            if c.points.is_none() {
+                c.pattern
+                    .check_params()
+                    .map_err(|e| param(&format!("columns[{i}].pattern"), e))?;
+            }
             if let Some(k) = c.elementary_k {
-                if k > MAX_ELEMENTARY_K {
-                    return Err(invalid(
-                        &format!("columns[{i}].elementary_k"),
-                        k.to_string(),
-                        &format!("an integer in 0..={MAX_ELEMENTARY_K}"),
-                    ));
+                let field = format!("columns[{i}].elementary_k");
+                if let Some(allowed) = int_range(k, &limits::ELEMENTARY_K) {
+                    return Err(invalid(&field, format!("Some({k})"), &allowed));
+                }
+                let n = c.points.as_ref().map_or(self.n, |p| p.points.len());
+                if c.points.as_ref().is_none_or(|p| !p.points.is_empty()) {
+                    if !n.is_power_of_two() {
+                        return Err(invalid(
+                            &field,
+                            format!("Some({k})"),
+                            &format!("None: elementary intervals need N = 2^m points, and N = {n}"),
+                        ));
+                    }
+                    let m = n.trailing_zeros();
+                    if k > m {
+                        return Err(invalid(
+                            &field,
+                            format!("Some({k})"),
+                            &format!("an integer in 0..={m} (N = {n} = 2^{m})"),
+                        ));
+                    }
                 }
             }
         }
-        if self.n == 0 || self.n > MAX_SCENE_N {
+        self.signal.check_params().map_err(|e| param("signal", e))?;
+        self.filter
+            .filter
+            .check_params()
+            .map_err(|e| param("filter.filter", e))?;
+        if let Err(e) = self.filter.validate() {
             return Err(invalid(
-                "n",
-                self.n.to_string(),
-                &format!("an integer in 1..={MAX_SCENE_N}"),
+                "filter.mode",
+                format!("{:?}", self.filter.mode).to_lowercase(),
+                &e.to_string(),
             ));
         }
         let s = &self.spectrum;
-        if !(8..=2048).contains(&s.size) {
-            return Err(invalid(
-                "spectrum.size",
-                s.size.to_string(),
-                "an integer in 8..=2048",
-            ));
+        if let Some(allowed) = int_range(s.size, &limits::SPECTRUM_SIZE) {
+            return Err(invalid("spectrum.size", s.size.to_string(), &allowed));
         }
-        if !(s.tolerance >= 1e-12 && s.tolerance <= 1e-2) {
+        if !limits::TOLERANCE.contains(&s.tolerance) {
             return Err(invalid(
                 "spectrum.tolerance",
-                format!("{:e}", s.tolerance),
-                "a number in [1e-12, 1e-2]",
+                fmt_num(s.tolerance),
+                &format!(
+                    "a number in [{}, {}]",
+                    fmt_num(*limits::TOLERANCE.start()),
+                    fmt_num(*limits::TOLERANCE.end())
+                ),
             ));
         }
-        if !(1..=256).contains(&s.realizations) {
+        if let Some(allowed) = int_range(s.realizations, &limits::REALIZATIONS) {
             return Err(invalid(
                 "spectrum.realizations",
                 s.realizations.to_string(),
-                "an integer in 1..=256",
+                &allowed,
             ));
         }
-        if !(16..=2048).contains(&self.recon.size) {
-            return Err(invalid(
-                "recon.size",
-                self.recon.size.to_string(),
-                "an integer in 16..=2048",
-            ));
+        if let Some(allowed) = int_range(self.recon.size, &limits::RECON_SIZE) {
+            return Err(invalid("recon.size", self.recon.size.to_string(), &allowed));
         }
         if let ReconMode::Resample { grid } = self.recon.mode {
-            if !(2..=4096).contains(&grid) {
-                return Err(invalid(
-                    "recon.mode.grid",
-                    grid.to_string(),
-                    "an integer in 2..=4096",
-                ));
+            if let Some(allowed) = int_range(grid, &limits::GRID) {
+                return Err(invalid("recon.mode.grid", grid.to_string(), &allowed));
             }
         }
         if let ReconMode::Supersample { spp } = self.recon.mode {
-            if !(1..=1024).contains(&spp) {
-                return Err(invalid(
-                    "recon.mode.spp",
-                    spp.to_string(),
-                    "an integer in 1..=1024",
-                ));
+            if let Some(allowed) = int_range(spp, &limits::SPP) {
+                return Err(invalid("recon.mode.spp", spp.to_string(), &allowed));
             }
         }
+        self.theorem
+            .signal
+            .check_params()
+            .map_err(|e| param("theorem.signal", e))?;
+        self.theorem
+            .filter
+            .check_params()
+            .map_err(|e| param("theorem.filter", e))?;
         match self.theorem.validate() {
             Err(TheoremError::InvalidParam {
                 field,
                 value,
                 allowed,
             }) => return Err(invalid(&format!("theorem.{field}"), value, &allowed)),
+            Err(TheoremError::Param(e)) => return Err(param("theorem", e)),
             Err(TheoremError::Filter(e)) => {
                 return Err(invalid(
                     "theorem.filter",
@@ -704,3 +790,29 @@ impl Scene {
 pub const MAX_COLUMNS: usize = 8;
 /// Most points per column in a scene (interactive use).
 pub const MAX_SCENE_N: usize = 1 << 20;
+
+/// The documented range of every scene value that is not a pattern, signal or filter
+/// parameter (those have their own descriptors). [`Scene::validate`] enforces them and the
+/// GUI's widgets span exactly them, so no widget can clamp a value a scene file may hold.
+pub mod limits {
+    use std::ops::RangeInclusive;
+
+    /// Points per column (`n`).
+    pub const N: RangeInclusive<usize> = 1..=super::MAX_SCENE_N;
+    /// Number of columns.
+    pub const COLUMNS: RangeInclusive<usize> = 1..=super::MAX_COLUMNS;
+    /// A column's elementary-interval exponent k (further bounded by N = 2^m: k ≤ m).
+    pub const ELEMENTARY_K: RangeInclusive<u32> = 0..=super::MAX_ELEMENTARY_K;
+    /// Side of the spectrum image (`spectrum.size`).
+    pub const SPECTRUM_SIZE: RangeInclusive<usize> = 8..=2048;
+    /// Relative tolerance of the fast spectrum (`spectrum.tolerance`).
+    pub const TOLERANCE: RangeInclusive<f64> = 1e-12..=1e-2;
+    /// Pattern realizations averaged into the spectrum (`spectrum.realizations`).
+    pub const REALIZATIONS: RangeInclusive<usize> = 1..=256;
+    /// Side of the reconstruction (`recon.size`).
+    pub const RECON_SIZE: RangeInclusive<usize> = 16..=2048;
+    /// Resampling grid (`recon.mode: Resample(grid: …)`).
+    pub const GRID: RangeInclusive<usize> = 2..=4096;
+    /// Samples per pixel (`recon.mode: Supersample(spp: …)`).
+    pub const SPP: RangeInclusive<usize> = 1..=1024;
+}

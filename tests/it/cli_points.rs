@@ -1,5 +1,6 @@
 //! The `samplescope points` command: output format, exit codes, and no panic on any input.
 
+use samplescope::core::params::Params;
 use samplescope::core::pattern::{Pattern, PatternError};
 use samplescope::core::rng::Rng;
 use std::process::Command;

@@ -11,9 +11,9 @@ use samplescope::core::filter::special::{
     bessel_i0, bessel_j0, cos_pi, cosc, sin_pi, sinc, sinc_d2, sine_integral,
 };
 use samplescope::core::filter::{
-    BoxFilter, Cosc, Filter, FilterError, FilterParams, Gaussian, Mitchell, Sinc, Tent, Window,
-    WindowedSinc,
+    BoxFilter, Cosc, Filter, FilterError, Gaussian, Mitchell, Sinc, Tent, Window, WindowedSinc,
 };
+use samplescope::core::params::{ParamError, Params};
 use std::f64::consts::PI;
 
 /// Every default filter, every preset, and variants covering each window and edge case.
@@ -346,8 +346,8 @@ fn gaussian_sigma_tiny_or_huge_is_finite_or_a_typed_error() {
                 subtract_edge,
             };
             // Validation names sigma and its range.
-            match g.validate() {
-                Err(FilterError::InvalidParam { field, allowed, .. }) => {
+            match g.check_params() {
+                Err(ParamError::Invalid { field, allowed, .. }) => {
                     assert_eq!(field, "sigma");
                     assert!(
                         allowed.contains("0.001") && allowed.contains("1000"),
@@ -759,7 +759,7 @@ fn radius_out_of_range_or_nan_is_a_typed_error_naming_radius() {
         for bad in ["0", "-1", "NaN", "inf", "64.5", "1e9", "abc", ""] {
             let mut g = f;
             match g.set("radius", bad) {
-                Err(FilterError::InvalidParam { field, allowed, .. }) => {
+                Err(ParamError::Invalid { field, allowed, .. }) => {
                     assert_eq!(field, "radius");
                     assert!(allowed.contains("64"), "{allowed}");
                 }
@@ -803,7 +803,7 @@ fn kaiser_beta_and_band_edges_are_validated() {
         assert!(
             matches!(
                 f.set("beta", bad),
-                Err(FilterError::InvalidParam { field: "beta", .. })
+                Err(ParamError::Invalid { field: "beta", .. })
             ),
             "{bad}"
         );
@@ -813,8 +813,8 @@ fn kaiser_beta_and_band_edges_are_validated() {
         window: Window::Kaiser { beta: -1.0 },
     };
     assert!(matches!(
-        raw.validate(),
-        Err(FilterError::InvalidParam { field: "beta", .. })
+        raw.check_params(),
+        Err(ParamError::Invalid { field: "beta", .. })
     ));
     // Switching away and back restores the default β.
     f.set("window", "hann").unwrap();
@@ -823,15 +823,12 @@ fn kaiser_beta_and_band_edges_are_validated() {
 
     let mut bp = Filter::from_name("band-pass").unwrap();
     let e = bp.set("low", "0.5").unwrap_err();
-    assert!(
-        matches!(e, FilterError::InvalidParam { field: "low", .. }),
-        "{e}"
-    );
+    assert!(matches!(e, ParamError::Invalid { field: "low", .. }), "{e}");
     bp.set("high", "0.6").unwrap();
     bp.set("low", "0.5").unwrap();
     assert!(matches!(
         bp.set("nope", "1"),
-        Err(FilterError::UnknownParam { .. })
+        Err(ParamError::Unknown { .. })
     ));
     let mut g = Filter::from_name("gaussian").unwrap();
     g.set("subtract_edge", "false").unwrap();

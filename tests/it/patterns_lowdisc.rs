@@ -2,6 +2,7 @@
 //! references, the (0,m,2)-net property of the Sobol' sequence, validation and determinism.
 
 use glam::DVec2;
+use samplescope::core::params::Params;
 use samplescope::core::pattern::lowdisc::{self, owen_scramble, sobol_point_u32};
 use samplescope::core::pattern::radical_inverse::{
     folded_radical_inverse, radical_inverse, radical_inverse_table, try_radical_inverse, PRIMES,

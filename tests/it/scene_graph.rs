@@ -3,6 +3,7 @@
 //! their dependents; equal inputs share one evaluation; the engine drops stale generations.
 
 use samplescope::core::cancel::Cancel;
+use samplescope::core::params::Params;
 use samplescope::engine::{Engine, Evaluator};
 use samplescope::scene::graph::{self, NodeKind, NodeResult, NodeValue};
 use samplescope::scene::{Scene, SceneError, BUILTIN};

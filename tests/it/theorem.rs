@@ -529,6 +529,7 @@ fn field_of(e: &TheoremError) -> String {
     match e {
         TheoremError::InvalidParam { field, .. } => field.to_string(),
         TheoremError::Filter(_) => "filter".into(),
+        TheoremError::Param(p) => format!("signal.{}", p.field().unwrap_or("?")),
     }
 }
 

@@ -20,11 +20,12 @@
 //! | sinc or cosc × Hann / Blackman window | Σ_m a_m K(ω − m/(2r)) (modulation: cos(πmx/r) shifts by ±m/(2r)) |
 //! | ideal low-pass 2c sinc(2cx) truncated to R | T_{2cR}(ω/2c) |
 
-use super::params::{filter_params, float_spec, FilterParams, ParamSpec, ParamValue};
 use super::special::{
     bessel_i0, bessel_i1_over_x, cos_pi, cosc, erf, erfc, sin_pi, sinc, sinc_d2, sine_integral,
 };
-use super::FilterError;
+use crate::core::params::{
+    declare_params, fmt_num, ParamError, ParamKind, ParamSpec, ParamValue, Params,
+};
 use rustfft::num_complex::Complex64;
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
@@ -155,7 +156,7 @@ fn ideal_band(omega: f64, lo: f64, hi: f64) -> f64 {
     }
 }
 
-filter_params! {
+declare_params! {
     /// Box: h(x) = 1 for |x| ≤ r (nearest neighbour at r = ½).
     BoxFilter = "box", "box h(x) = 1 on |x| ≤ r; H(ω) = 2r sinc(2rω)" {
         /// Radius r (sample spacings).
@@ -192,7 +193,7 @@ impl Kernel for BoxFilter {
     }
 }
 
-filter_params! {
+declare_params! {
     /// Tent (triangle, linear interpolation at r = 1): h(x) = 1 − |x|/r.
     Tent = "tent", "tent h(x) = 1 − |x|/r (linear interpolation at r = 1); H(ω) = r sinc²(rω)" {
         /// Radius r (sample spacings).
@@ -227,7 +228,7 @@ impl Kernel for Tent {
     }
 }
 
-filter_params! {
+declare_params! {
     /// Gaussian g(x) = exp(−x²/(2σ²)) on |x| ≤ r, optionally minus g(r) (pbrt-v4) so that it
     /// reaches 0 continuously at the radius.
     Gaussian = "gaussian", "Gaussian e^(−x²/2σ²) on |x| ≤ r, minus its value at r if subtract_edge (pbrt-v4)" {
@@ -352,7 +353,7 @@ impl Kernel for Gaussian {
     }
 }
 
-filter_params! {
+declare_params! {
     /// Mitchell–Netravali cubic k_{B,C} (support \[−2, 2\]) stretched to radius r: h(x) = k(2x/r).
     Mitchell = "mitchell", "Mitchell–Netravali cubic (B, C) stretched to radius r: h(x) = k(2x/r); catmull-rom = (0, ½), b-spline = (1, 0)" {
         /// B (blurring).
@@ -457,7 +458,7 @@ impl Kernel for Mitchell {
     }
 }
 
-filter_params! {
+declare_params! {
     /// Sinc truncated to \[−r, r\] (no window): h(x) = sinc(x).
     Sinc = "sinc", "sinc(x) = sin(πx)/(πx) truncated to |x| ≤ r (no window: strong ringing)" {
         /// Truncation radius r (sample spacings).
@@ -583,20 +584,6 @@ impl Window {
         }
     }
 
-    fn check(&self, filter: &'static str) -> Result<(), FilterError> {
-        if let Window::Kaiser { beta } = *self {
-            if !beta.is_finite() || !(0.0..=MAX_KAISER_BETA).contains(&beta) {
-                return Err(FilterError::InvalidParam {
-                    filter,
-                    field: "beta",
-                    value: format!("{beta}"),
-                    allowed: format!("a finite number in [0, {MAX_KAISER_BETA}]"),
-                });
-            }
-        }
-        Ok(())
-    }
-
     /// Σ_m a_m (K(ω − m/(2r)) + K(ω + m/(2r)))/2 for m ≥ 1, plus a₀K(ω).
     fn modulated(&self, r: f64, omega: f64, k: impl Fn(f64) -> Complex64) -> Option<Complex64> {
         let a = self.cosine_series()?;
@@ -612,6 +599,25 @@ impl Window {
     }
 }
 
+fn float_spec(
+    name: &'static str,
+    doc: &'static str,
+    default: f64,
+    min: f64,
+    max: f64,
+) -> ParamSpec {
+    ParamSpec {
+        name,
+        doc,
+        kind: ParamKind::Float {
+            default,
+            min,
+            max,
+            min_exclusive: false,
+        },
+    }
+}
+
 fn window_specs(
     radius_default: f64,
     window: &Window,
@@ -622,7 +628,7 @@ fn window_specs(
         ParamSpec {
             name: "window",
             doc: "taper w(x/r): rect (plain truncation) | lanczos sinc(t) | hann ½(1+cos πt) | blackman | kaiser I0(β√(1−t²))/I0(β)",
-            kind: super::params::ParamKind::Choice {
+            kind: ParamKind::Choice {
                 default: window_default,
                 options: WINDOW_NAMES,
             },
@@ -697,10 +703,18 @@ impl Default for WindowedSinc {
     }
 }
 
-impl FilterParams for WindowedSinc {
-    const NAME: &'static str = "windowed-sinc";
-    const SUMMARY: &'static str =
+impl WindowedSinc {
+    /// Name used on the command line and in scene files.
+    pub const NAME: &'static str = "windowed-sinc";
+    /// One-line description.
+    pub const SUMMARY: &'static str =
         "sinc(x)·w(x/r) on |x| ≤ r with a Lanczos, Hann, Blackman, Kaiser or rect window";
+}
+
+impl Params for WindowedSinc {
+    fn owner(&self) -> &'static str {
+        Self::NAME
+    }
     fn specs(&self) -> Vec<ParamSpec> {
         window_specs(3.0, &self.window, "lanczos")
     }
@@ -709,9 +723,6 @@ impl FilterParams for WindowedSinc {
     }
     fn put(&mut self, key: &str, value: ParamValue) {
         window_put(&mut self.radius, &mut self.window, key, value)
-    }
-    fn check_extra(&self) -> Result<(), FilterError> {
-        self.window.check(Self::NAME)
     }
     fn inactive_reason(&self, key: &str) -> Option<(&'static str, &'static str)> {
         (key == "beta").then_some(BETA_INACTIVE)
@@ -774,10 +785,18 @@ impl Default for Cosc {
     }
 }
 
-impl FilterParams for Cosc {
-    const NAME: &'static str = "cosc";
-    const SUMMARY: &'static str =
+impl Cosc {
+    /// Name used on the command line and in scene files.
+    pub const NAME: &'static str = "cosc";
+    /// One-line description.
+    pub const SUMMARY: &'static str =
         "derivative kernel cosc(x) = d/dx sinc(x), truncated (window = rect) or windowed on |x| ≤ r";
+}
+
+impl Params for Cosc {
+    fn owner(&self) -> &'static str {
+        Self::NAME
+    }
     fn specs(&self) -> Vec<ParamSpec> {
         window_specs(4.0, &self.window, "rect")
     }
@@ -786,9 +805,6 @@ impl FilterParams for Cosc {
     }
     fn put(&mut self, key: &str, value: ParamValue) {
         window_put(&mut self.radius, &mut self.window, key, value)
-    }
-    fn check_extra(&self) -> Result<(), FilterError> {
-        self.window.check(Self::NAME)
     }
     fn inactive_reason(&self, key: &str) -> Option<(&'static str, &'static str)> {
         (key == "beta").then_some(BETA_INACTIVE)
@@ -839,7 +855,7 @@ impl Kernel for Cosc {
 /// Default truncation radius of the ideal filters' spatial kernels.
 pub const IDEAL_RADIUS: f64 = 16.0;
 
-filter_params! {
+declare_params! {
     /// Ideal low-pass: H(ω) = 1 for |ω| < c (½ at |ω| = c), 0 above. Spatial kernel
     /// h(x) = 2c sinc(2cx), truncated to |x| ≤ radius for spatial evaluation.
     LowPass = "low-pass", "ideal low-pass H = 1 for |ω| < cutoff; spatial 2c sinc(2cx) truncated to radius" {
@@ -887,7 +903,7 @@ impl Kernel for LowPass {
     }
 }
 
-filter_params! {
+declare_params! {
     /// Ideal band-pass: H(ω) = 1 for low < |ω| < high (½ on the edges), 0 elsewhere. Spatial
     /// kernel 2·high·sinc(2·high·x) − 2·low·sinc(2·low·x), truncated to |x| ≤ radius.
     BandPass = "band-pass", "ideal band-pass H = 1 for low < |ω| < high; spatial 2h sinc(2hx) − 2l sinc(2lx) truncated to radius" {
@@ -902,11 +918,11 @@ filter_params! {
         if p.low < p.high {
             Ok(())
         } else {
-            Err(FilterError::InvalidParam {
-                filter: "band-pass",
+            Err(ParamError::Invalid {
+                owner: "band-pass",
                 field: "low",
-                value: format!("{}", p.low),
-                allowed: format!("a number in [0, high = {}) (low must be below high)", p.high),
+                value: fmt_num(p.low),
+                allowed: format!("a number in [0, high = {}) (low must be below high)", fmt_num(p.high)),
             })
         }
     }
@@ -964,7 +980,7 @@ impl Kernel for BandPass {
     }
 }
 
-filter_params! {
+declare_params! {
     /// Ideal high-pass: H(ω) = 0 for |ω| < c (½ at |ω| = c), 1 above (at every frequency). Its
     /// spatial kernel is δ(x) − 2c sinc(2cx): `eval` returns the regular part −2c sinc(2cx)
     /// truncated to |x| ≤ radius, and the Dirac mass (weight 1) is reported by `dirac_weight`.

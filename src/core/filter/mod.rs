@@ -64,7 +64,6 @@
 
 pub mod kernels;
 pub mod metrics;
-pub mod params;
 pub mod quad;
 pub mod special;
 pub mod two_d;
@@ -74,10 +73,10 @@ pub use kernels::{
     Sinc, Tent, Window, WindowedSinc, MAX_RADIUS,
 };
 pub use metrics::FilterMetrics;
-pub use params::{FilterParams, ParamKind, ParamSpec, ParamValue};
 pub use two_d::{Filter2D, Mode2D};
 
 use crate::core::cancel::Cancelled;
+use crate::core::params::{dispatch_params, ParamError, Params};
 use rustfft::num_complex::Complex64;
 use serde::{Deserialize, Serialize};
 use special::{cos_pi, sin_pi};
@@ -125,6 +124,33 @@ pub enum FilterError {
     Cancelled,
 }
 
+impl From<ParamError> for FilterError {
+    fn from(e: ParamError) -> Self {
+        match e {
+            ParamError::Unknown {
+                owner,
+                key,
+                allowed,
+            } => FilterError::UnknownParam {
+                filter: owner,
+                key,
+                allowed,
+            },
+            ParamError::Invalid {
+                owner,
+                field,
+                value,
+                allowed,
+            } => FilterError::InvalidParam {
+                filter: owner,
+                field,
+                value,
+                allowed,
+            },
+        }
+    }
+}
+
 impl From<Cancelled> for FilterError {
     fn from(_: Cancelled) -> Self {
         FilterError::Cancelled
@@ -148,32 +174,17 @@ macro_rules! filters {
 
             /// Name used on the command line and in scene files.
             pub fn name(&self) -> &'static str {
-                match self { $( Filter::$variant(_) => <$ty as FilterParams>::NAME, )* }
+                match self { $( Filter::$variant(_) => $ty::NAME, )* }
             }
 
             /// One-line description.
             pub fn summary(&self) -> &'static str {
-                match self { $( Filter::$variant(_) => <$ty as FilterParams>::SUMMARY, )* }
-            }
-
-            /// Descriptors of every parameter that currently applies.
-            pub fn specs(&self) -> Vec<ParamSpec> {
-                match self { $( Filter::$variant(p) => p.specs(), )* }
-            }
-
-            /// Current value of parameter `key`.
-            pub fn get(&self, key: &str) -> Option<ParamValue> {
-                match self { $( Filter::$variant(p) => p.get(key), )* }
-            }
-
-            /// Sets parameter `key` from text; applied only if the result is valid.
-            pub fn set(&mut self, key: &str, text: &str) -> Result<(), FilterError> {
-                match self { $( Filter::$variant(p) => p.set(key, text), )* }
+                match self { $( Filter::$variant(_) => $ty::SUMMARY, )* }
             }
 
             /// Checks every parameter (finite, in range, cross-field constraints).
             pub fn validate(&self) -> Result<(), FilterError> {
-                match self { $( Filter::$variant(p) => p.validate(), )* }
+                Ok(self.check_params()?)
             }
 
             /// The kernel behind the filter (the uniform interface).
@@ -181,6 +192,8 @@ macro_rules! filters {
                 match self { $( Filter::$variant(p) => p, )* }
             }
         }
+
+        dispatch_params!(Filter { $( $variant ),* });
     };
 }
 

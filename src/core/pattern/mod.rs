@@ -19,14 +19,13 @@
 pub mod best_candidate;
 pub mod hex;
 pub mod lowdisc;
-pub mod params;
 pub mod poisson;
 pub mod radical_inverse;
 pub mod sphere;
 pub mod stratified;
 
+use crate::core::params::{declare_params, dispatch_params, ChoiceParam, ParamError};
 use glam::DVec2;
-use params::{pattern_params, ChoiceParam, ParamSpec, ParamValue};
 use serde::{Deserialize, Serialize};
 
 pub use crate::core::cancel::{Cancel, Cancelled};
@@ -77,6 +76,33 @@ pub enum PatternError {
     /// The computation was cancelled.
     #[error("cancelled")]
     Cancelled,
+}
+
+impl From<ParamError> for PatternError {
+    fn from(e: ParamError) -> Self {
+        match e {
+            ParamError::Unknown {
+                owner,
+                key,
+                allowed,
+            } => PatternError::UnknownParam {
+                pattern: owner,
+                key,
+                allowed,
+            },
+            ParamError::Invalid {
+                owner,
+                field,
+                value,
+                allowed,
+            } => PatternError::InvalidParam {
+                pattern: owner,
+                field,
+                value,
+                allowed,
+            },
+        }
+    }
 }
 
 impl From<Cancelled> for PatternError {
@@ -143,30 +169,30 @@ impl ChoiceParam for Scramble {
     }
 }
 
-pattern_params! {
+declare_params! {
     /// Cell centres of a `cols × (n / cols)` grid.
     Grid = "grid", "regular grid, cell centres ((i+½)/cols, (j+½)/rows)" {
         cols: int(0, 0, MAX_N, "columns; 0 = auto (the divisor of n nearest √n); must divide n"),
     }
 }
-pattern_params! {
+declare_params! {
     /// White noise: n independent uniform points.
     Random = "random", "white noise: independent uniform points" {}
 }
-pattern_params! {
+declare_params! {
     /// Jittered (stratified) sampling on a `cols × rows` grid of strata.
     Jitter = "jitter", "one point per cell of a cols × rows grid, offset from the centre by amount·(u−½) cell widths" {
         cols: int(0, 0, MAX_N, "strata columns; 0 = auto (the divisor of n nearest √n); must divide n"),
         amount: float(1.0, 0.0, 1.0, "jitter amount: 0 = cell centres, 0.5 = ±¼ cell, 1 = anywhere in the cell"),
     }
 }
-pattern_params! {
+declare_params! {
     /// N-rooks (2D Latin hypercube).
     NRooks = "nrooks", "N-rooks: jittered diagonal, columns shuffled per dimension (one point per row and column)" {
         amount: float(1.0, 0.0, 1.0, "jitter amount within the cell: 0 = centres, 1 = anywhere"),
     }
 }
-pattern_params! {
+declare_params! {
     /// Latin hypercube sampling in `dims` dimensions, projected to two of them.
     Lhs = "lhs", "Latin hypercube in k dims: one random permutation per dimension; shows the projection (x_dim, y_dim)" {
         dims: int(3, 1, 64, "number of dimensions k"),
@@ -175,52 +201,52 @@ pattern_params! {
         amount: float(1.0, 0.0, 1.0, "jitter amount within the cell: 0 = centres, 1 = anywhere"),
     }
 }
-pattern_params! {
+declare_params! {
     /// Multi-jittered sampling (Chiu, Shirley, Wang 1994).
     MultiJitter = "multijitter", "multi-jitter (Chiu–Shirley–Wang 1994): jittered and N-rooks at once, shuffled canonical arrangement" {
         cols: int(0, 0, MAX_N, "columns; 0 = auto (the divisor of n nearest √n); must divide n"),
     }
 }
-pattern_params! {
+declare_params! {
     /// Correlated multi-jittered sampling (Kensler 2013).
     CorrelatedMultiJitter = "cmj", "correlated multi-jitter (Kensler 2013): one shuffle per row/column of the canonical arrangement" {
         cols: int(0, 0, MAX_N, "columns; 0 = auto (the divisor of n nearest √n); must divide n"),
     }
 }
-pattern_params! {
+declare_params! {
     /// Hexagonal lattice fitted to the unit torus.
     Hex = "hex", "hexagonal lattice (rows offset by half a spacing) fitted to the torus, optional jitter" {
         rows: int(0, 0, MAX_N, "rows; 0 = auto (the even divisor of n closest to the equilateral aspect); must divide n"),
         amount: float(0.0, 0.0, 1.0, "jitter amount: 0 = exact lattice, 1 = anywhere in the point's cell"),
     }
 }
-pattern_params! {
+declare_params! {
     /// Dart throwing as in the lecture's pseudo-code, on the torus.
     PoissonDart = "poisson-dart", "dart throwing (lecture pseudo-code): reject darts closer than radius to any accepted point (toroidal)" {
         radius: float(0.0, 0.0, 1.0, "minimum toroidal distance between points; 0 = auto (0.65 × the hexagonal packing distance for n)"),
         max_misses: int(100_000, 1, 100_000_000, "give up after this many consecutive rejected darts"),
     }
 }
-pattern_params! {
+declare_params! {
     /// Bridson's fast Poisson-disk sampling on the torus.
     PoissonBridson = "poisson-bridson", "Bridson 2007 Poisson disk on the torus: k annulus candidates per active point, randomly thinned to n" {
         radius: float(0.0, 0.0, 1.0, "minimum toroidal distance between points; 0 = auto (0.65 × the hexagonal packing distance for n)"),
         k: int(30, 1, 1000, "candidates tried around each active point"),
     }
 }
-pattern_params! {
+declare_params! {
     /// Mitchell's best-candidate sampling on the torus.
     BestCandidate = "best-candidate", "Mitchell 1991 best candidate on the torus: point i keeps the farthest of m·i candidates; progressive" {
         m: int(1, 1, 1000, "candidate multiplier: point i draws m·i candidates (at least 1)"),
     }
 }
-pattern_params! {
+declare_params! {
     /// The van der Corput sequence Φ_b(i), drawn on the line y = ½.
     VanDerCorput = "van-der-corput", "1D van der Corput sequence x_i = Φ_b(i), drawn at y = ½" {
         base: int(2, 2, 7919, "base b (a prime ≤ 7919, the 1000th prime)"),
     }
 }
-pattern_params! {
+declare_params! {
     /// The Halton sequence (Φ_{b1}(i), Φ_{b2}(i)).
     Halton = "halton", "Halton sequence x_i = (Φ_bx(i), Φ_by(i)), i = skip, skip+1, …" {
         base_x: int(2, 2, 7919, "base of x (a prime ≤ 7919)"),
@@ -228,13 +254,13 @@ pattern_params! {
         skip: int(0, 0, u32::MAX, "index of the first point"),
     }
 }
-pattern_params! {
+declare_params! {
     /// The Hammersley point set (i/N, Φ_{p1}(i)).
     Hammersley = "hammersley", "Hammersley set x_i = (i/N, Φ_p1(i))" {
         p1: int(2, 2, 7919, "base p1 of y (a prime ≤ 7919; the lecture shows 2, 3, 5, 7, 11)"),
     }
 }
-pattern_params! {
+declare_params! {
     /// Halton with the folded radical inverse.
     HaltonZaremba = "halton-zaremba", "Halton–Zaremba: Halton with the folded radical inverse Σ((a_k+k−1) mod b) b^(−k)" {
         base_x: int(2, 2, 7919, "base of x (a prime ≤ 7919)"),
@@ -242,13 +268,13 @@ pattern_params! {
         skip: int(0, 0, u32::MAX, "index of the first point"),
     }
 }
-pattern_params! {
+declare_params! {
     /// Hammersley with the folded radical inverse.
     HammersleyZaremba = "hammersley-zaremba", "Hammersley–Zaremba: (i/N, folded Φ_p1(i))" {
         p1: int(2, 2, 7919, "base p1 of y (a prime ≤ 7919)"),
     }
 }
-pattern_params! {
+declare_params! {
     /// The (0,2)-sequence of the first two Sobol' dimensions.
     Sobol = "sobol", "Sobol' (0,2)-sequence (first two dimensions), optionally scrambled" {
         scramble: choice(Scramble, "none | random-digit (XOR) | owen (nested uniform, hash-based)"),
@@ -257,12 +283,14 @@ pattern_params! {
 }
 
 macro_rules! patterns {
-    ($( $variant:ident ),* $(,)?) => {
-        /// Every sample pattern, as a small parameter struct per variant.
+    ($( $variant:ident = $name:literal $(| $alias:literal)* ),* $(,)?) => {
+        /// Every sample pattern, as a small parameter struct per variant. In scene files the
+        /// `kind` is the pattern's one name (as on the command line); older spellings are
+        /// accepted as aliases.
         #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-        #[serde(tag = "kind", rename_all = "kebab-case")]
+        #[serde(tag = "kind")]
         pub enum Pattern {
-            $( $variant($variant), )*
+            $( #[serde(rename = $name $(, alias = $alias)*)] $variant($variant), )*
         }
 
         impl Pattern {
@@ -281,42 +309,30 @@ macro_rules! patterns {
                 match self { $( Pattern::$variant(_) => $variant::SUMMARY, )* }
             }
 
-            /// Descriptors of every parameter.
-            pub fn specs(&self) -> Vec<ParamSpec> {
-                match self { $( Pattern::$variant(_) => $variant::specs(), )* }
-            }
-
-            /// Current value of parameter `key`.
-            pub fn get(&self, key: &str) -> Option<ParamValue> {
-                match self { $( Pattern::$variant(p) => p.get(key), )* }
-            }
-
-            /// Sets parameter `key` from text, checking it against its range.
-            pub fn set(&mut self, key: &str, text: &str) -> Result<(), PatternError> {
-                match self { $( Pattern::$variant(p) => p.set(key, text), )* }
-            }
         }
+
+        dispatch_params!(Pattern { $( $variant ),* });
     };
 }
 
 patterns!(
-    Grid,
-    Random,
-    Jitter,
-    NRooks,
-    Lhs,
-    MultiJitter,
-    CorrelatedMultiJitter,
-    Hex,
-    PoissonDart,
-    PoissonBridson,
-    BestCandidate,
-    VanDerCorput,
-    Halton,
-    Hammersley,
-    HaltonZaremba,
-    HammersleyZaremba,
-    Sobol,
+    Grid = "grid",
+    Random = "random",
+    Jitter = "jitter",
+    NRooks = "nrooks" | "n-rooks",
+    Lhs = "lhs",
+    MultiJitter = "multijitter" | "multi-jitter",
+    CorrelatedMultiJitter = "cmj" | "correlated-multi-jitter",
+    Hex = "hex",
+    PoissonDart = "poisson-dart",
+    PoissonBridson = "poisson-bridson",
+    BestCandidate = "best-candidate",
+    VanDerCorput = "van-der-corput",
+    Halton = "halton",
+    Hammersley = "hammersley",
+    HaltonZaremba = "halton-zaremba",
+    HammersleyZaremba = "hammersley-zaremba",
+    Sobol = "sobol",
 );
 
 impl Default for Pattern {

@@ -26,32 +26,21 @@
 //! horizon the check frequency grows without bound: every finite sampling rate aliases there.
 
 use super::exact::{cos_pi, sin_pi};
-use super::{check_range, SignalError};
+use super::SignalError;
+use crate::core::params::{declare_params, Params};
 use glam::DVec2;
-use serde::{Deserialize, Serialize};
 
-/// Perspective checkerboard parameters (see the module docs for the exact projection).
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-#[serde(default)]
-pub struct Checkerboard {
-    /// Checks per world unit on the ground, in (0, 1000].
-    pub checks: f64,
-    /// Camera height above the ground in world units, in (0, 1000].
-    pub height: f64,
-    /// Image row of the horizon, as a fraction of the image height from the top, in [0, 1].
-    pub horizon: f64,
-    /// Rotation of the board about the vertical axis, degrees, in [−360, 360].
-    pub tilt: f64,
-}
-
-impl Default for Checkerboard {
-    fn default() -> Self {
-        Checkerboard {
-            checks: 4.0,
-            height: 1.0,
-            horizon: 0.25,
-            tilt: 20.0,
-        }
+declare_params! {
+    /// Perspective checkerboard parameters (see the module docs for the exact projection).
+    Checkerboard = "checkerboard", "Duff's perspective checkerboard: moiré towards the horizon" {
+        /// Checks per world unit on the ground, in (0, 1000].
+        checks: positive(4.0, 1000.0, "checks per world unit on the ground"),
+        /// Camera height above the ground in world units, in (0, 1000].
+        height: positive(1.0, 1000.0, "camera height above the ground, world units"),
+        /// Image row of the horizon, as a fraction of the image height from the top, in [0, 1].
+        horizon: float(0.25, 0.0, 1.0, "image row of the horizon, fraction of the height from the top"),
+        /// Rotation of the board about the vertical axis, degrees, in [−360, 360].
+        tilt: float(20.0, -360.0, 360.0, "rotation of the board about the vertical axis, degrees"),
     }
 }
 
@@ -59,18 +48,12 @@ impl Default for Checkerboard {
 const FAR_CHECKS: f64 = 1_099_511_627_776.0; // 2^40
 
 impl Checkerboard {
-    /// Name in scene files.
-    pub const NAME: &'static str = "checkerboard";
     /// The value of the sky and of the unresolvable far field: the mean of the board.
     pub const SKY: f64 = 0.5;
 
-    /// Checks every parameter against its range.
+    /// Checks every parameter against its descriptor (see [`Params::check_params`]).
     pub fn validate(&self) -> Result<(), SignalError> {
-        check_positive(Self::NAME, "checks", self.checks, 1000.0)?;
-        check_positive(Self::NAME, "height", self.height, 1000.0)?;
-        check_range(Self::NAME, "horizon", self.horizon, 0.0, 1.0)?;
-        check_range(Self::NAME, "tilt", self.tilt, -360.0, 360.0)?;
-        Ok(())
+        Ok(self.check_params()?)
     }
 
     /// The ground point (X', Y') in check units (already rotated by `tilt` and scaled by
@@ -145,24 +128,6 @@ impl PreparedCheckerboard {
             }
         }
     }
-}
-
-/// Checks `0 < value ≤ max` (finite).
-fn check_positive(
-    signal: &'static str,
-    field: &'static str,
-    value: f64,
-    max: f64,
-) -> Result<(), SignalError> {
-    if !(value.is_finite() && value > 0.0 && value <= max) {
-        return Err(SignalError::InvalidParam {
-            signal,
-            field,
-            value,
-            allowed: format!("a finite number in (0, {max}]"),
-        });
-    }
-    Ok(())
 }
 
 #[cfg(test)]

@@ -39,39 +39,16 @@ pub use oned::{Chirp, Constant, Square, SumOfSines};
 pub use shapes::{Grating, Polygon, PolygonShape, StepEdge};
 pub use zone_plate::ZonePlate;
 
+use crate::core::params::{dispatch_params, ParamError, Params};
 use glam::DVec2;
 use serde::{Deserialize, Serialize};
 
-/// A parameter of a signal is out of its range.
+/// A parameter of a signal is unknown, malformed or out of its range.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum SignalError {
-    /// `signal.field = value` is not allowed; `allowed` says what is.
-    #[error("{signal}.{field} = {value}: must be {allowed}")]
-    InvalidParam {
-        signal: &'static str,
-        field: &'static str,
-        value: f64,
-        allowed: String,
-    },
-}
-
-/// Checks `lo ≤ value ≤ hi` (and finite), naming the field in the error.
-pub(crate) fn check_range(
-    signal: &'static str,
-    field: &'static str,
-    value: f64,
-    lo: f64,
-    hi: f64,
-) -> Result<(), SignalError> {
-    if !(value.is_finite() && value >= lo && value <= hi) {
-        return Err(SignalError::InvalidParam {
-            signal,
-            field,
-            value,
-            allowed: format!("a finite number in [{lo}, {hi}]"),
-        });
-    }
-    Ok(())
+    /// `signal.field = value` is not allowed; the error says what is.
+    #[error(transparent)]
+    Param(#[from] ParamError),
 }
 
 /// Every test signal, as a small parameter struct per variant.
@@ -97,6 +74,18 @@ pub enum Signal {
     /// The constant field.
     Constant(Constant),
 }
+
+dispatch_params!(Signal {
+    ZonePlate,
+    Checkerboard,
+    Grating,
+    StepEdge,
+    Polygon,
+    SumOfSines,
+    Chirp,
+    Square,
+    Constant,
+});
 
 impl Default for Signal {
     fn default() -> Self {
@@ -145,17 +134,7 @@ impl Signal {
 
     /// Checks every parameter against its range; the error names the signal and the field.
     pub fn validate(&self) -> Result<(), SignalError> {
-        match self {
-            Signal::ZonePlate(s) => s.validate(),
-            Signal::Checkerboard(s) => s.validate(),
-            Signal::Grating(s) => s.validate(),
-            Signal::StepEdge(s) => s.validate(),
-            Signal::Polygon(s) => s.validate(),
-            Signal::SumOfSines(s) => s.validate(),
-            Signal::Chirp(s) => s.validate(),
-            Signal::Square(s) => s.validate(),
-            Signal::Constant(s) => s.validate(),
-        }
+        Ok(self.check_params()?)
     }
 
     /// The signal's value at image point p, in [0, 1].

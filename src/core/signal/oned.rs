@@ -6,8 +6,8 @@
 //! has Nyquist N/2. Phases are formed in double-double and reduced exactly, as for the zone plate.
 
 use super::exact::{rem2, sin_pi, DoubleDouble};
-use super::{check_range, SignalError};
-use serde::{Deserialize, Serialize};
+use super::SignalError;
+use crate::core::params::{declare_params, fmt_num, ParamError, Params};
 
 /// Number of terms of [`SumOfSines`].
 pub const MAX_TERMS: usize = 4;
@@ -15,51 +15,35 @@ pub const MAX_TERMS: usize = 4;
 /// Largest frequency accepted by the 1D signals (cycles per unit).
 pub const MAX_FREQUENCY_1D: f64 = 1e6;
 
-/// f(x) = ½(1 + Σₖ aₖ sin(2π fₖ x)), with Σ|aₖ| ≤ 1 so that f ∈ [0, 1].
-///
-/// A band-limited signal when every fₖ < N/2: sampled at N points per unit it is recovered
-/// exactly by sinc interpolation (Shannon 1949); unused terms have aₖ = 0.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-#[serde(default)]
-pub struct SumOfSines {
-    /// Frequencies fₖ in cycles per unit, each in [0, 10⁶].
-    pub freqs: [f64; MAX_TERMS],
-    /// Amplitudes aₖ, with Σ|aₖ| ≤ 1.
-    pub amps: [f64; MAX_TERMS],
-}
-
-impl Default for SumOfSines {
-    fn default() -> Self {
-        SumOfSines {
-            freqs: [2.0, 5.0, 11.0, 0.0],
-            amps: [0.5, 0.3, 0.2, 0.0],
-        }
+declare_params! {
+    /// f(x) = ½(1 + Σₖ aₖ sin(2π fₖ x)), with Σ|aₖ| ≤ 1 so that f ∈ [0, 1].
+    ///
+    /// A band-limited signal when every fₖ < N/2: sampled at N points per unit it is recovered
+    /// exactly by sinc interpolation (Shannon 1949); unused terms have aₖ = 0.
+    SumOfSines = "sum-of-sines", "1D: ½(1 + Σ aₖ sin(2π fₖ x)), band-limited" {
+        /// Frequencies fₖ in cycles per unit, each in [0, 10⁶].
+        freqs: list(4, [2.0, 5.0, 11.0, 0.0], 0.0, MAX_FREQUENCY_1D, "frequencies fₖ, cycles per unit"),
+        /// Amplitudes aₖ, with Σ|aₖ| ≤ 1.
+        amps: list(4, [0.5, 0.3, 0.2, 0.0], -1.0, 1.0, "amplitudes aₖ, Σ|aₖ| ≤ 1"),
     }
-}
-
-impl SumOfSines {
-    /// Name in scene files.
-    pub const NAME: &'static str = "sum-of-sines";
-
-    /// Checks every parameter against its range.
-    pub fn validate(&self) -> Result<(), SignalError> {
-        for &f in &self.freqs {
-            check_range(Self::NAME, "freqs", f, 0.0, MAX_FREQUENCY_1D)?;
-        }
-        let mut total = 0.0;
-        for &a in &self.amps {
-            check_range(Self::NAME, "amps", a, -1.0, 1.0)?;
-            total += a.abs();
-        }
+    check(p) {
+        let total: f64 = p.amps.iter().map(|a| a.abs()).sum();
         if total > 1.0 {
-            return Err(SignalError::InvalidParam {
-                signal: Self::NAME,
+            return Err(ParamError::Invalid {
+                owner: "sum-of-sines",
                 field: "amps",
-                value: total,
+                value: fmt_num(total),
                 allowed: "amplitudes with Σ|aₖ| ≤ 1 (value shown is Σ|aₖ|)".into(),
             });
         }
         Ok(())
+    }
+}
+
+impl SumOfSines {
+    /// Checks every parameter against its descriptor (see [`Params::check_params`]).
+    pub fn validate(&self) -> Result<(), SignalError> {
+        Ok(self.check_params()?)
     }
 
     /// f(x) ∈ [0, 1].
@@ -75,32 +59,21 @@ impl SumOfSines {
     }
 }
 
-/// A linear chirp f(x) = ½(1 + sin(2π(f₀x + (f₁ − f₀)x²/2))): instantaneous frequency
-/// f₀ + (f₁ − f₀)x cycles per unit, sweeping from f₀ at x = 0 to f₁ at x = 1.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-#[serde(default)]
-pub struct Chirp {
-    /// Start frequency f₀ (cycles per unit) at x = 0, in [0, 10⁶].
-    pub f0: f64,
-    /// End frequency f₁ (cycles per unit) at x = 1, in [0, 10⁶].
-    pub f1: f64,
-}
-
-impl Default for Chirp {
-    fn default() -> Self {
-        Chirp { f0: 1.0, f1: 64.0 }
+declare_params! {
+    /// A linear chirp f(x) = ½(1 + sin(2π(f₀x + (f₁ − f₀)x²/2))): instantaneous frequency
+    /// f₀ + (f₁ − f₀)x cycles per unit, sweeping from f₀ at x = 0 to f₁ at x = 1.
+    Chirp = "chirp", "1D: linear chirp from f₀ at x = 0 to f₁ at x = 1" {
+        /// Start frequency f₀ (cycles per unit) at x = 0, in [0, 10⁶].
+        f0: float(1.0, 0.0, MAX_FREQUENCY_1D, "start frequency f₀ at x = 0, cycles per unit"),
+        /// End frequency f₁ (cycles per unit) at x = 1, in [0, 10⁶].
+        f1: float(64.0, 0.0, MAX_FREQUENCY_1D, "end frequency f₁ at x = 1, cycles per unit"),
     }
 }
 
 impl Chirp {
-    /// Name in scene files.
-    pub const NAME: &'static str = "chirp";
-
-    /// Checks every parameter against its range.
+    /// Checks every parameter against its descriptor (see [`Params::check_params`]).
     pub fn validate(&self) -> Result<(), SignalError> {
-        check_range(Self::NAME, "f0", self.f0, 0.0, MAX_FREQUENCY_1D)?;
-        check_range(Self::NAME, "f1", self.f1, 0.0, MAX_FREQUENCY_1D)?;
-        Ok(())
+        Ok(self.check_params()?)
     }
 
     /// Instantaneous frequency f₀ + (f₁ − f₀)x (cycles per unit).
@@ -117,40 +90,20 @@ impl Chirp {
     }
 }
 
-/// A square wave: f(x) = 1 where frac(f·x) < ½, else 0 (high on the first half period).
-///
-/// Its Fourier series has odd harmonics (2k+1)f with amplitudes 2/(π(2k+1)): never band-limited.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-#[serde(default)]
-pub struct Square {
-    /// Frequency f (periods per unit), in (0, 10⁶].
-    pub frequency: f64,
-}
-
-impl Default for Square {
-    fn default() -> Self {
-        Square { frequency: 4.0 }
+declare_params! {
+    /// A square wave: f(x) = 1 where frac(f·x) < ½, else 0 (high on the first half period).
+    ///
+    /// Its Fourier series has odd harmonics (2k+1)f with amplitudes 2/(π(2k+1)): never band-limited.
+    Square = "square", "1D: square wave, high on the first half period" {
+        /// Frequency f (periods per unit), in (0, 10⁶].
+        frequency: positive(4.0, MAX_FREQUENCY_1D, "frequency f, periods per unit"),
     }
 }
 
 impl Square {
-    /// Name in scene files.
-    pub const NAME: &'static str = "square";
-
-    /// Checks every parameter against its range.
+    /// Checks every parameter against its descriptor (see [`Params::check_params`]).
     pub fn validate(&self) -> Result<(), SignalError> {
-        if !(self.frequency.is_finite()
-            && self.frequency > 0.0
-            && self.frequency <= MAX_FREQUENCY_1D)
-        {
-            return Err(SignalError::InvalidParam {
-                signal: Self::NAME,
-                field: "frequency",
-                value: self.frequency,
-                allowed: format!("a finite number in (0, {MAX_FREQUENCY_1D}]"),
-            });
-        }
-        Ok(())
+        Ok(self.check_params()?)
     }
 
     /// frac(f·x) ∈ [0, 1), with f·x formed exactly.
@@ -179,27 +132,18 @@ impl Square {
     }
 }
 
-/// The constant field f(p) = value: reconstruction must return it exactly.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-#[serde(default)]
-pub struct Constant {
-    /// The value, in [0, 1].
-    pub value: f64,
-}
-
-impl Default for Constant {
-    fn default() -> Self {
-        Constant { value: 0.5 }
+declare_params! {
+    /// The constant field f(p) = value: reconstruction must return it exactly.
+    Constant = "constant", "the constant field: reconstruction must reproduce it exactly" {
+        /// The value, in [0, 1].
+        value: float(0.5, 0.0, 1.0, "the value"),
     }
 }
 
 impl Constant {
-    /// Name in scene files.
-    pub const NAME: &'static str = "constant";
-
-    /// Checks every parameter against its range.
+    /// Checks every parameter against its descriptor (see [`Params::check_params`]).
     pub fn validate(&self) -> Result<(), SignalError> {
-        check_range(Self::NAME, "value", self.value, 0.0, 1.0)
+        Ok(self.check_params()?)
     }
 }
 

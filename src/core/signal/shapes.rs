@@ -5,7 +5,8 @@
 //! with [`cos_pi`]/[`sin_pi`] of θ/180, so axis-aligned angles give exact 0 and ±1.
 
 use super::exact::{cos_pi, rem2, sin_pi, DoubleDouble};
-use super::{check_range, SignalError};
+use super::SignalError;
+use crate::core::params::{declare_params, Params};
 use glam::DVec2;
 use serde::{Deserialize, Serialize};
 
@@ -19,51 +20,30 @@ pub fn direction(angle_deg: f64) -> DVec2 {
     DVec2::new(cos_pi(a), sin_pi(a))
 }
 
-/// A sinusoidal grating g(p) = ½(1 + sin(2π (f (n·p) + φ))), n = (cos θ, sin θ), phase φ in cycles.
-///
-/// Its spectrum is a pair of impulses at ±f·n (cycles per unit): it aliases on a W×W grid as
-/// soon as f·max(|nₓ|, |n_y|) > W/2. n·p is formed in double-double and the phase is reduced
-/// exactly (as for the zone plate), so the phase error is ≤ 10⁻¹⁵ for every allowed f.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-#[serde(default)]
-pub struct Grating {
-    /// Frequency f in cycles per unit, in [0, 10⁶].
-    pub frequency: f64,
-    /// Direction θ of the wave vector, degrees, in [−360, 360].
-    pub angle: f64,
-    /// Phase φ in cycles, in [−1, 1]: g(p) = ½(1 + sin(2π(f (n·p) + φ))). Default 0; a moving
-    /// grating (scene motion) drifts through it.
-    pub phase: f64,
-}
-
-impl Default for Grating {
-    fn default() -> Self {
-        Grating {
-            frequency: 16.0,
-            angle: 30.0,
-            phase: 0.0,
-        }
+declare_params! {
+    /// A sinusoidal grating g(p) = ½(1 + sin(2π (f (n·p) + φ))), n = (cos θ, sin θ), phase φ in cycles.
+    ///
+    /// Its spectrum is a pair of impulses at ±f·n (cycles per unit): it aliases on a W×W grid as
+    /// soon as f·max(|nₓ|, |n_y|) > W/2. n·p is formed in double-double and the phase is reduced
+    /// exactly (as for the zone plate), so the phase error is ≤ 10⁻¹⁵ for every allowed f.
+    Grating = "grating", "grating ½(1 + sin(2π(f n·p + φ))): a single frequency" {
+        /// Frequency f in cycles per unit, in [0, 10⁶].
+        frequency: float(16.0, 0.0, 1e6, "frequency f, cycles per unit"),
+        /// Direction θ of the wave vector, degrees, in [−360, 360].
+        angle: float(30.0, -360.0, 360.0, "direction θ of the wave vector, degrees"),
+        /// Phase φ in cycles, in [−1, 1]: g(p) = ½(1 + sin(2π(f (n·p) + φ))). Default 0; a moving
+        /// grating (scene motion) drifts through it.
+        phase: float(0.0, -1.0, 1.0, "phase φ in cycles"),
     }
 }
 
 impl Grating {
-    /// Name in scene files.
-    pub const NAME: &'static str = "grating";
     /// Largest frequency accepted (cycles per unit).
     pub const MAX_FREQUENCY: f64 = 1e6;
 
-    /// Checks every parameter against its range.
+    /// Checks every parameter against its descriptor (see [`Params::check_params`]).
     pub fn validate(&self) -> Result<(), SignalError> {
-        check_range(
-            Self::NAME,
-            "frequency",
-            self.frequency,
-            0.0,
-            Self::MAX_FREQUENCY,
-        )?;
-        check_range(Self::NAME, "angle", self.angle, -360.0, 360.0)?;
-        check_range(Self::NAME, "phase", self.phase, -1.0, 1.0)?;
-        Ok(())
+        Ok(self.check_params()?)
     }
 
     /// 2 (f (n·p) + φ) modulo 2, in [−1, 1]: the phase in units of π (2φ is exact, and the sum
@@ -82,39 +62,25 @@ impl Grating {
     }
 }
 
-/// A step edge: 1 on the side of the line n·(p − c) = offset that n points to, 0 on the other.
-///
-/// s(p) = 1 if n·(p − (½,½)) ≥ offset, else 0, with n = (cos θ, sin θ). A slightly slanted edge
-/// (θ a few degrees off an axis) shows jaggies under point sampling and ringing under sinc-like
-/// reconstruction; its exact box-filtered image is the area coverage of each pixel
-/// (see `recon::reference`).
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-#[serde(default)]
-pub struct StepEdge {
-    /// Direction θ of the edge normal, degrees, in [−360, 360].
-    pub angle: f64,
-    /// Signed distance of the edge from the image centre (½, ½) along n, in [−1, 1].
-    pub offset: f64,
-}
-
-impl Default for StepEdge {
-    fn default() -> Self {
-        StepEdge {
-            angle: 10.0,
-            offset: 0.0,
-        }
+declare_params! {
+    /// A step edge: 1 on the side of the line n·(p − c) = offset that n points to, 0 on the other.
+    ///
+    /// s(p) = 1 if n·(p − (½,½)) ≥ offset, else 0, with n = (cos θ, sin θ). A slightly slanted edge
+    /// (θ a few degrees off an axis) shows jaggies under point sampling and ringing under sinc-like
+    /// reconstruction; its exact box-filtered image is the area coverage of each pixel
+    /// (see `recon::reference`).
+    StepEdge = "step-edge", "step edge: 1 where n·(p − c) ≥ offset: jaggies and ringing" {
+        /// Direction θ of the edge normal, degrees, in [−360, 360].
+        angle: float(10.0, -360.0, 360.0, "direction θ of the edge normal, degrees"),
+        /// Signed distance of the edge from the image centre (½, ½) along n, in [−1, 1].
+        offset: float(0.0, -1.0, 1.0, "signed distance of the edge from the image centre along n"),
     }
 }
 
 impl StepEdge {
-    /// Name in scene files.
-    pub const NAME: &'static str = "step-edge";
-
-    /// Checks every parameter against its range.
+    /// Checks every parameter against its descriptor (see [`Params::check_params`]).
     pub fn validate(&self) -> Result<(), SignalError> {
-        check_range(Self::NAME, "angle", self.angle, -360.0, 360.0)?;
-        check_range(Self::NAME, "offset", self.offset, -1.0, 1.0)?;
-        Ok(())
+        Ok(self.check_params()?)
     }
 
     /// The half-plane {p : a·p ≥ b} as (a = n, b = offset + n·(½,½)).
@@ -147,6 +113,16 @@ pub enum PolygonShape {
     ThinTriangle,
 }
 
+impl crate::core::params::ChoiceParam for PolygonShape {
+    const OPTIONS: &'static [&'static str] = &["square", "thin-triangle"];
+    fn index(self) -> usize {
+        self as usize
+    }
+    fn from_index(index: usize) -> Self {
+        [PolygonShape::Square, PolygonShape::ThinTriangle][index]
+    }
+}
+
 impl PolygonShape {
     /// Vertices in the canonical frame, counter-clockwise (in a y-up frame).
     pub fn canonical_vertices(self) -> &'static [DVec2] {
@@ -168,48 +144,26 @@ impl PolygonShape {
     }
 }
 
-/// A filled convex polygon with slanted edges: 1 inside (boundary included), 0 outside.
-///
-/// Vertices vₖ = (½,½) + size·R(θ)·qₖ where qₖ are the [`PolygonShape::canonical_vertices`] and
-/// R(θ) the rotation by θ degrees. Its exact box-filtered image is computed by clipping each
-/// pixel square against the polygon (Sutherland–Hodgman) and taking the shoelace area.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-#[serde(default)]
-pub struct Polygon {
-    /// Which canonical shape.
-    pub shape: PolygonShape,
-    /// Rotation θ, degrees, in [−360, 360].
-    pub angle: f64,
-    /// Scale of the canonical shape (the square's side), in (0, 2].
-    pub size: f64,
-}
-
-impl Default for Polygon {
-    fn default() -> Self {
-        Polygon {
-            shape: PolygonShape::Square,
-            angle: 20.0,
-            size: 0.6,
-        }
+declare_params! {
+    /// A filled convex polygon with slanted edges: 1 inside (boundary included), 0 outside.
+    ///
+    /// Vertices vₖ = (½,½) + size·R(θ)·qₖ where qₖ are the [`PolygonShape::canonical_vertices`] and
+    /// R(θ) the rotation by θ degrees. Its exact box-filtered image is computed by clipping each
+    /// pixel square against the polygon (Sutherland–Hodgman) and taking the shoelace area.
+    Polygon = "polygon", "filled convex polygon with slanted edges: jaggies, thin features breaking up" {
+        /// Which canonical shape.
+        shape: choice(PolygonShape, "square | thin-triangle"),
+        /// Rotation θ, degrees, in [−360, 360].
+        angle: float(20.0, -360.0, 360.0, "rotation θ, degrees"),
+        /// Scale of the canonical shape (the square's side), in (0, 2].
+        size: positive(0.6, 2.0, "scale of the canonical shape (the square's side)"),
     }
 }
 
 impl Polygon {
-    /// Name in scene files.
-    pub const NAME: &'static str = "polygon";
-
-    /// Checks every parameter against its range.
+    /// Checks every parameter against its descriptor (see [`Params::check_params`]).
     pub fn validate(&self) -> Result<(), SignalError> {
-        check_range(Self::NAME, "angle", self.angle, -360.0, 360.0)?;
-        if !(self.size.is_finite() && self.size > 0.0 && self.size <= 2.0) {
-            return Err(SignalError::InvalidParam {
-                signal: Self::NAME,
-                field: "size",
-                value: self.size,
-                allowed: "a finite number in (0, 2]".into(),
-            });
-        }
-        Ok(())
+        Ok(self.check_params()?)
     }
 
     /// The vertices vₖ = (½,½) + size·R(θ)·qₖ in image coordinates (at most 4).

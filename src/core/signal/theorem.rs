@@ -57,6 +57,7 @@
 
 use crate::core::filter::special::{cos_pi, sin_pi, sinc};
 use crate::core::filter::{quad, Filter, FilterError, Parity, ResponseEval};
+use crate::core::params::{ParamError, ParamKind, ParamSpec, ParamValue, Params};
 use crate::core::pattern::radical_inverse::{radical_inverse_table, RadicalInverseRow};
 use rustfft::num_complex::Complex64;
 use serde::{Deserialize, Serialize};
@@ -105,6 +106,9 @@ pub enum TheoremError {
         value: String,
         allowed: String,
     },
+    /// A parameter of the signal is out of range.
+    #[error("theorem.{0}")]
+    Param(#[from] ParamError),
     /// The reconstruction filter is invalid.
     #[error("theorem.filter: {0}")]
     Filter(#[from] FilterError),
@@ -139,6 +143,87 @@ pub enum Signal1D {
     Gaussian { sigma: f64 },
     /// Pulses of width d·p every p: Fourier series c_m = d sinc(md).
     PulseTrain { period: f64, duty: f64 },
+}
+
+fn param_spec(name: &'static str, doc: &'static str, default: f64, range: (f64, f64)) -> ParamSpec {
+    ParamSpec {
+        name,
+        doc,
+        kind: ParamKind::Float {
+            default,
+            min: range.0,
+            max: range.1,
+            min_exclusive: false,
+        },
+    }
+}
+
+/// The theorem's 1D signals share the one parameter mechanism; errors start with `signal.`.
+impl Params for Signal1D {
+    fn owner(&self) -> &'static str {
+        "signal"
+    }
+
+    fn specs(&self) -> Vec<ParamSpec> {
+        let r = PARAM_RANGE;
+        match self {
+            Signal1D::Cosines { .. } | Signal1D::Sinc { .. } | Signal1D::SincSquared { .. } => {
+                vec![param_spec(
+                    "bandwidth",
+                    "bandwidth B, cycles per unit",
+                    1.5,
+                    r,
+                )]
+            }
+            Signal1D::Box { .. } => vec![param_spec("width", "width w, units", 1.0, r)],
+            Signal1D::Tent { .. } => vec![param_spec("radius", "radius w, units", 1.0, r)],
+            Signal1D::Gaussian { .. } => {
+                vec![param_spec("sigma", "standard deviation σ, units", 0.3, r)]
+            }
+            Signal1D::PulseTrain { .. } => vec![
+                param_spec("period", "period p, units", 2.0, r),
+                param_spec("duty", "duty cycle d (pulse width d·p)", 0.5, (0.01, 0.99)),
+            ],
+        }
+    }
+
+    fn get(&self, key: &str) -> Option<ParamValue> {
+        let v = match (*self, key) {
+            (
+                Signal1D::Cosines { bandwidth }
+                | Signal1D::Sinc { bandwidth }
+                | Signal1D::SincSquared { bandwidth },
+                "bandwidth",
+            ) => bandwidth,
+            (Signal1D::Box { width }, "width") => width,
+            (Signal1D::Tent { radius }, "radius") => radius,
+            (Signal1D::Gaussian { sigma }, "sigma") => sigma,
+            (Signal1D::PulseTrain { period, .. }, "period") => period,
+            (Signal1D::PulseTrain { duty, .. }, "duty") => duty,
+            _ => return None,
+        };
+        Some(ParamValue::Float(v))
+    }
+
+    fn put(&mut self, key: &str, value: ParamValue) {
+        let ParamValue::Float(value) = value else {
+            return;
+        };
+        match (self, key) {
+            (
+                Signal1D::Cosines { bandwidth }
+                | Signal1D::Sinc { bandwidth }
+                | Signal1D::SincSquared { bandwidth },
+                "bandwidth",
+            ) => *bandwidth = value,
+            (Signal1D::Box { width }, "width") => *width = value,
+            (Signal1D::Tent { radius }, "radius") => *radius = value,
+            (Signal1D::Gaussian { sigma }, "sigma") => *sigma = value,
+            (Signal1D::PulseTrain { period, .. }, "period") => *period = value,
+            (Signal1D::PulseTrain { duty, .. }, "duty") => *duty = value,
+            _ => {}
+        }
+    }
 }
 
 /// Amplitudes and frequency fractions (of B) of [`Signal1D::Cosines`].
@@ -189,54 +274,9 @@ impl Signal1D {
         }
     }
 
-    /// The parameters: (name, value, (min, max)).
-    pub fn params(&self) -> Vec<(&'static str, f64, (f64, f64))> {
-        let r = PARAM_RANGE;
-        match *self {
-            Signal1D::Cosines { bandwidth }
-            | Signal1D::Sinc { bandwidth }
-            | Signal1D::SincSquared { bandwidth } => vec![("bandwidth", bandwidth, r)],
-            Signal1D::Box { width } => vec![("width", width, r)],
-            Signal1D::Tent { radius } => vec![("radius", radius, r)],
-            Signal1D::Gaussian { sigma } => vec![("sigma", sigma, r)],
-            Signal1D::PulseTrain { period, duty } => {
-                vec![("period", period, r), ("duty", duty, (0.01, 0.99))]
-            }
-        }
-    }
-
-    /// Sets parameter `name` (unchecked; see [`Signal1D::validate`]). Unknown names are ignored.
-    pub fn set(&mut self, name: &str, value: f64) {
-        match (self, name) {
-            (
-                Signal1D::Cosines { bandwidth }
-                | Signal1D::Sinc { bandwidth }
-                | Signal1D::SincSquared { bandwidth },
-                "bandwidth",
-            ) => *bandwidth = value,
-            (Signal1D::Box { width }, "width") => *width = value,
-            (Signal1D::Tent { radius }, "radius") => *radius = value,
-            (Signal1D::Gaussian { sigma }, "sigma") => *sigma = value,
-            (Signal1D::PulseTrain { period, .. }, "period") => *period = value,
-            (Signal1D::PulseTrain { duty, .. }, "duty") => *duty = value,
-            _ => {}
-        }
-    }
-
     /// Checks every parameter; the error names `signal.<param>`.
     pub fn validate(&self) -> Result<(), TheoremError> {
-        for (name, v, (lo, hi)) in self.params() {
-            let field = match name {
-                "bandwidth" => "signal.bandwidth",
-                "width" => "signal.width",
-                "radius" => "signal.radius",
-                "sigma" => "signal.sigma",
-                "period" => "signal.period",
-                _ => "signal.duty",
-            };
-            check(field, v, lo, hi)?;
-        }
-        Ok(())
+        Ok(self.check_params()?)
     }
 
     /// Continuous spectrum or lines.

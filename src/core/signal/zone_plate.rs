@@ -23,44 +23,29 @@
 //! 2πK|p − c|·2⁻⁵³·|p|√2; that is a property of the input, not of the evaluation.
 
 use super::exact::{rem2, sin_pi, DoubleDouble};
-use super::{check_range, SignalError};
+use super::SignalError;
+use crate::core::params::{declare_params, Params};
 use glam::DVec2;
-use serde::{Deserialize, Serialize};
 
-/// Zone plate parameters: z(p) = ½(1 + sin(π K |p − c|²)), c = (cx, cy).
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-#[serde(default)]
-pub struct ZonePlate {
-    /// K: the local frequency at radius ρ is K·ρ cycles per unit. |K| ≤ 10¹².
-    pub k: f64,
-    /// Centre x (default ½), in [−1, 2].
-    pub cx: f64,
-    /// Centre y (default ½), in [−1, 2].
-    pub cy: f64,
-}
-
-impl Default for ZonePlate {
-    fn default() -> Self {
-        ZonePlate {
-            k: 256.0,
-            cx: 0.5,
-            cy: 0.5,
-        }
+declare_params! {
+    /// Zone plate parameters: z(p) = ½(1 + sin(π K |p − c|²)), c = (cx, cy).
+    ZonePlate = "zone-plate", "zone plate ½(1 + sin(πK|p − c|²)): local frequency K·ρ at radius ρ" {
+        /// K: the local frequency at radius ρ is K·ρ cycles per unit. |K| ≤ 10¹².
+        k: float(256.0, -1e12, 1e12, "K: local frequency K·ρ cycles per unit at radius ρ"),
+        /// Centre x (default ½), in [−1, 2].
+        cx: float(0.5, -1.0, 2.0, "centre x"),
+        /// Centre y (default ½), in [−1, 2].
+        cy: float(0.5, -1.0, 2.0, "centre y (downwards)"),
     }
 }
 
 impl ZonePlate {
-    /// Name in scene files.
-    pub const NAME: &'static str = "zone-plate";
     /// Largest |K| accepted.
     pub const MAX_K: f64 = 1e12;
 
-    /// Checks every parameter against its range.
+    /// Checks every parameter against its descriptor (see [`Params::check_params`]).
     pub fn validate(&self) -> Result<(), SignalError> {
-        check_range(Self::NAME, "k", self.k, -Self::MAX_K, Self::MAX_K)?;
-        check_range(Self::NAME, "cx", self.cx, -1.0, 2.0)?;
-        check_range(Self::NAME, "cy", self.cy, -1.0, 2.0)?;
-        Ok(())
+        Ok(self.check_params()?)
     }
 
     /// The phase in units of π, reduced modulo 2 into [−1, 1]: K|p − c|² mod 2.

@@ -2,6 +2,7 @@
 //! check, titles, caption line and metadata.
 
 use super::draw::{empty, present};
+use crate::core::params::Params;
 use crate::export::ExportError;
 use crate::model::{ColumnData, FigureContext, PanelKind, TheoremView};
 
@@ -40,9 +41,12 @@ fn setup(v: &TheoremView) -> String {
     let s = &v.settings;
     let params = s
         .signal
-        .params()
+        .specs()
         .iter()
-        .map(|(n, x, _)| format!("{n} {x}"))
+        .filter_map(|spec| match s.signal.get(spec.name) {
+            Some(crate::core::params::ParamValue::Float(x)) => Some(format!("{} {x}", spec.name)),
+            _ => None,
+        })
         .collect::<Vec<_>>()
         .join(", ");
     format!(

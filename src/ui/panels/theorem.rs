@@ -11,7 +11,7 @@ use crate::model::{palette, PanelKind};
 use crate::scene::graph::{NodeKind, NodeValue};
 use crate::scene::Panels;
 use crate::ui::figures::FigureRequests;
-use crate::ui::widgets::params::param_ui;
+use crate::ui::widgets::params::params_ui;
 use eframe::egui::{self, Color32};
 use egui_plot::{Legend, Line, Plot, Points, VLine};
 
@@ -150,15 +150,7 @@ fn controls_ui(ui: &mut egui::Ui, s: &mut TheoremSettings) {
             s.signal = sig;
         }
     }
-    for (pname, value, (lo, hi)) in s.signal.params() {
-        let mut x = value;
-        let slider = egui::Slider::new(&mut x, lo..=hi)
-            .logarithmic(hi / lo > 100.0)
-            .text(format!("signal {pname}"));
-        if ui.add(slider).changed() {
-            s.signal.set(pname, x);
-        }
-    }
+    params_ui(ui, &mut s.signal);
     ui.add(
         egui::Slider::new(&mut s.rate, 0.1..=100.0)
             .logarithmic(true)
@@ -186,14 +178,7 @@ fn controls_ui(ui: &mut egui::Ui, s: &mut TheoremSettings) {
             s.filter = f;
         }
     }
-    for spec in s.filter.specs() {
-        let Some(value) = s.filter.get(spec.name) else {
-            continue;
-        };
-        if let Some(t) = param_ui(ui, &spec, value) {
-            let _ = s.filter.set(spec.name, &t);
-        }
-    }
+    params_ui(ui, &mut s.filter);
     ui.add(
         egui::Slider::new(&mut s.extent, 0.5..=50.0)
             .logarithmic(true)

@@ -1,14 +1,15 @@
 //! Editors of the scene's parameters: the pattern of a column, the signal, the filter, and one
 //! control per parameter descriptor. One entry point per editor: [`pattern_ui`],
-//! [`signal_ui`], [`filter_ui`]; [`param_ui`] is the control they share (the theorem panel
-//! uses it for its filter too).
+//! [`signal_ui`], [`filter_ui`]; [`params_ui`] and [`param_ui`] are the controls they share
+//! (the theorem panel uses them for its signal and filter too).
 
+use crate::core::params::{ParamKind, ParamSpec, ParamValue, Params};
 use crate::core::pattern::Pattern;
 use crate::scene::Column;
 use crate::ui::view::screen_from_unit;
 use eframe::egui::{self, Color32, Stroke, Vec2};
 
-/// Pattern selection and parameter sliders generated from the pattern's descriptors.
+/// Pattern selection and one control per parameter descriptor.
 pub fn pattern_ui(ui: &mut egui::Ui, column: &mut Column) {
     let mut name = column.pattern.name();
     egui::ComboBox::from_label("Pattern")
@@ -24,17 +25,7 @@ pub fn pattern_ui(ui: &mut egui::Ui, column: &mut Column) {
             column.pattern = p;
         }
     }
-    for spec in column.pattern.specs() {
-        let Some(value) = column.pattern.get(spec.name) else {
-            continue;
-        };
-        let text = param_ui(ui, &spec, value);
-        if let Some(t) = text {
-            // The slider's range is the parameter's range, so this cannot fail; if it did, the
-            // old value stays.
-            let _ = column.pattern.set(spec.name, &t);
-        }
-    }
+    params_ui(ui, &mut column.pattern);
     let mut seed = column.seed;
     ui.horizontal(|ui| {
         let label = ui.label("seed");
@@ -44,7 +35,20 @@ pub fn pattern_ui(ui: &mut egui::Ui, column: &mut Column) {
     column.seed = seed;
 }
 
-/// Signal selection and its parameters (edited through the signal's serialised fields).
+/// One control per parameter descriptor of `params`; a change is applied only if the whole
+/// set stays valid ([`Params::set_value`]).
+pub fn params_ui(ui: &mut egui::Ui, params: &mut impl Params) {
+    for spec in params.specs() {
+        let Some(value) = params.get(spec.name) else {
+            continue;
+        };
+        if let Some(v) = param_ui(ui, &spec, value) {
+            let _ = params.set_value(spec.name, &v);
+        }
+    }
+}
+
+/// Signal selection (the 2D signals) and its parameters.
 pub fn signal_ui(ui: &mut egui::Ui, signal: &mut crate::core::signal::Signal) {
     use crate::core::signal::Signal;
     let mut name = signal.name();
@@ -60,44 +64,7 @@ pub fn signal_ui(ui: &mut egui::Ui, signal: &mut crate::core::signal::Signal) {
             *signal = s;
         }
     }
-    // Numeric fields as drag values; a change is kept only if the signal still validates.
-    let Ok(serde_json::Value::Object(mut map)) = serde_json::to_value(*signal) else {
-        return;
-    };
-    let mut changed = false;
-    for (key, value) in map.iter_mut() {
-        if key == "kind" {
-            continue;
-        }
-        if let Some(mut v) = value.as_f64() {
-            ui.horizontal(|ui| {
-                let label = ui.label(key.as_str());
-                let speed = (v.abs() * 0.01).max(0.001);
-                if ui
-                    .add(egui::DragValue::new(&mut v).speed(speed))
-                    .labelled_by(label.id)
-                    .changed()
-                {
-                    if let Some(n) = serde_json::Number::from_f64(v) {
-                        *value = serde_json::Value::Number(n);
-                        changed = true;
-                    }
-                }
-            });
-        } else if let Some(mut b) = value.as_bool() {
-            if ui.checkbox(&mut b, key.as_str()).changed() {
-                *value = serde_json::Value::Bool(b);
-                changed = true;
-            }
-        }
-    }
-    if changed {
-        if let Ok(s) = serde_json::from_value::<Signal>(serde_json::Value::Object(map)) {
-            if s.validate().is_ok() {
-                *signal = s;
-            }
-        }
-    }
+    params_ui(ui, signal);
 }
 
 /// Filter selection, parameters (from the filter's descriptors), 2D mode and the
@@ -132,15 +99,7 @@ pub fn filter_ui(ui: &mut egui::Ui, f2: &mut crate::core::filter::Filter2D) {
             }
         }
     });
-    for spec in f2.filter.specs() {
-        let Some(value) = f2.filter.get(spec.name) else {
-            continue;
-        };
-        let text = param_ui(ui, &spec, value);
-        if let Some(t) = text {
-            let _ = f2.filter.set(spec.name, &t);
-        }
-    }
+    params_ui(ui, &mut f2.filter);
     if let Filter::Mitchell(m) = f2.filter {
         bc_picker(ui, f2, m.b, m.c);
     }
@@ -175,55 +134,98 @@ fn bc_picker(ui: &mut egui::Ui, f2: &mut crate::core::filter::Filter2D, b: f64, 
     if let Some(pos) = resp.interact_pointer_pos() {
         let nb = ((pos.x - rect.left()) / rect.width()).clamp(0.0, 1.0) as f64;
         let nc = ((rect.bottom() - pos.y) / rect.height()).clamp(0.0, 1.0) as f64;
-        let _ = f2.filter.set("b", &format!("{nb:?}"));
-        let _ = f2.filter.set("c", &format!("{nc:?}"));
+        let _ = f2.filter.set_value("b", &ParamValue::Float(nb));
+        let _ = f2.filter.set_value("c", &ParamValue::Float(nc));
     }
     ui.small(format!("B = {b:.3}, C = {c:.3} (line: B + 2C = 1)"));
 }
 
-/// One control for a parameter descriptor (slider over its allowed range, logarithmic when the
-/// range spans more than three decades; a combo box for choices). Returns the new value as
-/// text when the user changed it, for the owner's range-checked `set`.
-pub fn param_ui(
-    ui: &mut egui::Ui,
-    spec: &crate::core::pattern::params::ParamSpec,
-    value: crate::core::pattern::params::ParamValue,
-) -> Option<String> {
-    use crate::core::pattern::params::{ParamKind, ParamValue};
-    match (spec.kind.clone(), value) {
-        (ParamKind::Int { min, max, .. }, ParamValue::Int(mut v)) => {
-            let hi = max.min(min.saturating_add(100_000));
-            let log = min >= 1 && hi > 1000 * min;
-            ui.add(
-                egui::Slider::new(&mut v, min..=hi)
-                    .logarithmic(log)
-                    .text(spec.name),
-            )
-            .on_hover_text(spec.doc)
-            .changed()
-            .then(|| v.to_string())
+/// Integer and float ranges wider than this get a drag value instead of a slider.
+const SLIDER_SPAN: f64 = 10_000.0;
+
+/// One control for a parameter descriptor, spanning exactly the descriptor's range (so a
+/// valid value is never clamped): a slider (logarithmic over more than three decades) or, for
+/// very wide ranges, a drag value; a checkbox for booleans; a combo box for choices; one drag
+/// value per entry of a list. Returns the new value when the user changed it.
+pub fn param_ui(ui: &mut egui::Ui, spec: &ParamSpec, value: ParamValue) -> Option<ParamValue> {
+    match (&spec.kind, value) {
+        (&ParamKind::Int { min, max, .. }, ParamValue::Int(mut v)) => {
+            let changed = if (max - min) as f64 > SLIDER_SPAN {
+                ui.horizontal(|ui| {
+                    let label = ui.label(spec.name);
+                    ui.add(egui::DragValue::new(&mut v).range(min..=max))
+                        .labelled_by(label.id)
+                        .on_hover_text(spec.doc)
+                        .changed()
+                })
+                .inner
+            } else {
+                let log = min >= 1 && max > 1000 * min;
+                ui.add(
+                    egui::Slider::new(&mut v, min..=max)
+                        .logarithmic(log)
+                        .text(spec.name),
+                )
+                .on_hover_text(spec.doc)
+                .changed()
+            };
+            changed.then_some(ParamValue::Int(v))
         }
-        (ParamKind::Float { min, max, .. }, ParamValue::Float(mut v)) => {
+        (&ParamKind::Float { min, max, .. }, ParamValue::Float(mut v)) => {
             let log = min > 0.0 && max > 1000.0 * min;
-            ui.add(
-                egui::Slider::new(&mut v, min..=max)
-                    .logarithmic(log)
-                    .text(spec.name),
-            )
-            .on_hover_text(spec.doc)
-            .changed()
-            .then(|| format!("{v:?}"))
+            let changed = if !log && max - min > SLIDER_SPAN {
+                ui.horizontal(|ui| {
+                    let label = ui.label(spec.name);
+                    let speed = (v.abs() * 0.01).max(0.01);
+                    ui.add(egui::DragValue::new(&mut v).range(min..=max).speed(speed))
+                        .labelled_by(label.id)
+                        .on_hover_text(spec.doc)
+                        .changed()
+                })
+                .inner
+            } else {
+                ui.add(
+                    egui::Slider::new(&mut v, min..=max)
+                        .logarithmic(log)
+                        .text(spec.name),
+                )
+                .on_hover_text(spec.doc)
+                .changed()
+            };
+            changed.then_some(ParamValue::Float(v))
         }
         (ParamKind::Choice { options, .. }, ParamValue::Choice(current)) => {
             let mut chosen = current;
             egui::ComboBox::from_label(spec.name)
                 .selected_text(current)
                 .show_ui(ui, |ui| {
-                    for o in options {
+                    for o in options.iter() {
                         ui.selectable_value(&mut chosen, o, *o);
                     }
                 });
-            (chosen != current).then(|| chosen.to_string())
+            (chosen != current).then_some(ParamValue::Choice(chosen))
+        }
+        (ParamKind::Bool { .. }, ParamValue::Bool(mut b)) => ui
+            .checkbox(&mut b, spec.name)
+            .on_hover_text(spec.doc)
+            .changed()
+            .then_some(ParamValue::Bool(b)),
+        (&ParamKind::List { min, max, .. }, ParamValue::List(mut items)) => {
+            let changed = ui
+                .horizontal(|ui| {
+                    let label = ui.label(spec.name).on_hover_text(spec.doc);
+                    let mut changed = false;
+                    for x in items.iter_mut() {
+                        let speed = (x.abs() * 0.01).max(0.01);
+                        changed |= ui
+                            .add(egui::DragValue::new(x).range(min..=max).speed(speed))
+                            .labelled_by(label.id)
+                            .changed();
+                    }
+                    changed
+                })
+                .inner;
+            changed.then_some(ParamValue::List(items))
         }
         _ => None,
     }

@@ -1,0 +1,752 @@
+//! The one parameter mechanism of patterns, filters, 2D signals and the theorem's 1D signals.
+//!
+//! Every parameter struct declares its fields once, with [`declare_params!`]: name, doc,
+//! default, range and kind (integer, float, enum, bool, list). The declaration gives the
+//! struct, its `Default`, its serde form (RON in scene files) and an implementation of
+//! [`Params`]: descriptors ([`ParamSpec`]), getters, checked setters and a whole-set check.
+//! The enums that dispatch over parameter structs (`Pattern`, `Filter`, `Signal`) implement
+//! [`Params`] by delegation ([`dispatch_params!`]). Every user of parameters goes through it:
+//!
+//! - the CLI's `--set key=value` ([`Params::set`]) and `points --list` / `filter --list`;
+//! - the GUI's widgets (one slider, drag value, checkbox or combo box per descriptor, over the
+//!   descriptor's range, so a widget can never clamp a valid value);
+//! - `Scene::validate` ([`Params::check_params`]), which names the field path of a bad value.
+//!
+//! Errors ([`ParamError`]) name the owner, the field and the allowed range; numbers in them
+//! are printed with at most 6 significant digits ([`fmt_num`]).
+
+/// The kind, default and allowed range of one parameter.
+#[derive(Debug, Clone, PartialEq)]
+pub enum ParamKind {
+    /// An integer in `min..=max`.
+    Int { default: i64, min: i64, max: i64 },
+    /// A finite float in `[min, max]`, or in `(min, max]` when `min_exclusive`.
+    Float {
+        default: f64,
+        min: f64,
+        max: f64,
+        min_exclusive: bool,
+    },
+    /// One of a fixed list of names.
+    Choice {
+        default: &'static str,
+        options: &'static [&'static str],
+    },
+    /// `true` or `false`.
+    Bool { default: bool },
+    /// Up to `default.len()` finite floats, each in `[min, max]`; missing trailing entries are 0.
+    List {
+        default: &'static [f64],
+        min: f64,
+        max: f64,
+    },
+}
+
+/// One parameter: its key, a one-line doc and its kind.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ParamSpec {
+    /// The key used by `--set key=value` and in scene files.
+    pub name: &'static str,
+    /// One line: meaning, units and the special value 0 where it means "auto".
+    pub doc: &'static str,
+    /// Kind, default and range.
+    pub kind: ParamKind,
+}
+
+/// A parameter value.
+#[derive(Debug, Clone, PartialEq)]
+pub enum ParamValue {
+    Int(i64),
+    Float(f64),
+    Choice(&'static str),
+    Bool(bool),
+    List(Vec<f64>),
+}
+
+impl std::fmt::Display for ParamValue {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            ParamValue::Int(v) => write!(f, "{v}"),
+            ParamValue::Float(v) => f.write_str(&fmt_num(*v)),
+            ParamValue::Choice(v) => f.write_str(v),
+            ParamValue::Bool(v) => write!(f, "{v}"),
+            ParamValue::List(v) => {
+                let items: Vec<String> = v.iter().map(|x| fmt_num(*x)).collect();
+                write!(f, "[{}]", items.join(","))
+            }
+        }
+    }
+}
+
+/// A parameter could not be set: the key is unknown, or the value is malformed or out of range.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum ParamError {
+    /// `owner` has no parameter `key`.
+    #[error("{owner}: unknown parameter '{key}': allowed parameters are [{allowed}]")]
+    Unknown {
+        owner: &'static str,
+        key: String,
+        allowed: String,
+    },
+    /// `owner.field = value` is not allowed; `allowed` says what is.
+    #[error("{owner}.{field} = {value}: must be {allowed}")]
+    Invalid {
+        owner: &'static str,
+        field: &'static str,
+        value: String,
+        allowed: String,
+    },
+}
+
+impl ParamError {
+    /// The field the error is about (`None` for an unknown key).
+    pub fn field(&self) -> Option<&'static str> {
+        match self {
+            ParamError::Invalid { field, .. } => Some(field),
+            ParamError::Unknown { .. } => None,
+        }
+    }
+}
+
+/// A number for an error message or a label: at most 6 significant digits, plain notation for
+/// 10⁻⁴ ≤ |v| < 10⁶ and scientific notation outside (so 5e-324 is `5e-324`, not 330 digits).
+pub fn fmt_num(v: f64) -> String {
+    if !v.is_finite() || v == 0.0 {
+        return format!("{v}");
+    }
+    let sci = format!("{v:.5e}");
+    let (mantissa, exp) = sci.split_once('e').unwrap_or((&sci, "0"));
+    let rounded: f64 = sci.parse().unwrap_or(v);
+    if (1e-4..1e6).contains(&rounded.abs()) {
+        return format!("{rounded}");
+    }
+    let mantissa = if mantissa.contains('.') {
+        mantissa.trim_end_matches('0').trim_end_matches('.')
+    } else {
+        mantissa
+    };
+    format!("{mantissa}e{exp}")
+}
+
+/// User text for an error message: a number as [`fmt_num`] prints it, other text cut to 40
+/// characters.
+pub fn fmt_text(text: &str) -> String {
+    let t = text.trim();
+    if let Ok(v) = t.parse::<f64>() {
+        if t.len() > 12 {
+            return fmt_num(v);
+        }
+    }
+    if t.chars().count() > 40 {
+        let cut: String = t.chars().take(40).collect();
+        format!("{cut}…")
+    } else {
+        t.to_string()
+    }
+}
+
+/// Options of a boolean parameter, as text.
+pub const BOOL_OPTIONS: &[&str] = &["false", "true"];
+
+impl ParamSpec {
+    /// Human-readable allowed range, e.g. `an integer in 0..=65536`.
+    pub fn allowed(&self) -> String {
+        match &self.kind {
+            ParamKind::Int { min, max, .. } => format!("an integer in {min}..={max}"),
+            ParamKind::Float {
+                min,
+                max,
+                min_exclusive,
+                ..
+            } => {
+                let open = if *min_exclusive { "(" } else { "[" };
+                format!(
+                    "a finite number in {open}{}, {}]",
+                    fmt_num(*min),
+                    fmt_num(*max)
+                )
+            }
+            ParamKind::Choice { options, .. } => format!("one of {}", options.join(", ")),
+            ParamKind::Bool { .. } => "true or false".to_string(),
+            ParamKind::List { default, min, max } => format!(
+                "a list [a,b,…] of 1 to {} finite numbers in [{}, {}] (missing ones are 0)",
+                default.len(),
+                fmt_num(*min),
+                fmt_num(*max)
+            ),
+        }
+    }
+
+    /// The default value.
+    pub fn default_value(&self) -> ParamValue {
+        match &self.kind {
+            ParamKind::Int { default, .. } => ParamValue::Int(*default),
+            ParamKind::Float { default, .. } => ParamValue::Float(*default),
+            ParamKind::Choice { default, .. } => ParamValue::Choice(default),
+            ParamKind::Bool { default } => ParamValue::Bool(*default),
+            ParamKind::List { default, .. } => ParamValue::List(default.to_vec()),
+        }
+    }
+
+    /// The default value as text.
+    pub fn default_text(&self) -> String {
+        self.default_value().to_string()
+    }
+
+    /// Whether this is a boolean parameter.
+    pub fn is_bool(&self) -> bool {
+        matches!(self.kind, ParamKind::Bool { .. })
+    }
+
+    fn float_ok(&self, v: f64) -> bool {
+        match self.kind {
+            ParamKind::Float {
+                min,
+                max,
+                min_exclusive,
+                ..
+            } => v.is_finite() && v <= max && if min_exclusive { v > min } else { v >= min },
+            ParamKind::List { min, max, .. } => v.is_finite() && v >= min && v <= max,
+            _ => false,
+        }
+    }
+
+    /// `value` converted to this parameter's kind (an integral float for an integer, an
+    /// integer for a float, a name for a choice), if it is allowed; `None` otherwise.
+    pub fn accept(&self, value: &ParamValue) -> Option<ParamValue> {
+        match (&self.kind, value) {
+            (ParamKind::Int { min, max, .. }, ParamValue::Int(v)) => {
+                (*min..=*max).contains(v).then_some(ParamValue::Int(*v))
+            }
+            (ParamKind::Int { min, max, .. }, ParamValue::Float(v)) => {
+                let ok =
+                    v.is_finite() && v.fract() == 0.0 && *v >= *min as f64 && *v <= *max as f64;
+                ok.then_some(ParamValue::Int(*v as i64))
+            }
+            (ParamKind::Float { .. }, ParamValue::Float(v)) => {
+                self.float_ok(*v).then_some(ParamValue::Float(*v))
+            }
+            (ParamKind::Float { .. }, ParamValue::Int(v)) => self
+                .float_ok(*v as f64)
+                .then_some(ParamValue::Float(*v as f64)),
+            (ParamKind::Choice { options, .. }, ParamValue::Choice(c)) => options
+                .iter()
+                .find(|o| o.eq_ignore_ascii_case(c))
+                .map(|o| ParamValue::Choice(o)),
+            (ParamKind::Bool { .. }, ParamValue::Bool(b)) => Some(ParamValue::Bool(*b)),
+            (ParamKind::List { default, .. }, ParamValue::List(v)) => {
+                let ok = !v.is_empty()
+                    && v.len() <= default.len()
+                    && v.iter().all(|x| self.float_ok(*x));
+                ok.then(|| {
+                    let mut full = v.clone();
+                    full.resize(default.len(), 0.0);
+                    ParamValue::List(full)
+                })
+            }
+            _ => None,
+        }
+    }
+
+    /// Parses `text` (as typed on the command line: `3`, `0.25`, `square`, `true`, `[1,2,3]`)
+    /// as a value of this parameter; `None` when it is malformed, not finite or out of range.
+    pub fn parse(&self, text: &str) -> Option<ParamValue> {
+        let t = text.trim();
+        let value = match &self.kind {
+            ParamKind::Int { .. } => ParamValue::Int(t.parse().ok()?),
+            ParamKind::Float { .. } => ParamValue::Float(t.parse().ok()?),
+            ParamKind::Choice { options, .. } => {
+                let t = t.trim_matches('"');
+                ParamValue::Choice(options.iter().find(|o| o.eq_ignore_ascii_case(t))?)
+            }
+            ParamKind::Bool { .. } => ParamValue::Bool(match t.to_ascii_lowercase().as_str() {
+                "true" | "1" | "yes" | "on" => true,
+                "false" | "0" | "no" | "off" => false,
+                _ => return None,
+            }),
+            ParamKind::List { .. } => {
+                let inner = t.strip_prefix('[').unwrap_or(t);
+                let inner = inner.strip_suffix(']').unwrap_or(inner);
+                let items: Result<Vec<f64>, _> =
+                    inner.split(',').map(|s| s.trim().parse::<f64>()).collect();
+                ParamValue::List(items.ok()?)
+            }
+        };
+        self.accept(&value)
+    }
+
+    /// The error for a rejected `value` (already formatted) of this parameter.
+    pub fn invalid(&self, owner: &'static str, value: String) -> ParamError {
+        ParamError::Invalid {
+            owner,
+            field: self.name,
+            value,
+            allowed: self.allowed(),
+        }
+    }
+}
+
+/// A named option set usable as a `choice` parameter (an enum with unit variants).
+pub trait ChoiceParam: Copy + Sized {
+    /// Option names, in order.
+    const OPTIONS: &'static [&'static str];
+    /// Index of this value in [`Self::OPTIONS`].
+    fn index(self) -> usize;
+    /// The value at `index` of [`Self::OPTIONS`].
+    fn from_index(index: usize) -> Self;
+    /// Name of this value.
+    fn name(self) -> &'static str {
+        Self::OPTIONS[self.index()]
+    }
+    /// The option named `name` (case-insensitive), if any.
+    fn from_name(name: &str) -> Option<Self> {
+        Self::OPTIONS
+            .iter()
+            .position(|o| o.eq_ignore_ascii_case(name))
+            .map(Self::from_index)
+    }
+}
+
+/// A set of named parameters with descriptors: a pattern, a filter, a signal.
+pub trait Params: Clone {
+    /// The name errors start with (`jitter`, `gaussian`, `zone-plate`).
+    fn owner(&self) -> &'static str;
+
+    /// Descriptors of every parameter that currently applies (a filter's `beta` only with a
+    /// Kaiser window).
+    fn specs(&self) -> Vec<ParamSpec>;
+
+    /// Current value of parameter `key`.
+    fn get(&self, key: &str) -> Option<ParamValue>;
+
+    /// Stores an already checked value of parameter `key` (converted by [`ParamSpec::accept`]).
+    fn put(&mut self, key: &str, value: ParamValue);
+
+    /// Constraints between fields, beyond the per-field ranges of [`Params::specs`].
+    fn check_joint(&self) -> Result<(), ParamError> {
+        Ok(())
+    }
+
+    /// For a key that exists only in some configurations and does not apply now: its static
+    /// name and why (`None`: the key is simply unknown).
+    fn inactive_reason(&self, key: &str) -> Option<(&'static str, &'static str)> {
+        let _ = key;
+        None
+    }
+
+    /// The descriptor of `key`, if it applies now.
+    fn spec(&self, key: &str) -> Option<ParamSpec> {
+        self.specs().into_iter().find(|s| s.name == key)
+    }
+
+    /// Checks every field against its descriptor, then the joint constraints.
+    fn check_params(&self) -> Result<(), ParamError> {
+        for spec in self.specs() {
+            if let Some(v) = self.get(spec.name) {
+                if spec.accept(&v).is_none() {
+                    return Err(spec.invalid(self.owner(), v.to_string()));
+                }
+            }
+        }
+        self.check_joint()
+    }
+
+    /// Sets `key` to `value`; applied only if the whole set is then valid.
+    fn set_value(&mut self, key: &str, value: &ParamValue) -> Result<(), ParamError> {
+        let spec = self.lookup(key)?;
+        let v = spec
+            .accept(value)
+            .ok_or_else(|| spec.invalid(self.owner(), value.to_string()))?;
+        let mut next = self.clone();
+        next.put(spec.name, v);
+        next.check_params()?;
+        *self = next;
+        Ok(())
+    }
+
+    /// Sets `key` from text (`--set key=value`); applied only if the whole set is then valid.
+    fn set(&mut self, key: &str, text: &str) -> Result<(), ParamError> {
+        let spec = self.lookup(key)?;
+        let v = spec
+            .parse(text)
+            .ok_or_else(|| spec.invalid(self.owner(), fmt_text(text)))?;
+        self.set_value(spec.name, &v)
+    }
+
+    /// The descriptor of `key`, or the error for a key that is unknown or does not apply now.
+    fn lookup(&self, key: &str) -> Result<ParamSpec, ParamError> {
+        let key = key.trim();
+        let specs = self.specs();
+        if let Some(s) = specs.iter().find(|s| s.name == key) {
+            return Ok(s.clone());
+        }
+        if let Some((field, reason)) = self.inactive_reason(key) {
+            return Err(ParamError::Invalid {
+                owner: self.owner(),
+                field,
+                value: "(any)".to_string(),
+                allowed: reason.to_string(),
+            });
+        }
+        Err(ParamError::Unknown {
+            owner: self.owner(),
+            key: fmt_text(key),
+            allowed: specs.iter().map(|s| s.name).collect::<Vec<_>>().join(", "),
+        })
+    }
+}
+
+/// Declares a parameter struct with its descriptors: the struct (serde: every field optional,
+/// unknown fields refused), `Default`, the consts `NAME` and `SUMMARY`, and [`Params`].
+///
+/// Field kinds:
+/// - `int(default, min, max, "doc")`, stored as `u32`;
+/// - `float(default, min, max, "doc")` and `positive(default, max, "doc")` (in `(0, max]`),
+///   stored as `f64`;
+/// - `choice(Type, "doc")`, stored as `Type` (a [`ChoiceParam`]), default `Type::default()`;
+/// - `flag(default, "doc")`, stored as `bool`;
+/// - `list(N, [defaults], min, max, "doc")`, stored as `[f64; N]`.
+///
+/// An optional `check(p) { … }` block adds joint constraints (`Result<(), ParamError>`).
+macro_rules! declare_params {
+    (
+        $(#[$meta:meta])*
+        $ty:ident = $name:literal, $summary:literal {
+            $( $(#[$fmeta:meta])* $field:ident : $kind:ident ( $($arg:tt)* ) ),* $(,)?
+        }
+        $( check($p:ident) $body:block )?
+    ) => {
+        $(#[$meta])*
+        #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
+        #[serde(default, deny_unknown_fields)]
+        pub struct $ty {
+            $( $(#[$fmeta])* pub $field: $crate::core::params::declare_params!(@ty $kind ( $($arg)* )), )*
+        }
+
+        impl Default for $ty {
+            fn default() -> Self {
+                Self { $( $field: $crate::core::params::declare_params!(@default $kind ( $($arg)* )), )* }
+            }
+        }
+
+        impl $ty {
+            /// Name used on the command line and in scene files.
+            pub const NAME: &'static str = $name;
+            /// One-line description.
+            pub const SUMMARY: &'static str = $summary;
+        }
+
+        impl $crate::core::params::Params for $ty {
+            fn owner(&self) -> &'static str {
+                $name
+            }
+
+            fn specs(&self) -> Vec<$crate::core::params::ParamSpec> {
+                vec![ $( $crate::core::params::ParamSpec {
+                    name: stringify!($field),
+                    doc: $crate::core::params::declare_params!(@doc $kind ( $($arg)* )),
+                    kind: $crate::core::params::declare_params!(@spec $kind ( $($arg)* )),
+                }, )* ]
+            }
+
+            #[allow(unused_variables)]
+            fn get(&self, key: &str) -> Option<$crate::core::params::ParamValue> {
+                $( if key == stringify!($field) {
+                    return Some($crate::core::params::declare_params!(@get $kind self.$field));
+                } )*
+                None
+            }
+
+            #[allow(unused_variables)]
+            fn put(&mut self, key: &str, value: $crate::core::params::ParamValue) {
+                $( if key == stringify!($field) {
+                    $crate::core::params::declare_params!(@put $kind self.$field, value);
+                    return;
+                } )*
+            }
+
+            fn check_joint(&self) -> Result<(), $crate::core::params::ParamError> {
+                $crate::core::params::declare_params!(@check self $( $p $body )?)
+            }
+        }
+    };
+    (@ty int ($($a:tt)*)) => { u32 };
+    (@ty float ($($a:tt)*)) => { f64 };
+    (@ty positive ($($a:tt)*)) => { f64 };
+    (@ty choice ($t:ty, $doc:literal)) => { $t };
+    (@ty flag ($($a:tt)*)) => { bool };
+    (@ty list ($n:literal, $($a:tt)*)) => { [f64; $n] };
+    (@default int ($d:expr, $min:expr, $max:expr, $doc:literal)) => { $d };
+    (@default float ($d:expr, $min:expr, $max:expr, $doc:literal)) => { $d };
+    (@default positive ($d:expr, $max:expr, $doc:literal)) => { $d };
+    (@default choice ($t:ty, $doc:literal)) => { <$t>::default() };
+    (@default flag ($d:expr, $doc:literal)) => { $d };
+    (@default list ($n:literal, [$($d:expr),*], $min:expr, $max:expr, $doc:literal)) => { [$($d),*] };
+    (@doc $kind:ident ($($a:tt)*)) => { $crate::core::params::declare_params!(@last $($a)*) };
+    (@last $doc:literal) => { $doc };
+    (@last $x:tt $($rest:tt)+) => { $crate::core::params::declare_params!(@last $($rest)+) };
+    (@spec int ($d:expr, $min:expr, $max:expr, $doc:literal)) => {
+        $crate::core::params::ParamKind::Int { default: $d as i64, min: $min as i64, max: $max as i64 }
+    };
+    (@spec float ($d:expr, $min:expr, $max:expr, $doc:literal)) => {
+        $crate::core::params::ParamKind::Float { default: $d, min: $min, max: $max, min_exclusive: false }
+    };
+    (@spec positive ($d:expr, $max:expr, $doc:literal)) => {
+        $crate::core::params::ParamKind::Float { default: $d, min: 0.0, max: $max, min_exclusive: true }
+    };
+    (@spec choice ($t:ty, $doc:literal)) => {
+        $crate::core::params::ParamKind::Choice {
+            default: <$t as $crate::core::params::ChoiceParam>::name(<$t>::default()),
+            options: <$t as $crate::core::params::ChoiceParam>::OPTIONS,
+        }
+    };
+    (@spec flag ($d:expr, $doc:literal)) => {
+        $crate::core::params::ParamKind::Bool { default: $d }
+    };
+    (@spec list ($n:literal, [$($d:expr),*], $min:expr, $max:expr, $doc:literal)) => {
+        $crate::core::params::ParamKind::List { default: &[$($d),*], min: $min, max: $max }
+    };
+    (@get int $e:expr) => { $crate::core::params::ParamValue::Int($e as i64) };
+    (@get float $e:expr) => { $crate::core::params::ParamValue::Float($e) };
+    (@get positive $e:expr) => { $crate::core::params::ParamValue::Float($e) };
+    (@get choice $e:expr) => {
+        $crate::core::params::ParamValue::Choice($crate::core::params::ChoiceParam::name($e))
+    };
+    (@get flag $e:expr) => { $crate::core::params::ParamValue::Bool($e) };
+    (@get list $e:expr) => { $crate::core::params::ParamValue::List($e.to_vec()) };
+    (@put int $e:expr, $v:expr) => {
+        if let $crate::core::params::ParamValue::Int(x) = $v { $e = x as u32; }
+    };
+    (@put float $e:expr, $v:expr) => {
+        if let $crate::core::params::ParamValue::Float(x) = $v { $e = x; }
+    };
+    (@put positive $e:expr, $v:expr) => {
+        if let $crate::core::params::ParamValue::Float(x) = $v { $e = x; }
+    };
+    (@put choice $e:expr, $v:expr) => {
+        if let $crate::core::params::ParamValue::Choice(x) = $v {
+            if let Some(c) = $crate::core::params::ChoiceParam::from_name(x) { $e = c; }
+        }
+    };
+    (@put flag $e:expr, $v:expr) => {
+        if let $crate::core::params::ParamValue::Bool(x) = $v { $e = x; }
+    };
+    (@put list $e:expr, $v:expr) => {
+        if let $crate::core::params::ParamValue::List(x) = $v {
+            for (slot, x) in $e.iter_mut().zip(x) { *slot = x; }
+        }
+    };
+    (@check $s:ident) => { Ok(()) };
+    (@check $s:ident $p:ident $body:block) => { { let $p = $s; $body } };
+}
+pub(crate) use declare_params;
+
+/// Implements [`Params`] for an enum whose variants each hold one parameter struct, by
+/// delegation: `dispatch_params!(Pattern { Grid, Random, … })`.
+macro_rules! dispatch_params {
+    ($enum:ident { $( $variant:ident ),* $(,)? }) => {
+        impl $crate::core::params::Params for $enum {
+            fn owner(&self) -> &'static str {
+                match self { $( $enum::$variant(p) => $crate::core::params::Params::owner(p), )* }
+            }
+            fn specs(&self) -> Vec<$crate::core::params::ParamSpec> {
+                match self { $( $enum::$variant(p) => $crate::core::params::Params::specs(p), )* }
+            }
+            fn get(&self, key: &str) -> Option<$crate::core::params::ParamValue> {
+                match self { $( $enum::$variant(p) => $crate::core::params::Params::get(p, key), )* }
+            }
+            fn put(&mut self, key: &str, value: $crate::core::params::ParamValue) {
+                match self { $( $enum::$variant(p) => $crate::core::params::Params::put(p, key, value), )* }
+            }
+            fn check_joint(&self) -> Result<(), $crate::core::params::ParamError> {
+                match self { $( $enum::$variant(p) => $crate::core::params::Params::check_joint(p), )* }
+            }
+            fn inactive_reason(&self, key: &str) -> Option<(&'static str, &'static str)> {
+                match self { $( $enum::$variant(p) => $crate::core::params::Params::inactive_reason(p, key), )* }
+            }
+        }
+    };
+}
+pub(crate) use dispatch_params;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, serde::Serialize, serde::Deserialize)]
+    #[serde(rename_all = "kebab-case")]
+    pub enum Shape {
+        #[default]
+        Square,
+        Triangle,
+    }
+    impl ChoiceParam for Shape {
+        const OPTIONS: &'static [&'static str] = &["square", "triangle"];
+        fn index(self) -> usize {
+            self as usize
+        }
+        fn from_index(i: usize) -> Self {
+            [Shape::Square, Shape::Triangle][i]
+        }
+    }
+
+    declare_params! {
+        /// A test set with one field of every kind.
+        Every = "every", "one field of every kind" {
+            count: int(3, 1, 10, "an integer"),
+            scale: float(0.5, 0.0, 1.0, "a float"),
+            width: positive(1.0, 2.0, "a positive float"),
+            shape: choice(Shape, "a choice"),
+            on: flag(true, "a flag"),
+            amps: list(3, [0.5, 0.25, 0.0], -1.0, 1.0, "a list"),
+        }
+        check(p) {
+            if p.amps.iter().map(|a| a.abs()).sum::<f64>() > 1.0 {
+                return Err(ParamError::Invalid {
+                    owner: "every",
+                    field: "amps",
+                    value: fmt_num(p.amps.iter().map(|a| a.abs()).sum()),
+                    allowed: "Σ|a| ≤ 1".into(),
+                });
+            }
+            Ok(())
+        }
+    }
+
+    #[test]
+    fn defaults_match_the_descriptors_and_are_valid() {
+        let e = Every::default();
+        for spec in e.specs() {
+            assert_eq!(
+                e.get(spec.name),
+                Some(spec.default_value()),
+                "{}",
+                spec.name
+            );
+        }
+        e.check_params().unwrap();
+        assert_eq!(e.spec("doc"), None);
+        assert_eq!(
+            (Every::NAME, Every::SUMMARY),
+            (e.owner(), "one field of every kind")
+        );
+    }
+
+    #[test]
+    fn set_parses_every_kind() {
+        let mut e = Every::default();
+        e.set("count", "7").unwrap();
+        e.set("scale", "0.25").unwrap();
+        e.set("width", "2").unwrap();
+        e.set("shape", "Triangle").unwrap();
+        e.set("on", "false").unwrap();
+        e.set("amps", "[0.1, -0.2]").unwrap();
+        assert_eq!(
+            e,
+            Every {
+                count: 7,
+                scale: 0.25,
+                width: 2.0,
+                shape: Shape::Triangle,
+                on: false,
+                amps: [0.1, -0.2, 0.0],
+            }
+        );
+        // Unquoted and quoted enum values, list without brackets.
+        e.set("shape", "\"square\"").unwrap();
+        e.set("amps", "0.3,0.3,0.3").unwrap();
+        assert_eq!(e.shape, Shape::Square);
+        assert_eq!(e.amps, [0.3, 0.3, 0.3]);
+    }
+
+    #[test]
+    fn bad_values_name_the_field_and_leave_the_set_unchanged() {
+        let mut e = Every::default();
+        let before = e;
+        let cases = [
+            ("count", "0", "every.count = 0: must be an integer in 1..=10"),
+            ("count", "2.5", "every.count = 2.5: must be an integer in 1..=10"),
+            ("scale", "NaN", "every.scale = NaN: must be a finite number in [0, 1]"),
+            ("width", "0", "every.width = 0: must be a finite number in (0, 2]"),
+            ("shape", "circle", "every.shape = circle: must be one of square, triangle"),
+            ("on", "maybe", "every.on = maybe: must be true or false"),
+            ("amps", "[1,2]", "every.amps = [1,2]: must be a list [a,b,…] of 1 to 3 finite numbers in [-1, 1] (missing ones are 0)"),
+            ("amps", "[0.1,0.2,0.3,0.4]", "must be a list"),
+            ("amps", "[0.6,0.6]", "every.amps = 1.2: must be Σ|a| ≤ 1"),
+        ];
+        for (key, text, want) in cases {
+            let err = e.set(key, text).unwrap_err().to_string();
+            assert!(err.contains(want), "{key}={text}: {err}");
+            assert_eq!(e, before);
+        }
+        let err = e.set("size", "1").unwrap_err().to_string();
+        assert_eq!(
+            err,
+            "every: unknown parameter 'size': allowed parameters are [count, scale, width, shape, on, amps]"
+        );
+    }
+
+    #[test]
+    fn check_params_finds_values_written_directly() {
+        let e = Every {
+            scale: f64::INFINITY,
+            ..Every::default()
+        };
+        let err = e.check_params().unwrap_err();
+        assert_eq!(err.field(), Some("scale"));
+        assert_eq!(
+            err.to_string(),
+            "every.scale = inf: must be a finite number in [0, 1]"
+        );
+    }
+
+    #[test]
+    fn accept_converts_between_int_and_float() {
+        let e = Every::default();
+        let count = e.spec("count").unwrap();
+        assert_eq!(
+            count.accept(&ParamValue::Float(4.0)),
+            Some(ParamValue::Int(4))
+        );
+        assert_eq!(count.accept(&ParamValue::Float(4.5)), None);
+        let scale = e.spec("scale").unwrap();
+        assert_eq!(
+            scale.accept(&ParamValue::Int(1)),
+            Some(ParamValue::Float(1.0))
+        );
+        assert_eq!(scale.accept(&ParamValue::Int(2)), None);
+    }
+
+    #[test]
+    fn serde_refuses_unknown_fields_and_fills_defaults() {
+        let e: Every = ron::from_str("(count: 4, shape: triangle)").unwrap();
+        assert_eq!(e.count, 4);
+        assert_eq!(e.shape, Shape::Triangle);
+        assert_eq!(e.scale, 0.5);
+        assert!(ron::from_str::<Every>("(cnt: 4)").is_err());
+    }
+
+    #[test]
+    fn numbers_have_at_most_six_significant_digits() {
+        let cases = [
+            (5e-324, "5e-324"),
+            (1.0 / 3.0, "0.333333"),
+            (123456789.0, "1.23457e8"),
+            (1e300, "1e300"),
+            (-2.5, "-2.5"),
+            (16777216.0, "1.67772e7"),
+            (1e6, "1e6"),
+            (999999.0, "999999"),
+            (0.0001, "0.0001"),
+            (0.00001234, "1.234e-5"),
+            (1e12, "1e12"),
+            (f64::NAN, "NaN"),
+            (0.0, "0"),
+        ];
+        for (v, want) in cases {
+            assert_eq!(fmt_num(v), want, "{v:e}");
+        }
+        assert_eq!(fmt_text("0.000000000000000000000000000001"), "1e-30");
+        assert_eq!(fmt_text(&"x".repeat(100)).chars().count(), 41);
+    }
+}
