@@ -21,7 +21,12 @@ pub struct ReconArgs {
     /// Test signal: zone-plate (alias zoneplate), checkerboard, grating, step-edge, polygon.
     #[arg(long, default_value = "zone-plate")]
     pub signal: String,
-    /// Signal parameter `key=value` (e.g. k=512 for the zone plate); repeatable.
+    /// Signal parameter `key=value`; repeatable. Numbers as typed (`k=512`), enum values
+    /// unquoted (`--signal polygon --signal-set shape=square`), booleans `true`/`false`, lists
+    /// in brackets (`--signal sum-of-sines --signal-set amps=[0.5,0.25]`; missing entries are
+    /// 0). Parameters: zone-plate k, cx, cy; checkerboard checks, height, horizon, tilt;
+    /// grating frequency, angle, phase; step-edge angle, offset; polygon shape, angle, size;
+    /// sum-of-sines freqs, amps; chirp f0, f1; square frequency; constant value.
     #[arg(long = "signal-set", value_name = "KEY=VALUE")]
     pub signal_set: Vec<String>,
     /// Sample pattern (see `points --list`).

@@ -63,18 +63,30 @@ pub enum ParamValue {
     List(Vec<f64>),
 }
 
-impl std::fmt::Display for ParamValue {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+impl ParamValue {
+    fn text(&self, num: fn(f64) -> String) -> String {
         match self {
-            ParamValue::Int(v) => write!(f, "{v}"),
-            ParamValue::Float(v) => f.write_str(&fmt_num(*v)),
-            ParamValue::Choice(v) => f.write_str(v),
-            ParamValue::Bool(v) => write!(f, "{v}"),
+            ParamValue::Int(v) => v.to_string(),
+            ParamValue::Float(v) => num(*v),
+            ParamValue::Choice(v) => v.to_string(),
+            ParamValue::Bool(v) => v.to_string(),
             ParamValue::List(v) => {
-                let items: Vec<String> = v.iter().map(|x| fmt_num(*x)).collect();
-                write!(f, "[{}]", items.join(","))
+                let items: Vec<String> = v.iter().map(|x| num(*x)).collect();
+                format!("[{}]", items.join(","))
             }
         }
+    }
+
+    /// The value for a message: numbers with at most 6 significant digits ([`fmt_num`]).
+    pub fn short(&self) -> String {
+        self.text(fmt_num)
+    }
+}
+
+/// The value as `--set` accepts it; numbers parse back to the same bits ([`fmt_exact`]).
+impl std::fmt::Display for ParamValue {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.text(fmt_exact))
     }
 }
 
@@ -114,7 +126,19 @@ pub fn fmt_num(v: f64) -> String {
     if !v.is_finite() || v == 0.0 {
         return format!("{v}");
     }
-    let sci = format!("{v:.5e}");
+    let shortest = format!("{v:e}");
+    let digits = shortest
+        .split('e')
+        .next()
+        .unwrap_or("")
+        .chars()
+        .filter(char::is_ascii_digit)
+        .count();
+    let sci = if digits <= 6 {
+        shortest
+    } else {
+        format!("{v:.5e}")
+    };
     let (mantissa, exp) = sci.split_once('e').unwrap_or((&sci, "0"));
     let rounded: f64 = sci.parse().unwrap_or(v);
     if (1e-4..1e6).contains(&rounded.abs()) {
@@ -126,6 +150,17 @@ pub fn fmt_num(v: f64) -> String {
         mantissa
     };
     format!("{mantissa}e{exp}")
+}
+
+/// A number as text that parses back to the same f64: the shortest round-trip digits, in
+/// scientific notation when the plain form would be longer than 20 characters.
+pub fn fmt_exact(v: f64) -> String {
+    let plain = format!("{v}");
+    if plain.len() > 20 {
+        format!("{v:e}")
+    } else {
+        plain
+    }
 }
 
 /// User text for an error message: a number as [`fmt_num`] prints it, other text cut to 40
@@ -344,7 +379,7 @@ pub trait Params: Clone {
         for spec in self.specs() {
             if let Some(v) = self.get(spec.name) {
                 if spec.accept(&v).is_none() {
-                    return Err(spec.invalid(self.owner(), v.to_string()));
+                    return Err(spec.invalid(self.owner(), v.short()));
                 }
             }
         }
@@ -356,7 +391,7 @@ pub trait Params: Clone {
         let spec = self.lookup(key)?;
         let v = spec
             .accept(value)
-            .ok_or_else(|| spec.invalid(self.owner(), value.to_string()))?;
+            .ok_or_else(|| spec.invalid(self.owner(), value.short()))?;
         let mut next = self.clone();
         next.put(spec.name, v);
         next.check_params()?;
@@ -747,6 +782,10 @@ mod tests {
             assert_eq!(fmt_num(v), want, "{v:e}");
         }
         assert_eq!(fmt_text("0.000000000000000000000000000001"), "1e-30");
+        for v in [5e-324, 1.0 / 3.0, 1e300, -2.5, 0.1 + 0.2] {
+            assert_eq!(fmt_exact(v).parse::<f64>().unwrap(), v);
+        }
+        assert_eq!(fmt_exact(5e-324), "5e-324");
         assert_eq!(fmt_text(&"x".repeat(100)).chars().count(), 41);
     }
 }

@@ -500,7 +500,9 @@ impl Scene {
             source_name: source_name.to_string(),
             line: e.span.start.line,
             column: e.span.start.col,
-            message: e.code.to_string(),
+            // RON writes names with dashes as raw identifiers (`r#n-rooks`); show them as
+            // they are written in a scene.
+            message: e.code.to_string().replace("`r#", "`"),
         })?;
         scene.resolve_points(source_name, base_dir)?;
         scene

@@ -259,9 +259,9 @@ Scene(
     #[test]
     fn finds_fields_list_elements_and_enum_payloads() {
         assert_eq!(locate(SCENE, "n"), Some((4, 5)));
-        assert_eq!(locate(SCENE, "columns[1].pattern.cols"), Some((7, 52)));
+        assert_eq!(locate(SCENE, "columns[1].pattern.cols"), Some((7, 47)));
         assert_eq!(locate(SCENE, "columns[0].pattern.cols"), Some((6, 36)));
-        assert_eq!(locate(SCENE, "recon.mode.spp"), Some((9, 37)));
+        assert_eq!(locate(SCENE, "recon.mode.spp"), Some((9, 41)));
         assert_eq!(locate(SCENE, "spectrum.size"), Some((10, 16)));
     }
 

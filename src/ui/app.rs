@@ -15,7 +15,7 @@ use super::view::{ViewState, LECTURE_SCALE_RANGE};
 use super::widgets::image::ImageView;
 use super::widgets::params;
 use crate::engine::Engine;
-use crate::scene::{ReconMode, Scene, BUILTIN, MAX_COLUMNS};
+use crate::scene::{limits, ReconMode, Scene, BUILTIN, MAX_COLUMNS};
 use eframe::egui;
 use std::collections::HashMap;
 use std::sync::Arc;
@@ -41,6 +41,14 @@ pub struct SamplescopeApp {
     /// Path typed into the "open scene" box.
     open_path: String,
     submitted: Option<Scene>,
+    /// The cost budget every scene is checked against before it is computed (the CLI's
+    /// default: 60 s and 4 GiB on the reference machine).
+    pub budget: crate::core::budget::Budget,
+    /// Why the scene shown is not being computed: its estimated cost is beyond [`Self::budget`]
+    /// (the message names the costliest node and the limit). "Compute anyway" clears it.
+    pub over_budget: Option<String>,
+    /// A scene the user chose to compute although it is over budget.
+    allowed_over_budget: Option<Scene>,
     frame_time: Duration,
     last_frame: Option<Instant>,
     /// Draws the panels' images (GPU when the wgpu pipelines are installed, else CPU).
@@ -99,6 +107,9 @@ impl SamplescopeApp {
             complete: None,
             view: ViewState::default(),
             scene_error: None,
+            budget: crate::core::budget::Budget::default(),
+            over_budget: None,
+            allowed_over_budget: None,
             open_path: String::new(),
             submitted: None,
             frame_time: Duration::ZERO,
@@ -189,8 +200,21 @@ impl SamplescopeApp {
         let moved = self.playback.moved_scene(&self.scene);
         let shown = moved.as_ref().unwrap_or(&self.scene);
         if self.submitted.as_ref() != Some(shown) {
-            self.engine.submit(shown);
+            // The same estimates as the CLI's guard: a scene beyond the budget is not started.
+            let over = crate::scene::cost::check(&self.scene, &self.budget).err();
             self.submitted = Some(shown.clone());
+            self.results
+                .resize_with(self.scene.columns.len(), HashMap::new);
+            self.results.truncate(self.scene.columns.len());
+            if let (Some(e), false) = (
+                &over,
+                self.allowed_over_budget.as_ref() == Some(&self.scene),
+            ) {
+                self.over_budget = Some(format!("Not computed: {e}."));
+                return;
+            }
+            self.over_budget = None;
+            self.engine.submit(shown);
             self.results
                 .resize_with(self.scene.columns.len(), HashMap::new);
             self.results.truncate(self.scene.columns.len());
@@ -351,6 +375,21 @@ impl SamplescopeApp {
         if let Some(e) = &self.scene_error {
             ui.colored_label(egui::Color32::from_rgb(200, 40, 40), e);
         }
+        if let Some(e) = &self.over_budget {
+            ui.horizontal_wrapped(|ui| {
+                ui.colored_label(egui::Color32::from_rgb(200, 40, 40), e);
+                if ui
+                    .button("Compute anyway")
+                    .on_hover_text(
+                        "start this scene although its estimated cost is over the budget",
+                    )
+                    .clicked()
+                {
+                    self.allowed_over_budget = Some(self.scene.clone());
+                    self.submitted = None;
+                }
+            });
+        }
         if let Some(e) = self.engine.failure() {
             ui.colored_label(
                 egui::Color32::from_rgb(200, 40, 40),
@@ -493,18 +532,11 @@ impl SamplescopeApp {
 
     fn controls(&mut self, ui: &mut egui::Ui) {
         ui.heading("Sampling");
-        let mut n = self.scene.n as f64;
-        if ui
-            .add(
-                egui::Slider::new(&mut n, 1.0..=65536.0)
-                    .logarithmic(true)
-                    .integer()
-                    .text("N"),
-            )
-            .changed()
-        {
-            self.scene.n = n.round().max(1.0) as usize;
-        }
+        ui.add(
+            egui::Slider::new(&mut self.scene.n, limits::N)
+                .logarithmic(true)
+                .text("N"),
+        );
         egui::CollapsingHeader::new("Panels")
             .default_open(true)
             .show(ui, |ui| {
@@ -569,11 +601,11 @@ impl SamplescopeApp {
         ui.checkbox(&mut s.exact, "Exact DFT");
         ui.add_enabled(
             !s.exact,
-            egui::Slider::new(&mut s.tolerance, 1e-12..=1e-2)
+            egui::Slider::new(&mut s.tolerance, limits::TOLERANCE)
                 .logarithmic(true)
                 .text("tolerance"),
         );
-        ui.add(egui::Slider::new(&mut s.realizations, 1..=64).text("realizations K"));
+        ui.add(egui::Slider::new(&mut s.realizations, limits::REALIZATIONS).text("realizations K"));
         ui.checkbox(&mut s.mask_dc, "Mask DC");
         ui.heading("Reconstruction");
         params::signal_ui(ui, &mut self.scene.signal);
@@ -598,7 +630,7 @@ impl SamplescopeApp {
         }
         if let ReconMode::Supersample { spp } = &mut r.mode {
             ui.add(
-                egui::Slider::new(spp, 1..=256)
+                egui::Slider::new(spp, limits::SPP)
                     .logarithmic(true)
                     .text("spp"),
             );

@@ -22,6 +22,8 @@ mod metrics_star;
 mod metrics_statistics;
 mod metrics_tvalue;
 mod motion;
+mod no_clamp;
+mod params;
 mod patterns_lowdisc;
 mod patterns_poisson;
 mod patterns_stratified;

@@ -811,7 +811,7 @@ fn panel_controls_edit_the_settings_and_show_both_errors() {
     for label in [
         "sampling rate f_s",
         "signal radius",
-        "scale a",
+        "scale |a|",
         "shift s",
         "van der Corput rows n",
     ] {

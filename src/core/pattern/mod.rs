@@ -283,14 +283,13 @@ declare_params! {
 }
 
 macro_rules! patterns {
-    ($( $variant:ident = $name:literal $(| $alias:literal)* ),* $(,)?) => {
+    ($( $variant:ident = $name:literal ),* $(,)?) => {
         /// Every sample pattern, as a small parameter struct per variant. In scene files the
-        /// `kind` is the pattern's one name (as on the command line); older spellings are
-        /// accepted as aliases.
+        /// `kind` is the pattern's one name, the same as on the command line and in the GUI.
         #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
         #[serde(tag = "kind")]
         pub enum Pattern {
-            $( #[serde(rename = $name $(, alias = $alias)*)] $variant($variant), )*
+            $( #[serde(rename = $name)] $variant($variant), )*
         }
 
         impl Pattern {
@@ -319,10 +318,10 @@ patterns!(
     Grid = "grid",
     Random = "random",
     Jitter = "jitter",
-    NRooks = "nrooks" | "n-rooks",
+    NRooks = "nrooks",
     Lhs = "lhs",
-    MultiJitter = "multijitter" | "multi-jitter",
-    CorrelatedMultiJitter = "cmj" | "correlated-multi-jitter",
+    MultiJitter = "multijitter",
+    CorrelatedMultiJitter = "cmj",
     Hex = "hex",
     PoissonDart = "poisson-dart",
     PoissonBridson = "poisson-bridson",

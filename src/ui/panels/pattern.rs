@@ -137,7 +137,7 @@ impl Panel for PatternPanel {
             }
             if let Some(k) = &mut cx.view.elementary_k {
                 let label = ui.label("k");
-                ui.add(egui::DragValue::new(k).range(0..=24))
+                ui.add(egui::DragValue::new(k).range(crate::scene::limits::ELEMENTARY_K))
                     .labelled_by(label.id);
             }
         });

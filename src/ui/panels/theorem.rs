@@ -4,14 +4,14 @@
 use super::{Panel, PanelCx};
 use crate::core::filter::Filter;
 use crate::core::signal::theorem::{
-    AliasingErrors, PairKind, Reconstructor, Signal1D, TheoremSettings, TheoremView,
-    PAIR_SCALE_RANGE, PAIR_SHIFT_RANGE,
+    AliasingErrors, PairKind, Reconstructor, Signal1D, TheoremSettings, TheoremView, EXTENT_RANGE,
+    MAX_RATE, MAX_VDC_ROWS, MIN_RATE, PAIR_SCALE_RANGE, PAIR_SHIFT_RANGE,
 };
 use crate::model::{palette, PanelKind};
 use crate::scene::graph::{NodeKind, NodeValue};
 use crate::scene::Panels;
 use crate::ui::figures::FigureRequests;
-use crate::ui::widgets::params::params_ui;
+use crate::ui::widgets::params::{labelled_params_ui, params_ui};
 use eframe::egui::{self, Color32};
 use egui_plot::{Legend, Line, Plot, Points, VLine};
 
@@ -150,9 +150,9 @@ fn controls_ui(ui: &mut egui::Ui, s: &mut TheoremSettings) {
             s.signal = sig;
         }
     }
-    params_ui(ui, &mut s.signal);
+    labelled_params_ui(ui, &mut s.signal, "signal ");
     ui.add(
-        egui::Slider::new(&mut s.rate, 0.1..=100.0)
+        egui::Slider::new(&mut s.rate, MIN_RATE..=MAX_RATE)
             .logarithmic(true)
             .text("sampling rate f_s"),
     );
@@ -180,7 +180,7 @@ fn controls_ui(ui: &mut egui::Ui, s: &mut TheoremSettings) {
     }
     params_ui(ui, &mut s.filter);
     ui.add(
-        egui::Slider::new(&mut s.extent, 0.5..=50.0)
+        egui::Slider::new(&mut s.extent, EXTENT_RANGE.0..=EXTENT_RANGE.1)
             .logarithmic(true)
             .text("plot half-width (units)"),
     );
@@ -193,17 +193,27 @@ fn controls_ui(ui: &mut egui::Ui, s: &mut TheoremSettings) {
                 ui.selectable_value(&mut s.pair.kind, k, k.name());
             }
         });
-    ui.add(
-        egui::Slider::new(&mut s.pair.scale, PAIR_SCALE_RANGE.0..=PAIR_SCALE_RANGE.1)
-            .logarithmic(true)
-            .text("scale a"),
-    );
+    // |a| on a slider over its allowed range and the sign on a checkbox, so that a negative
+    // scale from a scene file is shown as it is, never clamped.
+    let mut magnitude = s.pair.scale.abs();
+    let mut negative = s.pair.scale < 0.0;
+    ui.horizontal(|ui| {
+        let a = ui.add(
+            egui::Slider::new(&mut magnitude, PAIR_SCALE_RANGE.0..=PAIR_SCALE_RANGE.1)
+                .logarithmic(true)
+                .text("scale |a|"),
+        );
+        let sign = ui.checkbox(&mut negative, "a < 0");
+        if a.changed() || sign.changed() {
+            s.pair.scale = if negative { -magnitude } else { magnitude };
+        }
+    });
     ui.add(
         egui::Slider::new(&mut s.pair.shift, PAIR_SHIFT_RANGE.0..=PAIR_SHIFT_RANGE.1)
             .text("shift s"),
     );
     ui.separator();
-    ui.add(egui::Slider::new(&mut s.vdc_rows, 1..=64).text("van der Corput rows n"));
+    ui.add(egui::Slider::new(&mut s.vdc_rows, 1..=MAX_VDC_ROWS).text("van der Corput rows n"));
 }
 
 fn signal_plot_ui(ui: &mut egui::Ui, v: &TheoremView, width: f32, height: f32) {

@@ -38,11 +38,17 @@ pub fn pattern_ui(ui: &mut egui::Ui, column: &mut Column) {
 /// One control per parameter descriptor of `params`; a change is applied only if the whole
 /// set stays valid ([`Params::set_value`]).
 pub fn params_ui(ui: &mut egui::Ui, params: &mut impl Params) {
+    labelled_params_ui(ui, params, "");
+}
+
+/// As [`params_ui`], each control labelled `prefix` + the parameter's name (the theorem panel
+/// has a signal radius and a filter radius).
+pub fn labelled_params_ui(ui: &mut egui::Ui, params: &mut impl Params, prefix: &str) {
     for spec in params.specs() {
         let Some(value) = params.get(spec.name) else {
             continue;
         };
-        if let Some(v) = param_ui(ui, &spec, value) {
+        if let Some(v) = param_ui(ui, &spec, &format!("{prefix}{}", spec.name), value) {
             let _ = params.set_value(spec.name, &v);
         }
     }
@@ -147,12 +153,17 @@ const SLIDER_SPAN: f64 = 10_000.0;
 /// valid value is never clamped): a slider (logarithmic over more than three decades) or, for
 /// very wide ranges, a drag value; a checkbox for booleans; a combo box for choices; one drag
 /// value per entry of a list. Returns the new value when the user changed it.
-pub fn param_ui(ui: &mut egui::Ui, spec: &ParamSpec, value: ParamValue) -> Option<ParamValue> {
+pub fn param_ui(
+    ui: &mut egui::Ui,
+    spec: &ParamSpec,
+    label: &str,
+    value: ParamValue,
+) -> Option<ParamValue> {
     match (&spec.kind, value) {
         (&ParamKind::Int { min, max, .. }, ParamValue::Int(mut v)) => {
             let changed = if (max - min) as f64 > SLIDER_SPAN {
                 ui.horizontal(|ui| {
-                    let label = ui.label(spec.name);
+                    let label = ui.label(label);
                     ui.add(egui::DragValue::new(&mut v).range(min..=max))
                         .labelled_by(label.id)
                         .on_hover_text(spec.doc)
@@ -164,7 +175,7 @@ pub fn param_ui(ui: &mut egui::Ui, spec: &ParamSpec, value: ParamValue) -> Optio
                 ui.add(
                     egui::Slider::new(&mut v, min..=max)
                         .logarithmic(log)
-                        .text(spec.name),
+                        .text(label),
                 )
                 .on_hover_text(spec.doc)
                 .changed()
@@ -175,7 +186,7 @@ pub fn param_ui(ui: &mut egui::Ui, spec: &ParamSpec, value: ParamValue) -> Optio
             let log = min > 0.0 && max > 1000.0 * min;
             let changed = if !log && max - min > SLIDER_SPAN {
                 ui.horizontal(|ui| {
-                    let label = ui.label(spec.name);
+                    let label = ui.label(label);
                     let speed = (v.abs() * 0.01).max(0.01);
                     ui.add(egui::DragValue::new(&mut v).range(min..=max).speed(speed))
                         .labelled_by(label.id)
@@ -187,7 +198,7 @@ pub fn param_ui(ui: &mut egui::Ui, spec: &ParamSpec, value: ParamValue) -> Optio
                 ui.add(
                     egui::Slider::new(&mut v, min..=max)
                         .logarithmic(log)
-                        .text(spec.name),
+                        .text(label),
                 )
                 .on_hover_text(spec.doc)
                 .changed()
@@ -196,7 +207,7 @@ pub fn param_ui(ui: &mut egui::Ui, spec: &ParamSpec, value: ParamValue) -> Optio
         }
         (ParamKind::Choice { options, .. }, ParamValue::Choice(current)) => {
             let mut chosen = current;
-            egui::ComboBox::from_label(spec.name)
+            egui::ComboBox::from_label(label)
                 .selected_text(current)
                 .show_ui(ui, |ui| {
                     for o in options.iter() {
@@ -206,14 +217,14 @@ pub fn param_ui(ui: &mut egui::Ui, spec: &ParamSpec, value: ParamValue) -> Optio
             (chosen != current).then_some(ParamValue::Choice(chosen))
         }
         (ParamKind::Bool { .. }, ParamValue::Bool(mut b)) => ui
-            .checkbox(&mut b, spec.name)
+            .checkbox(&mut b, label)
             .on_hover_text(spec.doc)
             .changed()
             .then_some(ParamValue::Bool(b)),
         (&ParamKind::List { min, max, .. }, ParamValue::List(mut items)) => {
             let changed = ui
                 .horizontal(|ui| {
-                    let label = ui.label(spec.name).on_hover_text(spec.doc);
+                    let label = ui.label(label).on_hover_text(spec.doc);
                     let mut changed = false;
                     for x in items.iter_mut() {
                         let speed = (x.abs() * 0.01).max(0.01);

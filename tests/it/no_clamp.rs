@@ -1,0 +1,297 @@
+//! No silent clamps: every GUI widget spans exactly the range a scene may hold (the parameter
+//! descriptors and `scene::limits`), so drawing a valid scene, with every panel and so every
+//! control shown, leaves it unchanged. Checked for every shipped scene and for scenes with
+//! each documented limit reached, one value at a time.
+
+use eframe::egui;
+use egui_kittest::Harness;
+use samplescope::core::budget::Budget;
+use samplescope::core::filter::{Filter, Window, WindowedSinc};
+use samplescope::core::params::{ParamKind, ParamValue, Params};
+use samplescope::core::pattern::Pattern;
+use samplescope::core::signal::theorem::{
+    Signal1D, EXTENT_RANGE, MAX_RATE, MAX_VDC_ROWS, MIN_RATE, PAIR_SCALE_RANGE, PAIR_SHIFT_RANGE,
+};
+use samplescope::core::signal::Signal;
+use samplescope::scene::{limits, Column, ReconMode, Scene, BUILTIN, MAX_COLUMNS};
+use samplescope::ui::SamplescopeApp;
+
+/// Every panel on, so that every control is drawn.
+fn all_panels(mut s: Scene) -> Scene {
+    let p = &mut s.panels;
+    p.pattern = true;
+    p.spectrum = true;
+    p.zoneplate = true;
+    p.filter = true;
+    p.cost = true;
+    p.theorem = true;
+    s
+}
+
+/// Copies of `params` with one parameter at a time at the low and the high end of its range
+/// (each option of a choice; both values of a flag), keeping only valid sets.
+fn at_limits<P: Params>(params: &P) -> Vec<P> {
+    let mut out = Vec::new();
+    for spec in params.specs() {
+        let values = match &spec.kind {
+            ParamKind::Int { min, max, .. } => vec![ParamValue::Int(*min), ParamValue::Int(*max)],
+            ParamKind::Float { min, max, .. } => {
+                vec![ParamValue::Float(*min), ParamValue::Float(*max)]
+            }
+            ParamKind::Choice { options, .. } => {
+                options.iter().map(|o| ParamValue::Choice(o)).collect()
+            }
+            ParamKind::Bool { .. } => vec![ParamValue::Bool(false), ParamValue::Bool(true)],
+            ParamKind::List { default, min, max } => vec![
+                ParamValue::List(vec![*min; default.len()]),
+                ParamValue::List(vec![*max; default.len()]),
+                ParamValue::List(vec![*max]),
+            ],
+        };
+        for v in values {
+            let mut p = params.clone();
+            // An exclusive minimum is not itself allowed: set_value refuses it, so the set is
+            // skipped (its smallest allowed value is covered by the descriptors' own tests).
+            if p.set_value(spec.name, &v).is_ok() {
+                out.push(p);
+            }
+        }
+    }
+    out
+}
+
+/// Scenes with each documented limit reached, one value at a time.
+fn limit_scenes() -> Vec<(String, Scene)> {
+    let base = all_panels(Scene::builtin_default());
+    let mut out: Vec<(String, Scene)> = Vec::new();
+    let mut push = |name: String, s: Scene| {
+        s.validate(&name)
+            .unwrap_or_else(|e| panic!("{name} must be a valid scene: {e}"));
+        out.push((name, s));
+    };
+    for n in [*limits::N.start(), *limits::N.end()] {
+        push(format!("n={n}"), Scene { n, ..base.clone() });
+    }
+    for size in [*limits::SPECTRUM_SIZE.start(), *limits::SPECTRUM_SIZE.end()] {
+        let mut s = base.clone();
+        s.spectrum.size = size;
+        push(format!("spectrum.size={size}"), s);
+    }
+    for tolerance in [*limits::TOLERANCE.start(), *limits::TOLERANCE.end()] {
+        let mut s = base.clone();
+        s.spectrum.tolerance = tolerance;
+        push(format!("spectrum.tolerance={tolerance}"), s);
+    }
+    for k in [*limits::REALIZATIONS.start(), *limits::REALIZATIONS.end()] {
+        let mut s = base.clone();
+        s.spectrum.realizations = k;
+        push(format!("spectrum.realizations={k}"), s);
+    }
+    for size in [*limits::RECON_SIZE.start(), *limits::RECON_SIZE.end()] {
+        let mut s = base.clone();
+        s.recon.size = size;
+        push(format!("recon.size={size}"), s);
+    }
+    for spp in [*limits::SPP.start(), *limits::SPP.end()] {
+        let mut s = base.clone();
+        s.recon.mode = ReconMode::Supersample { spp };
+        push(format!("recon.mode.spp={spp}"), s);
+    }
+    for grid in [*limits::GRID.start(), *limits::GRID.end()] {
+        let mut s = base.clone();
+        s.recon.mode = ReconMode::Resample { grid };
+        push(format!("recon.mode.grid={grid}"), s);
+    }
+    {
+        let mut s = base.clone();
+        s.n = 1 << 10;
+        s.columns = (0..MAX_COLUMNS)
+            .map(|i| Column {
+                seed: u64::MAX - i as u64,
+                elementary_k: Some(if i == 0 { 10 } else { 0 }),
+                ..Column::default()
+            })
+            .collect();
+        push(
+            format!("columns={MAX_COLUMNS}, seeds at u64::MAX, elementary k 0 and 10"),
+            s,
+        );
+    }
+    for p in Pattern::all() {
+        for q in at_limits(&p) {
+            let mut s = base.clone();
+            s.columns[0].pattern = q;
+            push(format!("pattern {q:?}"), s);
+        }
+    }
+    let kaiser = Filter::WindowedSinc(WindowedSinc {
+        window: Window::Kaiser { beta: 5.0 },
+        ..WindowedSinc::default()
+    });
+    for f in Filter::all().into_iter().chain([kaiser]) {
+        for g in at_limits(&f) {
+            let mut s = base.clone();
+            s.filter.filter = g;
+            if s.filter.validate().is_ok() {
+                push(format!("filter {g:?}"), s);
+            }
+        }
+    }
+    for sig in Signal::all() {
+        for t in at_limits(&sig) {
+            let mut s = base.clone();
+            s.signal = t;
+            push(format!("signal {t:?}"), s);
+        }
+    }
+    for sig in Signal1D::all() {
+        for t in at_limits(&sig) {
+            let mut s = base.clone();
+            s.theorem.signal = t;
+            s.theorem.rate = 1.0;
+            if s.theorem.validate().is_ok() {
+                push(format!("theorem signal {t:?}"), s);
+            }
+        }
+    }
+    let th = |f: &dyn Fn(&mut Scene)| {
+        let mut s = base.clone();
+        f(&mut s);
+        s
+    };
+    push(
+        "theorem.rate=min".into(),
+        th(&|s| s.theorem.rate = MIN_RATE),
+    );
+    push(
+        "theorem.rate=max".into(),
+        th(&|s| {
+            s.theorem.rate = MAX_RATE;
+            s.theorem.signal = Signal1D::Gaussian { sigma: 0.01 };
+            s.theorem.extent = EXTENT_RANGE.0;
+        }),
+    );
+    push(
+        "theorem.extent=min".into(),
+        th(&|s| s.theorem.extent = EXTENT_RANGE.0),
+    );
+    push(
+        "theorem.extent=max".into(),
+        th(&|s| {
+            s.theorem.extent = EXTENT_RANGE.1;
+            s.theorem.rate = 1.0;
+        }),
+    );
+    for a in [
+        PAIR_SCALE_RANGE.0,
+        PAIR_SCALE_RANGE.1,
+        -PAIR_SCALE_RANGE.0,
+        -PAIR_SCALE_RANGE.1,
+    ] {
+        push(
+            format!("theorem.pair.scale={a}"),
+            th(&|s| s.theorem.pair.scale = a),
+        );
+    }
+    for shift in [PAIR_SHIFT_RANGE.0, PAIR_SHIFT_RANGE.1] {
+        push(
+            format!("theorem.pair.shift={shift}"),
+            th(&|s| s.theorem.pair.shift = shift),
+        );
+    }
+    for rows in [1, MAX_VDC_ROWS] {
+        push(
+            format!("theorem.vdc_rows={rows}"),
+            th(&|s| s.theorem.vdc_rows = rows),
+        );
+    }
+    out
+}
+
+#[test]
+fn drawing_any_valid_scene_with_every_control_shown_leaves_it_unchanged() {
+    let mut h: Harness<'static, SamplescopeApp> = Harness::builder()
+        .with_size(egui::Vec2::new(1400.0, 1000.0))
+        .wgpu()
+        .build_eframe(|cc| {
+            let mut app = crate::hermetic_app(cc);
+            app.view.show_timings = false;
+            // Nothing is computed: this test is about the widgets only.
+            app.budget = Budget {
+                seconds: 0.0,
+                bytes: 0.0,
+            };
+            app
+        });
+    let mut scenes: Vec<(String, Scene)> = BUILTIN
+        .iter()
+        .map(|(name, text)| {
+            let scene = Scene::from_ron(text, name).expect("shipped scenes parse");
+            (name.to_string(), all_panels(scene))
+        })
+        .collect();
+    let limits = limit_scenes();
+    assert!(limits.len() > 150, "only {} limit scenes", limits.len());
+    scenes.extend(limits);
+    let mut changed = Vec::new();
+    for (name, scene) in &scenes {
+        h.state_mut().set_scene(scene.clone(), name.clone());
+        h.step();
+        h.step();
+        let app = h.state();
+        assert!(
+            app.over_budget.is_some(),
+            "{name}: a zero budget refuses every scene"
+        );
+        if &app.scene != scene {
+            changed.push(format!(
+                "{name}:\n  before {:?}\n  after  {:?}",
+                scene, app.scene
+            ));
+        }
+    }
+    assert!(
+        changed.is_empty(),
+        "{} of {} scenes changed by drawing:\n{}",
+        changed.len(),
+        scenes.len(),
+        changed.join("\n")
+    );
+}
+
+#[test]
+fn a_scene_over_the_budget_is_not_computed_until_the_user_asks() {
+    let mut h: Harness<'static, SamplescopeApp> = Harness::builder()
+        .with_size(egui::Vec2::new(1400.0, 1000.0))
+        .wgpu()
+        .build_eframe(|cc| {
+            let mut app = crate::hermetic_app(cc);
+            app.view.show_timings = false;
+            app
+        });
+    crate::settle(&mut h, 1);
+    let generation = h.state().engine.generation();
+    // 2^20 best-candidate points: hours of work, far beyond the 60 s budget.
+    let mut s = Scene::builtin_default();
+    s.n = 1 << 20;
+    s.columns[0].pattern = Pattern::from_name("best-candidate").unwrap();
+    h.state_mut().set_scene(s.clone(), "huge".into());
+    h.step();
+    h.step();
+    let msg = h.state().over_budget.clone().expect("refused");
+    assert!(
+        msg.contains("best candidate") || msg.contains("best-candidate"),
+        "{msg}"
+    );
+    assert!(msg.contains("limit"), "{msg}");
+    assert_eq!(
+        h.state().engine.generation(),
+        generation,
+        "nothing submitted"
+    );
+    // Back to a small N: computed again, the banner gone.
+    h.state_mut().scene.n = 256;
+    crate::settle(&mut h, 1);
+    assert!(h.state().over_budget.is_none());
+    assert!(h.state().engine.generation() > generation);
+}
