@@ -17,8 +17,12 @@
 //! round to 1.0. Sequences are indexed from i = 0.
 
 pub mod best_candidate;
+pub mod halton_scramble;
 pub mod hex;
+pub mod lattice;
 pub mod lowdisc;
+pub mod optimize;
+pub mod pmj;
 pub mod poisson;
 pub mod radical_inverse;
 pub mod sphere;

@@ -37,6 +37,7 @@ pub mod convergence;
 pub mod coverage;
 pub mod filter_kernel;
 pub mod grid;
+pub mod image_plane;
 pub mod kernels;
 pub mod reference;
 pub mod scattered;
