@@ -15,7 +15,10 @@
 use criterion::{criterion_group, criterion_main, Criterion, SamplingMode};
 use glam::DVec2;
 use samplescope::core::cancel::Cancel;
-use samplescope::core::recon::kernels::{GaussianKernel, NonSeparable, TentKernel};
+#[path = "../tests/it/recon_kernels.rs"]
+#[allow(dead_code)]
+mod recon_kernels;
+use recon_kernels::{GaussianKernel, NonSeparable, TentKernel};
 use samplescope::core::recon::{
     reconstruct_scattered, reconstruct_scattered_gather, reference_image, reference_supersampled,
     rmse, sample_signal, ReconKernel, ReferenceOptions,

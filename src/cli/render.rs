@@ -37,44 +37,33 @@ pub struct RenderArgs {
     #[arg(long, default_value_t = 1)]
     pub scale: u32,
     /// Formats to write, comma-separated: png, svg, csv (composites are PNG only).
-    #[arg(long, value_delimiter = ',', default_value = "png,svg,csv")]
-    pub format: Vec<String>,
+    #[arg(long, value_delimiter = ',', default_value = "png,svg,csv", value_enum)]
+    pub format: Vec<Format>,
     /// Compute reference images even if the disk cache has them (and store nothing there).
     #[arg(long)]
     pub no_cache: bool,
 }
 
 /// An output format.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-enum Format {
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum Format {
+    /// Bitmap figures (and the composites).
     Png,
+    /// Vector figures.
     Svg,
+    /// The figures' data.
     Csv,
 }
 
-fn parse_formats(list: &[String]) -> Result<Vec<Format>, CliError> {
+/// The formats asked for, each once, in the order given.
+fn formats(list: &[Format]) -> Vec<Format> {
     let mut out = Vec::new();
     for f in list {
-        let format = match f.trim().to_ascii_lowercase().as_str() {
-            "png" => Format::Png,
-            "svg" => Format::Svg,
-            "csv" => Format::Csv,
-            _ => {
-                return Err(CliError::Usage(format!(
-                    "--format {f}: must be a comma-separated list of png, svg, csv"
-                )))
-            }
-        };
-        if !out.contains(&format) {
-            out.push(format);
+        if !out.contains(f) {
+            out.push(*f);
         }
     }
-    if out.is_empty() {
-        return Err(CliError::Usage(
-            "--format: must name at least one of png, svg, csv".into(),
-        ));
-    }
-    Ok(out)
+    out
 }
 
 fn export_err(e: ExportError) -> CliError {
@@ -139,7 +128,7 @@ pub fn run(args: &RenderArgs, session: &Session) -> Result<(), CliError> {
             SCALES.end()
         )));
     }
-    let formats = parse_formats(&args.format)?;
+    let formats = formats(&args.format);
     let source = args.scene.display().to_string();
     let scene = Scene::load(&args.scene).map_err(|e| match e {
         SceneError::Io { path, message } => CliError::Io {

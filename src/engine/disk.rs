@@ -8,7 +8,7 @@
 
 use super::disk_cache::{DiskCache, ImagePayload};
 use crate::core::recon::ReferenceMethod;
-use crate::model::ReferenceData;
+use crate::model::{Accuracy, ReferenceData};
 use crate::scene::graph::{NodeKey, NodeResult, NodeValue};
 use std::sync::Arc;
 use std::time::Duration;
@@ -30,10 +30,10 @@ pub(crate) fn load(disk: &DiskCache, key: &NodeKey) -> Option<NodeResult> {
             p.error_estimate,
             method,
         )))),
-        // The same accuracy text as when computed: a render from the cache writes the same
-        // bytes as one that computed the reference.
+        // The same accuracy as when computed (it is a function of the method and the error
+        // estimate): a render from the cache writes the same bytes as one that computed it.
         wall: Duration::ZERO,
-        accuracy: p.accuracy,
+        accuracy: Accuracy::reference(method, p.error_estimate),
     })
 }
 
@@ -52,7 +52,6 @@ pub(crate) fn store(disk: &DiskCache, key: &NodeKey, result: &NodeResult) {
         values: r.pixels.as_ref().clone(),
         error_estimate: r.error_estimate,
         method,
-        accuracy: result.accuracy.clone(),
     };
     if let Err(e) = disk.put(key.kind.name(), &key.hash, &payload.to_bytes()) {
         eprintln!("samplescope: disk cache: {e}");

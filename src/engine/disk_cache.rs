@@ -72,7 +72,8 @@ use std::time::{Duration, SystemTime};
 /// The first eight bytes of every entry file.
 pub const MAGIC: [u8; 8] = *b"SSCACHE1";
 /// The format version written after [`MAGIC`]; files of another version are rejected.
-pub const FORMAT_VERSION: u32 = 1;
+/// Version 2: the image payload no longer stores the accuracy text (it is derived).
+pub const FORMAT_VERSION: u32 = 2;
 /// The longest kind name, in bytes.
 pub const MAX_KIND_LEN: usize = 64;
 /// A temporary file not modified for this long is taken for a crash's leftover by
@@ -559,7 +560,9 @@ fn is_temp_name(name: &str) -> bool {
 /// | 8 · width · height | `values`, `f64` bit patterns (NaNs kept bit for bit) |
 /// | 1, then 8 if 1 | `error_estimate`: 0 = `None`; 1 = `Some`, then the `f64` |
 /// | 4 + n | `method`: length `u32`, then n bytes of UTF-8 |
-/// | 1, then 4 + n if 1 | `accuracy`: 0 = `None`; 1 = `Some`, then length `u32` and UTF-8 |
+///
+/// The accuracy shown for the image is not stored: it is a function of the method and the
+/// error estimate (`model::Accuracy::reference`).
 #[derive(Debug, Clone, PartialEq)]
 pub struct ImagePayload {
     pub width: u32,
@@ -568,7 +571,6 @@ pub struct ImagePayload {
     pub values: Vec<f64>,
     pub error_estimate: Option<f64>,
     pub method: String,
-    pub accuracy: Option<String>,
 }
 
 impl ImagePayload {
@@ -585,8 +587,7 @@ impl ImagePayload {
             self.width,
             self.height
         );
-        let strings = self.method.len() + self.accuracy.as_ref().map_or(0, String::len);
-        let mut out = Vec::with_capacity(8 + 8 * self.values.len() + 9 + 4 + 1 + 4 + strings);
+        let mut out = Vec::with_capacity(8 + 8 * self.values.len() + 9 + 4 + self.method.len());
         out.extend_from_slice(&self.width.to_le_bytes());
         out.extend_from_slice(&self.height.to_le_bytes());
         for v in &self.values {
@@ -600,13 +601,6 @@ impl ImagePayload {
             }
         }
         put_str(&mut out, &self.method);
-        match &self.accuracy {
-            None => out.push(0),
-            Some(a) => {
-                out.push(1);
-                put_str(&mut out, a);
-            }
-        }
         out
     }
 
@@ -630,11 +624,6 @@ impl ImagePayload {
             _ => return None,
         };
         let method = r.string()?;
-        let accuracy = match r.array::<1>()?[0] {
-            0 => None,
-            1 => Some(r.string()?),
-            _ => return None,
-        };
         if !r.0.is_empty() {
             return None;
         }
@@ -644,7 +633,6 @@ impl ImagePayload {
             values,
             error_estimate,
             method,
-            accuracy,
         })
     }
 }
@@ -791,7 +779,7 @@ mod tests {
         let bytes = fs::read(cache.entry_path("ref", &key(9))).unwrap();
         assert_eq!(bytes.len() as u64, 5 + entry_overhead("ref"));
         assert_eq!(&bytes[0..8], b"SSCACHE1");
-        assert_eq!(&bytes[8..12], &1u32.to_le_bytes());
+        assert_eq!(&bytes[8..12], &2u32.to_le_bytes());
         assert_eq!(&bytes[12..44], &key(9));
         assert_eq!(&bytes[44..48], &3u32.to_le_bytes());
         assert_eq!(&bytes[48..51], b"ref");
@@ -1280,7 +1268,6 @@ mod tests {
             ],
             error_estimate: Some(1.0e-4),
             method: "supersampled 64² — box".to_string(),
-            accuracy: Some("±1e-4".to_string()),
         }
     }
 
@@ -1294,7 +1281,6 @@ mod tests {
                 .all(|(x, y)| x.to_bits() == y.to_bits())
             && a.error_estimate.map(f64::to_bits) == b.error_estimate.map(f64::to_bits)
             && a.method == b.method
-            && a.accuracy == b.accuracy
     }
 
     #[test]
@@ -1308,7 +1294,6 @@ mod tests {
             values: vec![],
             error_estimate: None,
             method: String::new(),
-            accuracy: None,
         };
         assert_eq!(ImagePayload::from_bytes(&bare.to_bytes()).unwrap(), bare);
         // Layout: little-endian width and height, then the values.

@@ -9,6 +9,7 @@
 //! The compute graph ([`crate::scene`]) fills these structs; the panels ([`crate::ui`]) and the
 //! figures ([`crate::export`]) only read them.
 
+mod accuracy;
 mod colormap;
 mod column;
 mod context;
@@ -20,6 +21,7 @@ mod points;
 mod recon;
 mod spectrum;
 
+pub use accuracy::Accuracy;
 pub use colormap::{colorize, Colormap};
 pub use column::ColumnData;
 pub use context::{sanitize, FigureContext};

@@ -2,6 +2,7 @@
 
 use super::node::{Deps, JobCtx, NodeError, NodeKind, NodeValue, Output, Partial};
 use super::ReconMode;
+use crate::model::Accuracy;
 use std::sync::Arc;
 use std::time::Duration;
 
@@ -20,10 +21,10 @@ pub(super) fn theorem(ctx: &JobCtx) -> Output {
     ctx.cancel.check()?;
     let v = crate::core::signal::theorem::compute_view(&ctx.scene.theorem)?;
     let e = &v.errors;
-    let accuracy = Some(format!(
-        "band ±{:.3} cycles/unit, tail ≤ {:.1e}",
-        e.band, e.tail_bound
-    ));
+    let accuracy = Some(Accuracy::TheoremBand {
+        band: e.band,
+        tail: e.tail_bound,
+    });
     Ok((NodeValue::Theorem(Arc::new(v)), accuracy))
 }
 
@@ -66,7 +67,9 @@ pub(super) fn points(ctx: &JobCtx) -> Output {
                 version: next_version(),
                 note: None,
             })),
-            Some(format!("imported from {}", imp.label())),
+            Some(Accuracy::Imported {
+                source: imp.label(),
+            }),
         ));
     }
     let g = col.pattern.generate_with(scene.n, col.seed, cancel)?;
@@ -151,10 +154,11 @@ pub(super) fn reconstruction(ctx: &JobCtx) -> Output {
                 )?;
                 (ctx.progress)(Partial {
                     value: NodeValue::Reconstruction(Arc::new(ReconData::new(p))),
-                    accuracy: Some(format!(
-                        "preview at {preview_spp} of {spp} spp: noise ≳ {}× the final's",
-                        (PREVIEW_DIVISOR as f64).sqrt()
-                    )),
+                    accuracy: Some(Accuracy::Preview {
+                        spp: preview_spp,
+                        of: spp,
+                        noise: (PREVIEW_DIVISOR as f64).sqrt(),
+                    }),
                     step: 1,
                     steps: 2,
                 });
@@ -169,7 +173,9 @@ pub(super) fn reconstruction(ctx: &JobCtx) -> Output {
             )?
         }
     };
-    let accuracy = (r.zero_weight > 0).then(|| format!("{} zero-weight pixels", r.zero_weight));
+    let accuracy = (r.zero_weight > 0).then_some(Accuracy::ZeroWeightPixels {
+        pixels: r.zero_weight,
+    });
     Ok((
         NodeValue::Reconstruction(Arc::new(ReconData::new(r))),
         accuracy,
@@ -185,13 +191,7 @@ pub(super) fn reference(ctx: &JobCtx) -> Output {
     let (scene, cancel) = (ctx.scene, ctx.cancel);
     let w = scene.recon.size;
     let data = |r: &crate::core::recon::ReferenceImage| {
-        let accuracy = r.error_estimate.map(|e| {
-            if r.method.estimate_is_bound() {
-                format!("own error ≤ {e:.1e}")
-            } else {
-                format!("own RMS error ≈ {e:.1e}")
-            }
-        });
+        let accuracy = Accuracy::reference(r.method, r.error_estimate);
         let value = NodeValue::Reference(Arc::new(ReferenceData::new(
             w,
             r.pixels.clone(),
@@ -261,7 +261,7 @@ pub(super) fn error(ctx: &JobCtx) -> Output {
             image: ImageData::new(a.width, a.height, diff),
             max_error: max,
         })),
-        Some(format!("RMSE {rmse:.4}, PSNR {psnr:.2} dB")),
+        Some(Accuracy::Error { rmse, psnr }),
     ))
 }
 
@@ -354,7 +354,10 @@ pub(super) fn convergence(ctx: &JobCtx) -> Output {
         &mut |points| {
             (ctx.progress)(Partial {
                 value: NodeValue::Convergence(Arc::new(plain(points))),
-                accuracy: Some(format!("{} of {steps} spp levels", points.len())),
+                accuracy: Some(Accuracy::ConvergenceLevels {
+                    done: points.len(),
+                    of: steps,
+                }),
                 step: points.len(),
                 steps,
             })
@@ -401,10 +404,7 @@ pub(super) fn spectrum(ctx: &JobCtx) -> Output {
         if let Ok(data) = spectrum_data(spec, Vec::new()) {
             (ctx.progress)(Partial {
                 value: NodeValue::Spectrum(Arc::new(data)),
-                accuracy: Some(format!(
-                    "mean of {done} of {k} realizations, rel. noise ≈ {:.2}",
-                    1.0 / (done as f64).sqrt()
-                )),
+                accuracy: Some(Accuracy::Realizations { done, of: k }),
                 step: done,
                 steps: k,
             });
@@ -431,21 +431,22 @@ pub(super) fn spectrum(ctx: &JobCtx) -> Output {
         .collect();
     let data = spectrum_data(&spec, stages)?;
     let accuracy = match (report.tolerance, report.error) {
-        (Some(tol), Some(e)) => Some(format!(
-            "rel. L2 error {:.1e} (asked {tol:.0e}, {} freq.)",
-            e.relative_l2, e.frequencies
-        )),
-        (Some(tol), None) => Some(format!("asked {tol:.0e}")),
-        (None, _) => Some("exact DFT".into()),
+        (Some(tol), Some(e)) => Accuracy::SpectrumMeasured {
+            relative_l2: e.relative_l2,
+            asked: tol,
+            frequencies: e.frequencies,
+        },
+        (Some(tol), None) => Accuracy::SpectrumAsked { tolerance: tol },
+        (None, _) => Accuracy::ExactDft,
     };
-    let accuracy = if imported && asked_k > 1 {
-        Some(format!(
-            "imported points: one realization (K = 1, scene asks {asked_k}); {}",
-            accuracy.unwrap_or_default()
-        ))
+    let accuracy = Some(if imported && asked_k > 1 {
+        Accuracy::ImportedOneRealization {
+            asked: asked_k,
+            spectrum: Box::new(accuracy),
+        }
     } else {
         accuracy
-    };
+    });
     Ok((NodeValue::Spectrum(Arc::new(data)), accuracy))
 }
 

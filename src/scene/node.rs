@@ -10,6 +10,7 @@ use crate::core::pattern::PatternError;
 use crate::core::recon::ReconError;
 use crate::core::signal::theorem::TheoremError;
 use crate::core::spectrum::SpectrumError;
+use crate::model::Accuracy;
 use crate::model::{
     ConvergencePoint, ErrorData, ImageData, PointsData, ReconData, ReferenceData, ResponseData,
     SpectrumData, StatsData,
@@ -100,8 +101,8 @@ pub struct NodeResult {
     pub value: Result<NodeValue, NodeError>,
     /// Wall time of this evaluation (of the original evaluation for cache hits).
     pub wall: Duration,
-    /// Accuracy reached, where defined (e.g. "rel. ℓ2 error 3.1e-8 (asked 1e-6)").
-    pub accuracy: Option<String>,
+    /// Accuracy reached, where defined (e.g. the measured error of a fast spectrum).
+    pub accuracy: Option<Accuracy>,
 }
 
 impl NodeResult {
@@ -116,7 +117,7 @@ impl NodeResult {
 
     /// Approximate heap bytes held (the cache budget counts these).
     pub fn bytes(&self) -> usize {
-        let base = std::mem::size_of::<Self>() + self.accuracy.as_ref().map_or(0, |s| s.len());
+        let base = std::mem::size_of::<Self>();
         base + match &self.value {
             Ok(v) => v.bytes(),
             Err(_) => std::mem::size_of::<NodeError>(),
@@ -202,13 +203,13 @@ pub enum NodeValue {
 pub type Deps = HashMap<NodeKind, Arc<NodeResult>>;
 
 /// What a job returns: its value and the accuracy reached, or the error that stopped it.
-pub type Output = Result<(NodeValue, Option<String>), NodeError>;
+pub type Output = Result<(NodeValue, Option<Accuracy>), NodeError>;
 
 /// A coarse result a node publishes while it refines (step `step` of `steps`; the last step
 /// is the node's final result and is returned, not published).
 pub struct Partial {
     pub value: NodeValue,
-    pub accuracy: Option<String>,
+    pub accuracy: Option<Accuracy>,
     pub step: usize,
     pub steps: usize,
 }

@@ -118,7 +118,7 @@ fn points_and_spectrum_note(scene: &Scene) -> (Vec<DVec2>, Option<String>, Evalu
         if c == 0 {
             match (&r.value, kind) {
                 (Ok(NodeValue::Points(p)), _) => pts = Some(p.points.clone()),
-                (Ok(_), NodeKind::Spectrum) => note = r.accuracy.clone(),
+                (Ok(_), NodeKind::Spectrum) => note = r.accuracy.as_ref().map(|a| a.to_string()),
                 _ => {}
             }
         }

@@ -29,6 +29,7 @@ mod patterns_poisson;
 mod patterns_stratified;
 mod recon_error;
 mod recon_grid;
+mod recon_kernels;
 mod recon_reference;
 mod recon_scattered;
 mod recon_supersample;

@@ -1,8 +1,8 @@
 //! RMSE and PSNR against closed forms; the error report counts zero-weight pixels.
 
+use crate::recon_kernels::BoxKernel;
 use glam::DVec2;
 use samplescope::core::cancel::Cancel;
-use samplescope::core::recon::kernels::BoxKernel;
 use samplescope::core::recon::{error_report, psnr, reconstruct_scattered, rmse, ReconError};
 
 #[test]

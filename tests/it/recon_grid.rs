@@ -1,9 +1,9 @@
 //! Uniform grid sampling and resampling: nearest neighbour and bilinear as closed forms, a
 //! band-limited grating through Lanczos, and the lecture's zone plate whose outer rings alias.
 
+use crate::recon_kernels::{BoxKernel, LanczosKernel, TentKernel};
 use glam::DVec2;
 use samplescope::core::cancel::Cancel;
-use samplescope::core::recon::kernels::{BoxKernel, LanczosKernel, TentKernel};
 use samplescope::core::recon::{resample_grid, sample_grid, ReconError, Reconstruction};
 use samplescope::core::signal::{Grating, Signal, ZonePlate};
 

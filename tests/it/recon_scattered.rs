@@ -1,11 +1,11 @@
 //! Scattered reconstruction: splatting against the per-pixel gather and a brute-force O(W²N)
 //! sum, constants, zero-weight pixels and input errors.
 
-use glam::DVec2;
-use samplescope::core::cancel::Cancel;
-use samplescope::core::recon::kernels::{
+use crate::recon_kernels::{
     BoxKernel, ConeKernel, GaussianKernel, LanczosKernel, NonSeparable, TentKernel,
 };
+use glam::DVec2;
+use samplescope::core::cancel::Cancel;
 use samplescope::core::recon::{
     reconstruct_scattered, reconstruct_scattered_gather, reconstruct_scattered_serial,
     sample_signal, ReconError, ReconKernel, Reconstruction, ZERO_WEIGHT_FILL,

@@ -1,9 +1,9 @@
 //! Supersampling: convergence with spp, the box filter as the plain pixel mean, sharing samples
 //! with neighbouring pixels, constants, providers and input errors.
 
+use crate::recon_kernels::{BoxKernel, LanczosKernel, TentKernel};
 use glam::DVec2;
 use samplescope::core::cancel::Cancel;
-use samplescope::core::recon::kernels::{BoxKernel, LanczosKernel, TentKernel};
 use samplescope::core::recon::{
     convergence_curve, supersample, Jittered, ReconError, ReconKernel, Reconstruction,
     SampleProvider, UniformGrid,

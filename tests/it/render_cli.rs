@@ -230,7 +230,11 @@ fn scale_out_of_range_exits_2_naming_scale_and_range() {
         "png,jpeg",
     ]);
     assert_eq!(o.status.code(), Some(2));
-    assert!(stderr(&o).contains("--format jpeg"), "{}", stderr(&o));
+    let e = stderr(&o);
+    assert!(
+        e.contains("'jpeg'") && e.contains("--format") && e.contains("png, svg, csv"),
+        "{e}"
+    );
 }
 
 #[test]

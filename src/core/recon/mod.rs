@@ -38,7 +38,6 @@ pub mod coverage;
 pub mod filter_kernel;
 pub mod grid;
 pub mod image_plane;
-pub mod kernels;
 pub mod reference;
 pub mod scattered;
 pub mod supersample;

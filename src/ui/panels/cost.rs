@@ -48,7 +48,7 @@ impl Panel for CostPanel {
                                     let t = format!("{:.1} ms", r.wall.as_secs_f64() * 1e3);
                                     let resp = ui.label(t);
                                     if let Some(a) = &r.accuracy {
-                                        resp.on_hover_text(a);
+                                        resp.on_hover_text(a.to_string());
                                     }
                                 }
                                 None => {

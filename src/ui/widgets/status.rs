@@ -25,7 +25,7 @@ pub fn time_label(ui: &mut egui::Ui, r: &Shown, show_timings: bool) {
         parts.push(format!("{:.1} ms", r.wall.as_secs_f64() * 1e3));
     }
     if let Some(a) = &r.accuracy {
-        parts.push(a.clone());
+        parts.push(a.to_string());
     }
     if !parts.is_empty() {
         ui.small(parts.join(" · "));

@@ -1,4 +1,5 @@
-//! A few simple [`ReconKernel`]s for tests, benchmarks and examples.
+//! A few simple [`ReconKernel`]s for the reconstruction tests and benchmarks: independent
+//! references beside the filter library.
 //!
 //! This is not the filter library (that is `core::filter`, which implements [`ReconKernel`] for
 //! its own filters); these are the minimum needed to exercise reconstruction: box, tent and
@@ -6,9 +7,9 @@
 //! lecture's "reconstructed to 512×512 using windowed sinc". All are in filter units
 //! (sample spacings or pixels) and vanish outside |dₓ|, |d_y| < support.
 
-use super::ReconKernel;
-use crate::core::signal::sinc_pi;
 use glam::DVec2;
+use samplescope::core::recon::ReconKernel;
+use samplescope::core::signal::sinc_pi;
 
 /// Box: h(x) = 1 for |x| < r, else 0 (the open interval the [`ReconKernel`] contract asks for;
 /// with r = ½ a sample exactly halfway between two pixel centres reaches neither).
