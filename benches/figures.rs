@@ -10,7 +10,8 @@
 use criterion::{criterion_group, criterion_main, Criterion};
 use samplescope::core::recon::{Reconstruction, ZERO_WEIGHT_FILL};
 use samplescope::export::figure::panel_png;
-use samplescope::export::{flip_rows, png_bytes, PngColormap};
+use samplescope::export::{flip_rows, png_bytes};
+use samplescope::model::Colormap;
 use samplescope::model::{ColumnData, FigureContext, PanelKind, ReconData};
 use samplescope::scene::{figure, Scene};
 use std::hint::black_box;
@@ -67,9 +68,7 @@ fn best_of(runs: usize, f: impl Fn()) -> Duration {
 fn bench(c: &mut Criterion) {
     let (ctx, data, values) = setup();
     let plain = || {
-        black_box(
-            png_bytes(&values, W, W, 0.0, 1.0, PngColormap::Greys, &[]).expect("valid image"),
-        );
+        black_box(png_bytes(&values, W, W, 0.0, 1.0, Colormap::Greys, &[]).expect("valid image"));
     };
     let figure = |scale: u32| {
         black_box(panel_png(PanelKind::Reconstruction, &ctx, &data, scale).expect("figure draws"));

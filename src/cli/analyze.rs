@@ -11,7 +11,8 @@ use samplescope::core::rng::derive_seed;
 use samplescope::core::spectrum::{
     average_periodogram, radial_average, DcMode, Method, SpectrumRequest,
 };
-use samplescope::export::{flip_rows, png_bytes, PngColormap};
+use samplescope::export::{flip_rows, png_bytes};
+use samplescope::model::Colormap;
 use serde_json::json;
 use std::fmt::Write as _;
 use std::path::Path;
@@ -230,7 +231,7 @@ pub fn run(args: &AnalyzeArgs, session: &Session) -> Result<(), CliError> {
                 ),
             ),
         ];
-        let bytes = png_bytes(&values, m, m, lo, hi, PngColormap::Viridis, &text)
+        let bytes = png_bytes(&values, m, m, lo, hi, Colormap::Viridis, &text)
             .map_err(|e| CliError::Usage(e.to_string()))?;
         write_output(Path::new(path), &bytes, cancel)?;
     }

@@ -11,7 +11,8 @@ use samplescope::core::recon::{
     PatternProvider, ReconError, ReferenceOptions, MAX_SPP, MAX_W,
 };
 use samplescope::core::signal::Signal;
-use samplescope::export::{flip_rows, png_bytes, PngColormap};
+use samplescope::export::{flip_rows, png_bytes};
+use samplescope::model::Colormap;
 use std::path::Path;
 use std::time::Instant;
 
@@ -203,7 +204,7 @@ pub fn run(args: &ReconArgs, session: &Session) -> Result<(), CliError> {
             ),
         ];
         let bytes =
-            png_bytes(&values, w, w, 0.0, 1.0, PngColormap::Greys, &text).map_err(|e| usage(&e))?;
+            png_bytes(&values, w, w, 0.0, 1.0, Colormap::Greys, &text).map_err(|e| usage(&e))?;
         write_output(Path::new(path), &bytes, cancel)?;
     }
     drop(progress);

@@ -52,8 +52,7 @@ pub enum ExportError {
     },
 }
 
-/// Colour map of a PNG (the one [`Colormap`](crate::model::Colormap)).
-pub use crate::model::Colormap as PngColormap;
+use crate::model::Colormap;
 
 /// Encodes `values` (row-major, row 0 at the top) as an 8-bit RGB PNG, mapping
 /// [lo, hi] → [0, 1] → colour map; values outside are clamped, NaN maps to 0.
@@ -64,7 +63,7 @@ pub fn png_bytes(
     height: usize,
     lo: f64,
     hi: f64,
-    colormap: PngColormap,
+    colormap: Colormap,
     text: &[(&str, String)],
 ) -> Result<Vec<u8>, ExportError> {
     if values.len() != width * height || width == 0 || height == 0 {
@@ -122,7 +121,7 @@ mod tests {
             2,
             0.0,
             1.0,
-            PngColormap::Greys,
+            Colormap::Greys,
             &[("pattern", "jitter".into())],
         )
         .unwrap();
@@ -138,6 +137,6 @@ mod tests {
         assert!(texts
             .iter()
             .any(|t| t.keyword == "pattern" && t.text == "jitter"));
-        assert!(png_bytes(&values, 3, 2, 0.0, 1.0, PngColormap::Greys, &[]).is_err());
+        assert!(png_bytes(&values, 3, 2, 0.0, 1.0, Colormap::Greys, &[]).is_err());
     }
 }

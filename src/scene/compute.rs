@@ -6,7 +6,7 @@ use crate::model::Accuracy;
 use std::sync::Arc;
 use std::time::Duration;
 
-pub use crate::model::{
+use crate::model::{
     next_version, ConvergencePoint, ErrorData, ImageData, PointsData, ReconData, ReferenceData,
     ResponseData, ResponseMetrics, SpectrumData, StatsData,
 };

@@ -31,10 +31,6 @@ use serde::Serialize;
 pub use super::node::{
     JobCtx, KeyError, NodeError, NodeKey, NodeKind, NodeResult, NodeValue, Partial,
 };
-pub use crate::model::{
-    ConvergencePoint, ErrorData, ImageData, PointsData, ReconData, ReferenceData, ResponseData,
-    SpectrumData, StatsData,
-};
 
 /// A `fmt::Write` that feeds BLAKE3 (RON text is streamed, never built in memory).
 struct HashWriter(blake3::Hasher);

@@ -4,7 +4,7 @@
 use super::columns::{self, Columns};
 use super::dropped::{self, PointImport};
 use super::figures::{self, FigureRequests};
-use super::gpu::{self, Colormap};
+use super::gpu;
 use super::lecture;
 use super::panels::cost::CostPanel;
 use super::panels::theorem::TheoremPanel;
@@ -15,6 +15,7 @@ use super::view::{ViewState, LECTURE_SCALE_RANGE};
 use super::widgets::image::ImageView;
 use super::widgets::params;
 use crate::engine::Engine;
+use crate::model::Colormap;
 use crate::scene::{limits, ReconMode, Scene, BUILTIN, MAX_COLUMNS};
 use eframe::egui;
 use std::collections::HashMap;

@@ -11,7 +11,7 @@ use std::collections::HashMap;
 use std::sync::Arc;
 
 /// Colour maps available for float images (the one colour map of [`crate::model`]).
-pub use crate::model::Colormap;
+use crate::model::Colormap;
 
 /// How a float image is mapped to colour.
 #[derive(Debug, Clone, Copy, PartialEq)]

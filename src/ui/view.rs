@@ -1,7 +1,7 @@
 //! The display state every panel shares (ranges, colour map, overlays, lecture mode), persisted
 //! between runs, and the unit-square transform the panels draw with.
 
-use super::gpu::Colormap;
+use crate::model::Colormap;
 use eframe::egui::{Pos2, Rect};
 use serde::{Deserialize, Serialize};
 

@@ -562,7 +562,7 @@ fn parallel_and_serial_evaluation_give_the_same_bits() {
 
 /// The computed numbers of a value (not its timings or upload versions), printed exactly.
 fn bits(v: &NodeValue) -> String {
-    let img = |i: &graph::ImageData| format!("{:?}", i.values);
+    let img = |i: &samplescope::model::ImageData| format!("{:?}", i.values);
     match v {
         NodeValue::Points(p) => format!("{:?}", p.points),
         NodeValue::Statistics(s) => format!("{s:?}"),

@@ -224,7 +224,7 @@ fn ctrl_s_saves_the_panel_under_the_pointer() {
 
 #[test]
 fn a_figure_saved_during_a_recompute_has_labels_and_pixels_of_one_scene() {
-    use samplescope::export::figure::PanelKind;
+    use samplescope::model::PanelKind;
     use samplescope::ui::figures::{Done, Output, Request, Target};
     let mut h = harness();
     // A slow recompute: 64 spectrum realizations and a new N.

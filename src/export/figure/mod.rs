@@ -64,10 +64,8 @@ mod theorem_signal;
 mod theorem_spectrum;
 
 use super::ExportError;
+use crate::model::{sanitize, ColumnData, FigureContext, PanelKind};
 
-pub use crate::model::{
-    sanitize, Colormap as FigureColormap, ColumnData, FigureContext, PanelKind,
-};
 pub use canvas::{Area, Canvas, CanvasError};
 pub use composite::{
     column_png, column_rgba, column_size, comparison_png, comparison_rgba, comparison_size,

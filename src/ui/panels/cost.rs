@@ -2,7 +2,7 @@
 //! the convergence curves (RMSE against samples per pixel and against time).
 
 use super::{Panel, PanelCx};
-use crate::export::figure::PanelKind;
+use crate::model::PanelKind;
 use crate::scene::graph::{NodeKind, NodeValue};
 use crate::scene::Panels;
 use eframe::egui;

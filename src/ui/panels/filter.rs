@@ -2,7 +2,7 @@
 //! with the Nyquist line, the 2D response image and the filter's metrics.
 
 use super::{Panel, PanelCx};
-use crate::export::figure::PanelKind;
+use crate::model::PanelKind;
 use crate::scene::graph::{NodeKind, NodeValue};
 use crate::scene::Panels;
 use crate::ui::gpu::DisplayRange;

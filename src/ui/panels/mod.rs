@@ -15,7 +15,7 @@ pub mod theorem;
 pub mod zoneplate;
 
 use crate::engine::Evaluator;
-use crate::export::figure::PanelKind;
+use crate::model::PanelKind;
 use crate::scene::graph::NodeKind;
 use crate::scene::{Panels, Scene};
 use crate::ui::figures::FigureRequests;

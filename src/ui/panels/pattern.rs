@@ -3,7 +3,7 @@
 //! statistics.
 
 use super::{Panel, PanelCx};
-use crate::export::figure::PanelKind;
+use crate::model::PanelKind;
 use crate::scene::graph::{NodeKind, NodeValue};
 use crate::scene::{Panels, Scene};
 use crate::ui::gpu;

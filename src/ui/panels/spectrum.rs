@@ -2,7 +2,7 @@
 //! averaged power spectrum and the anisotropy.
 
 use super::{Panel, PanelCx};
-use crate::export::figure::PanelKind;
+use crate::model::PanelKind;
 use crate::scene::graph::{NodeKind, NodeValue};
 use crate::scene::Panels;
 use crate::ui::gpu::DisplayRange;

@@ -2,10 +2,11 @@
 //! (one at a time, chosen in the shared view state), with its metrics and the reference's method.
 
 use super::{Panel, PanelCx};
-use crate::export::figure::PanelKind;
+use crate::model::Colormap;
+use crate::model::PanelKind;
 use crate::scene::graph::{NodeKind, NodeValue};
 use crate::scene::Panels;
-use crate::ui::gpu::{Colormap, DisplayRange};
+use crate::ui::gpu::DisplayRange;
 use crate::ui::view::{ViewState, ZoneImage};
 use crate::ui::widgets::status::{error_label, time_label};
 use eframe::egui::{self, Color32};

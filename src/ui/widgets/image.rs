@@ -1,7 +1,7 @@
 //! Float images on screen: through the wgpu pipelines when they are installed, else colour-mapped
 //! on the CPU into textures cached per panel.
 
-use crate::scene::graph::ImageData;
+use crate::model::ImageData;
 use crate::ui::gpu::{self, DisplayRange, FloatImage};
 use eframe::egui::{self, Color32, Pos2, Rect, Vec2};
 use eframe::egui_wgpu;
