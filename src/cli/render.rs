@@ -129,6 +129,13 @@ pub fn run(args: &RenderArgs, session: &Session) -> Result<(), CliError> {
         )));
     }
     let formats = formats(&args.format);
+    // The output directory is checked before any work: an existing file there is bad input.
+    if args.out.exists() && !args.out.is_dir() {
+        return Err(CliError::Usage(format!(
+            "--out {}: exists and is not a directory (render writes its figures into a directory)",
+            args.out.display()
+        )));
+    }
     let source = args.scene.display().to_string();
     let scene = Scene::load(&args.scene).map_err(|e| match e {
         SceneError::Io { path, message } => CliError::Io {

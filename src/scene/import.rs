@@ -35,7 +35,11 @@ pub struct ImportedPoints {
     /// Map the set's bounding box onto [0,1)² (aspect kept) instead of rejecting points outside.
     pub normalize: bool,
     /// The points (x, y) in [0,1)²: filled from `path` when the scene is loaded, or inline.
+    /// A scene file gives either `path` or inline `points`, never both.
     pub points: Vec<[f64; 2]>,
+    /// Where inline points came from (a file name), shown as the column's label; never read.
+    /// A scene saved from the GUI keeps its imported points inline, with their file here.
+    pub source: String,
 }
 
 impl ImportedPoints {
@@ -51,6 +55,7 @@ impl ImportedPoints {
             path: path.display().to_string(),
             normalize,
             points: pts.iter().map(|p| [p.x, p.y]).collect(),
+            source: String::new(),
         })
     }
 
@@ -102,9 +107,23 @@ impl ImportedPoints {
         h.finalize().to_hex().to_string()
     }
 
-    /// A short label: the file name, or "inline points".
+    /// The import as a scene file holds it: inline points, their file (if any) as `source`.
+    pub fn inline(&self) -> ImportedPoints {
+        let mut out = self.clone();
+        if !out.path.is_empty() {
+            out.source = std::mem::take(&mut out.path);
+        }
+        out
+    }
+
+    /// A short label: the file name (of `path`, else of `source`), or "inline points".
     pub fn label(&self) -> String {
-        Path::new(&self.path)
+        let file = if self.path.is_empty() {
+            &self.source
+        } else {
+            &self.path
+        };
+        Path::new(file)
             .file_name()
             .map(|f| f.to_string_lossy().into_owned())
             .unwrap_or_else(|| "inline points".into())

@@ -504,6 +504,27 @@ impl Scene {
             // they are written in a scene.
             message: e.code.to_string().replace("`r#", "`"),
         })?;
+        for (ci, col) in scene.columns.iter().enumerate() {
+            if let Some(imp) = col.points.as_ref().filter(|p| !p.path.is_empty()) {
+                if !imp.points.is_empty() {
+                    let err = SceneError::Invalid {
+                        source_name: source_name.to_string(),
+                        location: Location::default(),
+                        field: format!("columns[{ci}].points"),
+                        value: format!(
+                            "path {:?} and {} inline points",
+                            imp.path,
+                            imp.points.len()
+                        ),
+                        allowed:
+                            "either a `path` (read when the scene loads) or inline `points` (with \
+                                  `source` naming where they came from), not both"
+                                .into(),
+                    };
+                    return Err(err.located_in(text));
+                }
+            }
+        }
         scene.resolve_points(source_name, base_dir)?;
         scene
             .validate(source_name)
@@ -580,8 +601,16 @@ impl Scene {
     }
 
     /// The scene as RON text.
+    /// Imported points are written inline (with their file as `source`), so the saved scene
+    /// does not depend on the point file and loads as it was.
     pub fn to_ron(&self) -> String {
-        ron::ser::to_string_pretty(self, ron::ser::PrettyConfig::default()).unwrap_or_default()
+        let mut scene = self.clone();
+        for col in &mut scene.columns {
+            if let Some(imp) = &mut col.points {
+                *imp = imp.inline();
+            }
+        }
+        ron::ser::to_string_pretty(&scene, ron::ser::PrettyConfig::default()).unwrap_or_default()
     }
 
     /// Checks every value against its documented range ([`limits`]) and every parameter of

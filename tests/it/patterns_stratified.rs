@@ -628,14 +628,17 @@ fn hex_jitter_stays_within_half_amount_of_a_cell() {
 }
 
 #[test]
-fn hex_odd_n_is_invalid_n() {
+fn hex_odd_n_is_refused_saying_n_must_be_even() {
     let e = Pattern::Hex(Hex::default()).generate(15, 0).unwrap_err();
-    match &e {
-        PatternError::InvalidN { n: 15, why, .. } => {
-            assert!(why.contains("even number of rows") && why.contains("n must be even"))
-        }
-        _ => panic!("{e:?}"),
-    }
+    assert!(
+        matches!(e, PatternError::UnsupportedN { n: 15, .. }),
+        "{e:?}"
+    );
+    assert_eq!(
+        e.to_string(),
+        "hex: n = 15: must be an even integer in 2..=16777216 (hex needs an even number of \
+         rows: the half-spacing shift of odd rows must wrap on the torus)"
+    );
 }
 
 #[test]
@@ -740,7 +743,7 @@ fn n_one_is_fine_except_hex() {
     for p in stratified_patterns() {
         let r = p.generate(1, 0);
         if matches!(p, Pattern::Hex(_)) {
-            assert!(matches!(r, Err(PatternError::InvalidN { n: 1, .. })));
+            assert!(matches!(r, Err(PatternError::UnsupportedN { n: 1, .. })));
         } else {
             assert_eq!(r.unwrap().len(), 1, "{}", p.name());
         }

@@ -370,3 +370,18 @@ fn theorem_scene_writes_the_theorem_figures_byte_identically() {
         "f(0) = 1 is a sample"
     );
 }
+
+#[test]
+fn an_out_path_that_is_a_file_is_refused_before_any_work() {
+    let dir = temp_dir("out-is-file");
+    let scene = dir.join("small.ron");
+    std::fs::write(&scene, SCENE).unwrap();
+    let file = dir.join("taken");
+    std::fs::write(&file, "keep me").unwrap();
+    let o = render(&[scene.to_str().unwrap(), "--out", file.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(2));
+    let e = stderr(&o);
+    assert!(e.contains("exists and is not a directory"), "{e}");
+    assert_eq!(e.trim().lines().count(), 1, "{e}");
+    assert_eq!(std::fs::read_to_string(&file).unwrap(), "keep me");
+}

@@ -41,18 +41,19 @@ pub fn hex_aspect_error(rows: usize, cols: usize) -> f64 {
 /// `rows = 0` (auto) picks the even divisor of `n` with the smallest [`hex_aspect_error`] (ties:
 /// the fewer rows). An explicit `rows` must be an even divisor of `n`.
 ///
-/// Errors: `n` outside `1..=MAX_N`; `n` odd ([`PatternError::InvalidN`]: no even row count
+/// Errors: `n` outside `1..=MAX_N`; `n` odd ([`PatternError::UnsupportedN`]: no even row count
 /// exists); `rows` not an even divisor of `n` ([`PatternError::InvalidParam`] on `rows`, listing
 /// the allowed values).
 pub fn hex_shape(rows: u32, n: usize) -> Result<(usize, usize), PatternError> {
     check_n(n, MAX_N)?;
     if n % 2 != 0 {
-        return Err(PatternError::InvalidN {
+        return Err(PatternError::UnsupportedN {
+            pattern: "hex",
             n,
-            max: MAX_N,
-            why: "; hex needs an even number of rows (the half-spacing shift of odd rows must \
-                  wrap on the torus), so n must be even"
-                .into(),
+            allowed: format!(
+                "an even integer in 2..={MAX_N} (hex needs an even number of rows: the \
+                 half-spacing shift of odd rows must wrap on the torus)"
+            ),
         });
     }
     let even_divisors = even_divisors(n);

@@ -51,6 +51,14 @@ pub enum PatternError {
         /// Extra explanation, starting with "; " (may be empty).
         why: String,
     },
+    /// `n` is in range but not a value this pattern can take (an odd n for hex, a number that
+    /// is not a Fibonacci number for the Fibonacci lattice).
+    #[error("{pattern}: n = {n}: must be {allowed}")]
+    UnsupportedN {
+        pattern: &'static str,
+        n: usize,
+        allowed: String,
+    },
     /// The pattern name is not known.
     #[error("unknown pattern '{name}': allowed patterns are {allowed}")]
     UnknownPattern { name: String, allowed: String },
