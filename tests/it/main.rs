@@ -13,6 +13,7 @@ mod figures;
 mod filter_cli;
 mod filter_metrics;
 mod filter_numerics;
+mod fuzz;
 mod import;
 mod metrics_common;
 mod metrics_l2;

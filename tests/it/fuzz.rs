@@ -1,0 +1,349 @@
+//! The fuzz suite: generated command lines and mutated scene texts never panic, never hang, and
+//! end with a documented exit status (0, 1 for the environment, 2 for bad input).
+//!
+//! Both use proptest with a fixed seed (the same cases on every run) and no regression files.
+//! Command lines run the real binary with `--budget 2`, so any valid command estimated beyond
+//! two seconds is refused at once: the time of each run stays bounded.
+
+use proptest::prelude::*;
+use proptest::test_runner::{Config, RngAlgorithm, TestRng, TestRunner};
+use samplescope::scene::{Scene, BUILTIN};
+use std::path::PathBuf;
+use std::process::{Command, Stdio};
+use std::time::{Duration, Instant};
+
+fn runner(cases: u32, seed: u8) -> TestRunner {
+    let config = Config {
+        cases,
+        failure_persistence: None,
+        ..Config::default()
+    };
+    TestRunner::new_with_rng(
+        config,
+        TestRng::from_seed(RngAlgorithm::ChaCha, &[seed; 32]),
+    )
+}
+
+/// Pieces a careless user or an attacker might type.
+const VALUES: &[&str] = &[
+    "0",
+    "1",
+    "-1",
+    "2",
+    "15",
+    "64",
+    "1000",
+    "4096",
+    "16777216",
+    "16777217",
+    "1e308",
+    "-1e308",
+    "5e-324",
+    "NaN",
+    "inf",
+    "-0",
+    "0.5",
+    "1.5",
+    "abc",
+    "",
+    " ",
+    "=",
+    "==",
+    "[",
+    "[1,2]",
+    "[,]",
+    "\u{feff}1",
+    "é",
+    "jitter",
+    "hex",
+    "sobol",
+    "halton",
+    "best-candidate",
+    "poisson-dart",
+    "gaussian",
+    "mitchell",
+    "windowed-sinc",
+    "zone-plate",
+    "polygon",
+    "sum-of-sines",
+    "radial",
+    "separable",
+    "png",
+    "svg,csv",
+    "jpeg",
+];
+const SETTINGS: &[&str] = &[
+    "amount=",
+    "cols=",
+    "m=",
+    "radius=",
+    "k=",
+    "base_x=",
+    "base_y=",
+    "skip=",
+    "scramble=",
+    "rows=",
+    "dims=",
+    "x_dim=",
+    "sigma=",
+    "b=",
+    "c=",
+    "window=",
+    "beta=",
+    "shape=",
+    "amps=",
+    "freqs=",
+    "bogus=",
+    "",
+    "=",
+];
+const SUBCOMMANDS: &[&str] = &["points", "analyze", "filter", "recon", "render"];
+const FLAGS: &[&str] = &[
+    "-n",
+    "--seed",
+    "--size",
+    "--realizations",
+    "--tolerance",
+    "--exact",
+    "--normalize",
+    "--mode",
+    "--json",
+    "--list",
+    "--spp",
+    "--signal",
+    "--pattern",
+    "--filter",
+    "--scale",
+    "--format",
+    "--sphere",
+    "--estimate",
+    "--points",
+    "--out",
+    "--spectrum",
+    "--raps",
+    "--response",
+    "--no-cache",
+    "--bogus",
+];
+const SET_FLAGS: &[&str] = &["--set", "--filter-set", "--signal-set"];
+
+/// One argument: a flag with or without a value, a setting, or a bare value.
+fn arg() -> impl Strategy<Value = Vec<String>> {
+    let value = proptest::sample::select(VALUES).prop_map(str::to_string);
+    prop_oneof![
+        (proptest::sample::select(FLAGS), value.clone()).prop_map(|(f, v)| vec![f.into(), v]),
+        proptest::sample::select(FLAGS).prop_map(|f| vec![f.to_string()]),
+        (
+            proptest::sample::select(SET_FLAGS),
+            proptest::sample::select(SETTINGS),
+            value.clone()
+        )
+            .prop_map(|(f, k, v)| vec![f.into(), format!("{k}{v}")]),
+        value.prop_map(|v| vec![v]),
+    ]
+}
+
+fn command_line() -> impl Strategy<Value = Vec<String>> {
+    (
+        proptest::sample::select(SUBCOMMANDS),
+        proptest::sample::select(VALUES),
+        proptest::collection::vec(arg(), 0..6),
+    )
+        .prop_map(|(sub, first, rest)| {
+            let mut v = vec![sub.to_string(), first.to_string()];
+            v.extend(rest.into_iter().flatten());
+            v
+        })
+}
+
+fn temp_dir(name: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("samplescope-fuzz-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+/// Runs the binary in `dir` (relative outputs land there), killing it after `limit`.
+fn run(dir: &PathBuf, args: &[String], limit: Duration) -> Result<(Option<i32>, String), String> {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_samplescope"))
+        .arg("--budget")
+        .arg("2")
+        .args(args)
+        .current_dir(dir)
+        .env("DISPLAY", "")
+        .env("WAYLAND_DISPLAY", "")
+        .stdin(Stdio::null())
+        .stdout(Stdio::null())
+        .stderr(Stdio::piped())
+        .spawn()
+        .map_err(|e| e.to_string())?;
+    let start = Instant::now();
+    loop {
+        if let Some(status) = child.try_wait().map_err(|e| e.to_string())? {
+            let mut err = String::new();
+            if let Some(mut s) = child.stderr.take() {
+                use std::io::Read;
+                let _ = s.read_to_string(&mut err);
+            }
+            return Ok((status.code(), err));
+        }
+        if start.elapsed() > limit {
+            let _ = child.kill();
+            let _ = child.wait();
+            return Err(format!("still running after {limit:?}"));
+        }
+        std::thread::sleep(Duration::from_millis(5));
+    }
+}
+
+#[test]
+fn generated_command_lines_end_with_a_documented_status_and_never_panic() {
+    let dir = temp_dir("cli");
+    std::fs::write(dir.join("scene.ron"), BUILTIN[0].1).unwrap();
+    let statuses = std::cell::RefCell::new(std::collections::BTreeMap::new());
+    runner(160, 7)
+        .run(&command_line(), |args| {
+            let (code, err) = run(&dir, &args, Duration::from_secs(30))
+                .map_err(|e| TestCaseError::fail(format!("{args:?}: {e}")))?;
+            *statuses.borrow_mut().entry(code).or_insert(0) += 1;
+            prop_assert!(
+                matches!(code, Some(0) | Some(1) | Some(2)),
+                "{args:?}: status {code:?}\n{err}"
+            );
+            prop_assert!(!err.contains("panicked"), "{args:?}: {err}");
+            if code != Some(0) {
+                // Errors are short: at most a usage block from clap or one line of ours.
+                prop_assert!(err.len() < 4000, "{args:?}: {} bytes on stderr", err.len());
+            }
+            Ok(())
+        })
+        .unwrap();
+    // The generator reaches both success and refusal.
+    assert!(
+        statuses.borrow().get(&Some(2)).copied().unwrap_or(0) > 20,
+        "{:?}",
+        statuses.borrow()
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// A shipped scene text with a few random edits: spans deleted, duplicated or replaced by
+/// tokens that break the syntax or push a value out of range.
+fn mutated_scene() -> impl Strategy<Value = String> {
+    const TOKENS: &[&str] = &[
+        "(",
+        ")",
+        "[",
+        "]",
+        "{",
+        "}",
+        ",",
+        ":",
+        "\"",
+        "'",
+        "r#\"",
+        "//",
+        "/*",
+        "Some(",
+        "None",
+        "1e999",
+        "-1",
+        "NaN",
+        "0",
+        "4294967296",
+        "18446744073709551616",
+        "kind: \"hex\"",
+        "kind: \"jiter\"",
+        "n: 0",
+        "n: 16777216",
+        "size: 1",
+        "spp: 5000",
+        "points: Some((path: \"/dev/zero\"))",
+        "elementary_k: Some(99)",
+        "\u{0}",
+        "é",
+        "\u{feff}",
+        "true",
+        "false",
+        "mode: radial",
+    ];
+    let n = BUILTIN.len();
+    (
+        0..n,
+        proptest::collection::vec(
+            (
+                0usize..10_000,
+                0usize..40,
+                0usize..3,
+                proptest::sample::select(TOKENS),
+            ),
+            1..4,
+        ),
+    )
+        .prop_map(move |(i, edits)| {
+            let mut text: Vec<char> = BUILTIN[i].1.chars().collect();
+            for (at, len, op, token) in edits {
+                let at = at % (text.len() + 1);
+                let end = (at + len).min(text.len());
+                match op {
+                    0 => {
+                        text.drain(at..end);
+                    }
+                    1 => {
+                        let span: Vec<char> = text[at..end].to_vec();
+                        for (k, c) in span.into_iter().enumerate() {
+                            text.insert(at + k, c);
+                        }
+                    }
+                    _ => {
+                        text.splice(at..end, token.chars());
+                    }
+                }
+            }
+            text.into_iter().collect()
+        })
+}
+
+#[test]
+fn mutated_scene_texts_load_or_fail_cleanly_and_quickly() {
+    let loaded = std::cell::Cell::new(0);
+    let refused = std::cell::Cell::new(0);
+    runner(400, 11)
+        .run(&mutated_scene(), |text| {
+            let start = Instant::now();
+            match Scene::from_ron(&text, "fuzz.ron") {
+                Ok(scene) => {
+                    loaded.set(loaded.get() + 1);
+                    // A scene that loads is valid, has a finite cost estimate, and survives
+                    // its own text.
+                    scene
+                        .validate("fuzz.ron")
+                        .map_err(|e| TestCaseError::fail(e.to_string()))?;
+                    let plan = samplescope::scene::cost::estimate(&scene);
+                    prop_assert!(plan.iter().all(|e| e.seconds >= 0.0 && e.bytes >= 0.0));
+                    let again = Scene::from_ron(&scene.to_ron(), "again.ron")
+                        .map_err(|e| TestCaseError::fail(format!("round trip: {e}")))?;
+                    prop_assert_eq!(again, scene);
+                }
+                Err(e) => {
+                    refused.set(refused.get() + 1);
+                    let msg = e.to_string();
+                    prop_assert!(msg.starts_with("fuzz.ron"), "{msg}");
+                    prop_assert!(!msg.contains('\n'), "one line: {msg}");
+                }
+            }
+            prop_assert!(
+                start.elapsed() < Duration::from_secs(2),
+                "took {:?}",
+                start.elapsed()
+            );
+            Ok(())
+        })
+        .unwrap();
+    assert!(
+        loaded.get() > 10 && refused.get() > 100,
+        "loaded {}, refused {}",
+        loaded.get(),
+        refused.get()
+    );
+}
