@@ -116,7 +116,7 @@ pub enum MetricsError {
     )]
     OutOfRange { index: usize, x: f64, y: f64 },
     /// A 1D value is NaN, infinite or outside [0, 1].
-    #[error("value {index} = {value}: 1D values must be finite numbers in [0, 1]")]
+    #[error("value {index} = {}: 1D values must be finite numbers in [0, 1]", crate::core::params::fmt_num(*.value))]
     ValueOutOfRange { index: usize, value: f64 },
     /// The number of points is not a power of the base (t-values are defined for N = b^m).
     #[error("n = {n} is not a power of base {base}: a t-value needs n = base^m points")]

@@ -78,7 +78,7 @@ pub enum PatternError {
         allowed: String,
     },
     /// A Poisson-disk radius too large for `n` points on the unit torus.
-    #[error("{pattern}.radius = {radius}: {n} points need radius ≤ {max} (hexagonal packing bound √(2/(√3·n)))")]
+    #[error("{pattern}.radius = {}: {n} points need radius ≤ {} (hexagonal packing bound √(2/(√3·n)))", crate::core::params::fmt_num(*.radius), crate::core::params::fmt_num(*.max))]
     RadiusTooLarge {
         pattern: &'static str,
         radius: f64,

@@ -130,7 +130,7 @@ pub enum ReconError {
         per: &'static str,
     },
     /// An input value is NaN or infinite.
-    #[error("{field}[{index}] = {value}: must be finite")]
+    #[error("{field}[{index}] = {}: must be finite", crate::core::params::fmt_num(*.value))]
     NonFinite {
         field: &'static str,
         index: usize,

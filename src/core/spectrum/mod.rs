@@ -89,7 +89,7 @@ pub enum SpectrumError {
     #[error("size m = {m}: must be an integer in {min}..={max}")]
     InvalidSize { m: usize, min: usize, max: usize },
     /// The NUFFT tolerance is NaN or out of range.
-    #[error("tolerance = {value}: must be a number in [{min:e}, {max:e}]")]
+    #[error("tolerance = {}: must be a number in [{min:e}, {max:e}]", crate::core::params::fmt_num(*.value))]
     InvalidTolerance { value: f64, min: f64, max: f64 },
     /// The number of realizations K is out of range.
     #[error("realizations K = {k}: must be an integer in 1..={max}")]
