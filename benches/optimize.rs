@@ -1,2 +1,313 @@
-//! (being written)
-fn main() {}
+//! Speed of the iterative blue-noise samplers (Lloyd, sliced optimal transport, Gaussian blue
+//! noise), each against references measured in the same run. Criterion measures the fast paths;
+//! a table printed at the end gives medians of wall time measured here with `Instant` (and the
+//! thread's CPU time), the target and the ratios.
+//!
+//! ```text
+//! cargo bench --bench optimize -- --warm-up-time 1 --measurement-time 3
+//! cargo bench --bench optimize -- lloyd_1024        # one benchmark (substring filter)
+//! cargo bench --bench optimize -- sot_1024
+//! cargo bench --bench optimize -- gbn_1024
+//! ```
+//!
+//! | benchmark | fast path | references | target |
+//! |---|---|---|---|
+//! | `lloyd_1024` | `lloyd`, N = 1024, 50 iterations | `lloyd_naive` (512² raster), 1 iteration; the same run on 1 thread; white noise | ≤ 100 ms |
+//! | `sot_1024` | `sot`, N = 1024, 64 iterations × 32 directions (defaults) | the same run on 1 thread; white noise | ≤ 200 ms |
+//! | `gbn_1024` | `gbn`, N = 1024, default iterations and σ | the same run on 1 thread; white noise | — (report) |
+//!
+//! The CPU column is the calling thread's CPU time: for the multi-threaded runs it misses the
+//! work of rayon's other threads, so compare their wall times.
+
+use criterion::Criterion;
+use samplescope::core::cancel::Cancel;
+use samplescope::core::pattern::optimize::{
+    gbn, lloyd, lloyd_naive, sot, GBN_DEFAULT_ITERATIONS, LLOYD_DEFAULT_ITERATIONS,
+    SOT_DEFAULT_DIRECTIONS, SOT_DEFAULT_ITERATIONS,
+};
+use samplescope::core::rng::Rng;
+use std::hint::black_box;
+use std::sync::Mutex;
+use std::time::Instant;
+
+const N: usize = 1024;
+const SEED: u64 = 1;
+
+/// One line of the printed table.
+struct Row {
+    what: String,
+    ms: Timing,
+    target: String,
+    versus: String,
+}
+
+static ROWS: Mutex<Vec<Row>> = Mutex::new(Vec::new());
+
+fn push(row: Row) {
+    if let Ok(mut rows) = ROWS.lock() {
+        rows.push(row);
+    }
+}
+
+/// Medians in ms: wall time and this thread's CPU time.
+#[derive(Clone, Copy)]
+struct Timing {
+    wall: f64,
+    cpu: f64,
+}
+
+/// CPU time of the calling thread in ms (`clock_gettime(CLOCK_THREAD_CPUTIME_ID)`), NaN where
+/// unavailable.
+#[cfg(target_os = "linux")]
+fn thread_cpu_ms() -> f64 {
+    #[repr(C)]
+    struct Timespec {
+        tv_sec: i64,
+        tv_nsec: i64,
+    }
+    extern "C" {
+        fn clock_gettime(clock: i32, tp: *mut Timespec) -> i32;
+    }
+    const CLOCK_THREAD_CPUTIME_ID: i32 = 3;
+    let mut t = Timespec {
+        tv_sec: 0,
+        tv_nsec: 0,
+    };
+    // SAFETY: `t` is a valid, writable timespec; the clock id is Linux's thread CPU clock.
+    let rc = unsafe { clock_gettime(CLOCK_THREAD_CPUTIME_ID, &mut t) };
+    if rc != 0 {
+        return f64::NAN;
+    }
+    t.tv_sec as f64 * 1e3 + t.tv_nsec as f64 * 1e-6
+}
+
+#[cfg(not(target_os = "linux"))]
+fn thread_cpu_ms() -> f64 {
+    f64::NAN
+}
+
+/// Median wall and CPU times in ms of `reps` runs (after one warm-up run).
+fn median_ms(reps: usize, mut f: impl FnMut()) -> Timing {
+    f();
+    let mut wall = Vec::with_capacity(reps);
+    let mut cpu = Vec::with_capacity(reps);
+    for _ in 0..reps {
+        let (c0, start) = (thread_cpu_ms(), Instant::now());
+        f();
+        wall.push(start.elapsed().as_secs_f64() * 1e3);
+        cpu.push(thread_cpu_ms() - c0);
+    }
+    wall.sort_by(f64::total_cmp);
+    cpu.sort_by(f64::total_cmp);
+    Timing {
+        wall: wall[reps / 2],
+        cpu: cpu[reps / 2],
+    }
+}
+
+/// `f` inside a one-thread rayon pool (the single-threaded reference).
+fn single_thread<T: Send>(f: impl FnOnce() -> T + Send) -> T {
+    match rayon::ThreadPoolBuilder::new().num_threads(1).build() {
+        Ok(pool) => pool.install(f),
+        Err(_) => f(),
+    }
+}
+
+/// The benchmark filter given on the command line (criterion's first positional argument), if any.
+fn filter() -> Option<String> {
+    const WITH_VALUE: &[&str] = &[
+        "--warm-up-time",
+        "--measurement-time",
+        "--sample-size",
+        "--save-baseline",
+        "-s",
+        "--baseline",
+        "-b",
+        "--baseline-lenient",
+        "--load-baseline",
+        "--output-format",
+        "--plotting-backend",
+        "--color",
+        "-c",
+        "--significance-level",
+        "--confidence-level",
+        "--nresamples",
+        "--noise-threshold",
+        "--profile-time",
+        "--format",
+    ];
+    let mut args = std::env::args().skip(1);
+    while let Some(a) = args.next() {
+        if WITH_VALUE.contains(&a.as_str()) {
+            args.next();
+        } else if !a.starts_with('-') {
+            return Some(a);
+        }
+    }
+    None
+}
+
+fn selected(id: &str) -> bool {
+    filter().is_none_or(|f| id.contains(&f))
+}
+
+/// "w ms wall / c ms cpu".
+fn both(t: Timing) -> String {
+    format!("{:.3} ms wall / {:.3} ms cpu", t.wall, t.cpu)
+}
+
+/// White noise of N points (the common start of the three samplers), median of 21 runs.
+fn white_noise_ms() -> Timing {
+    median_ms(21, || {
+        let mut rng = Rng::new(SEED);
+        let v: Vec<(f64, f64)> = (0..N).map(|_| (rng.next_f64(), rng.next_f64())).collect();
+        black_box(v);
+    })
+}
+
+fn target(t: Timing, ms: f64) -> String {
+    format!("≤ {ms} ms: {:.2}× (wall)", t.wall / ms)
+}
+
+fn lloyd_1024(c: &mut Criterion) {
+    if !selected("lloyd_1024") {
+        return;
+    }
+    let never = Cancel::never();
+    let it = LLOYD_DEFAULT_ITERATIONS;
+    let mut group = c.benchmark_group("lloyd_1024");
+    group.sample_size(20);
+    group.bench_function("exact", |b| {
+        b.iter(|| lloyd(black_box(N), it, SEED, &never, &mut |_, _| {}))
+    });
+    group.finish();
+    let fast = median_ms(11, || {
+        black_box(lloyd(N, it, SEED, &never, &mut |_, _| {}).ok());
+    });
+    let one = single_thread(|| {
+        median_ms(11, || {
+            black_box(lloyd(N, it, SEED, &never, &mut |_, _| {}).ok());
+        })
+    });
+    let naive = median_ms(3, || {
+        black_box(lloyd_naive(N, 1, SEED, &never, &mut |_, _| {}).ok());
+    });
+    let white = white_noise_ms();
+    push(Row {
+        what: format!("Lloyd N = {N}, {it} iterations"),
+        ms: fast,
+        target: target(fast, 100.0),
+        versus: format!(
+            "1 thread: {}; lloyd_naive (512² raster) 1 iteration: {} (= {:.1}× a whole exact \
+             run of {it}); white noise: {}",
+            both(one),
+            both(naive),
+            naive.wall / fast.wall,
+            both(white)
+        ),
+    });
+}
+
+fn sot_1024(c: &mut Criterion) {
+    if !selected("sot_1024") {
+        return;
+    }
+    let never = Cancel::never();
+    let (it, dirs) = (SOT_DEFAULT_ITERATIONS, SOT_DEFAULT_DIRECTIONS);
+    let mut group = c.benchmark_group("sot_1024");
+    group.sample_size(20);
+    group.bench_function("defaults", |b| {
+        b.iter(|| sot(black_box(N), it, dirs, SEED, &never, &mut |_, _| {}))
+    });
+    group.finish();
+    let fast = median_ms(11, || {
+        black_box(sot(N, it, dirs, SEED, &never, &mut |_, _| {}).ok());
+    });
+    let one = single_thread(|| {
+        median_ms(11, || {
+            black_box(sot(N, it, dirs, SEED, &never, &mut |_, _| {}).ok());
+        })
+    });
+    let white = white_noise_ms();
+    push(Row {
+        what: format!("SOT N = {N}, {it} iterations × {dirs} directions"),
+        ms: fast,
+        target: target(fast, 200.0),
+        versus: format!(
+            "1 thread: {}; threads/1 thread {:.2}× wall; {:.2} µs per projection-sort of {N}; \
+             white noise: {}",
+            both(one),
+            fast.wall / one.wall,
+            one.wall * 1e3 / (it * dirs) as f64,
+            both(white)
+        ),
+    });
+}
+
+fn gbn_1024(c: &mut Criterion) {
+    if !selected("gbn_1024") {
+        return;
+    }
+    let never = Cancel::never();
+    let it = GBN_DEFAULT_ITERATIONS;
+    let mut group = c.benchmark_group("gbn_1024");
+    group.sample_size(10);
+    group.bench_function("defaults", |b| {
+        b.iter(|| gbn(black_box(N), it, 0.0, SEED, &never, &mut |_, _| {}))
+    });
+    group.finish();
+    let fast = median_ms(5, || {
+        black_box(gbn(N, it, 0.0, SEED, &never, &mut |_, _| {}).ok());
+    });
+    let one = single_thread(|| {
+        median_ms(5, || {
+            black_box(gbn(N, it, 0.0, SEED, &never, &mut |_, _| {}).ok());
+        })
+    });
+    let white = white_noise_ms();
+    push(Row {
+        what: format!("GBN N = {N}, {it} iterations, σ = 1 spacing"),
+        ms: fast,
+        target: "— (report)".into(),
+        versus: format!(
+            "1 thread: {}; threads/1 thread {:.2}× wall; {:.3} ms per iteration (1 thread); \
+             white noise: {}",
+            both(one),
+            fast.wall / one.wall,
+            one.wall / it as f64,
+            both(white)
+        ),
+    });
+}
+
+fn print_table() {
+    let Ok(rows) = ROWS.lock() else { return };
+    if rows.is_empty() {
+        return;
+    }
+    println!();
+    println!(
+        "medians of repeated runs in this process: wall time (Instant) and calling-thread CPU time \
+         ({} rayon threads)",
+        rayon::current_num_threads()
+    );
+    println!(
+        "{:<48} {:>10} {:>10}  {:<24} reference",
+        "benchmark", "wall ms", "cpu ms", "target (measured/target)"
+    );
+    for r in rows.iter() {
+        println!(
+            "{:<48} {:>10.3} {:>10.3}  {:<24} {}",
+            r.what, r.ms.wall, r.ms.cpu, r.target, r.versus
+        );
+    }
+}
+
+fn main() {
+    let mut c = Criterion::default().configure_from_args();
+    lloyd_1024(&mut c);
+    sot_1024(&mut c);
+    gbn_1024(&mut c);
+    c.final_summary();
+    print_table();
+}

@@ -74,6 +74,8 @@ pub enum Unit {
     Cells,
     /// Pixels (one closed-form value or one encoded pixel each).
     Pixels,
+    /// Point updates of an iterative sampler (points × iterations, × directions for SOT).
+    PointUpdates,
 }
 
 impl Unit {
@@ -91,6 +93,7 @@ impl Unit {
             Unit::Operations => "operations",
             Unit::Cells => "cells",
             Unit::Pixels => "pixels",
+            Unit::PointUpdates => "point updates",
         }
     }
 }
@@ -324,6 +327,22 @@ pub const DART_NS: f64 = 170.0;
 pub const BRIDSON_TRY_NS: f64 = 70.0;
 /// One point of the simple patterns (grid, random, jitter, hex, the sequences).
 const POINT_NS: f64 = 30.0;
+/// One pmj02 point (the strata bookkeeping of Pharr 2019).
+const PMJ02_POINT_NS: f64 = 300.0;
+/// One pmj02bn candidate (a draw and a nearest-neighbour query on the grid).
+const PMJ02BN_CANDIDATE_NS: f64 = 250.0;
+/// One generator of the rank-1 search for g = 0 (a 2D lattice reduction, ~log₂ N steps).
+const RANK1_GENERATOR_NS: f64 = 25.0;
+/// One Owen-scrambled Halton point (0.36 s for 2^20 points in bases 2, 3; 0.8 s in 17, 19).
+const HALTON_OWEN_POINT_NS: f64 = 800.0;
+/// One Lloyd point update (its share of the triangulation of ~n + 16√n points, its cell's
+/// centroid).
+const LLOYD_UPDATE_NS: f64 = 2_000.0;
+/// One SOT projection of a point on a direction (projection, its share of the sort, the
+/// quantile and the displacement).
+const SOT_UPDATE_NS: f64 = 100.0;
+/// One GBN point update (the Gaussian kernel over ~200 neighbours in the grid).
+const GBN_UPDATE_NS: f64 = 1_500.0;
 /// One point of the shuffling patterns (N-rooks, multi-jitter, correlated multi-jitter).
 const SHUFFLE_POINT_NS: f64 = 150.0;
 /// One call of a pattern (checks, allocation): matters for per-pixel patterns.
@@ -443,6 +462,58 @@ fn pattern_cost(p: &Pattern, n: usize) -> (f64, Unit, f64, f64) {
             let secs = nf * dims * cpu(POINT_NS) + call + touch(bytes);
             (nf, Unit::Points, secs, bytes)
         }
+        Pattern::Pmj02(_) => {
+            let bytes = points_bytes + 24.0 * nf;
+            (
+                nf,
+                Unit::Points,
+                nf * cpu(PMJ02_POINT_NS) + call + touch(bytes),
+                bytes,
+            )
+        }
+        Pattern::Pmj02bn(p) => {
+            let c = nf * f64::from(p.candidates.max(1));
+            let bytes = points_bytes + 40.0 * nf;
+            let secs = nf * cpu(PMJ02_POINT_NS) + c * cpu(PMJ02BN_CANDIDATE_NS) + call;
+            (c, Unit::Candidates, secs + touch(bytes), bytes)
+        }
+        Pattern::Rank1(r) if r.g == 0 => {
+            let generators = (nf / 2.0).max(1.0);
+            let secs = generators * nf.max(2.0).log2() * cpu(RANK1_GENERATOR_NS)
+                + nf * cpu(POINT_NS)
+                + call;
+            (
+                generators,
+                Unit::Candidates,
+                secs + touch(points_bytes),
+                points_bytes,
+            )
+        }
+        Pattern::Halton(h) if h.scramble == pattern::halton_scramble::HaltonScramble::Owen => {
+            // One hashed node permutation per digit of both coordinates.
+            let secs = nf * cpu(HALTON_OWEN_POINT_NS) + call + touch(points_bytes);
+            (nf, Unit::Points, secs, points_bytes)
+        }
+        Pattern::Lloyd(l) => {
+            let updates = nf * f64::from(l.iterations);
+            // The replicated points' triangulation: ~n + 16√n vertices, ~2 triangles each.
+            let bytes = points_bytes + 120.0 * (nf + 16.0 * nf.sqrt());
+            let secs = updates * cpu(LLOYD_UPDATE_NS) + call + touch(bytes);
+            (updates, Unit::PointUpdates, secs, bytes)
+        }
+        Pattern::Sot(s) => {
+            let updates = nf * f64::from(s.iterations) * f64::from(s.directions);
+            let log = nf.max(2.0).log2() / 10.0;
+            let bytes = points_bytes * 4.0;
+            let secs = updates * log.max(1.0) * cpu(SOT_UPDATE_NS) / REFERENCE_CORES + call;
+            (updates, Unit::PointUpdates, secs + touch(bytes), bytes)
+        }
+        Pattern::Gbn(g) => {
+            let updates = nf * f64::from(g.iterations);
+            let bytes = points_bytes * 4.0 + 8.0 * nf;
+            let secs = updates * cpu(GBN_UPDATE_NS) / REFERENCE_CORES + call + touch(bytes);
+            (updates, Unit::PointUpdates, secs, bytes)
+        }
         Pattern::NRooks(_) | Pattern::MultiJitter(_) | Pattern::CorrelatedMultiJitter(_) => {
             let bytes = points_bytes + 8.0 * nf;
             (
@@ -475,6 +546,14 @@ fn pattern_label(p: &Pattern, n: usize) -> String {
             format_significant(resolved_radius(b.radius, n), 6),
             b.k
         ),
+        Pattern::Pmj02bn(p) => format!("pmj02bn n = {n}, candidates = {}", p.candidates),
+        Pattern::Rank1(r) if r.g == 0 => format!("rank1 n = {n}, g = 0 (generator search)"),
+        Pattern::Lloyd(l) => format!("lloyd n = {n}, iterations = {}", l.iterations),
+        Pattern::Sot(s) => format!(
+            "sot n = {n}, iterations = {}, directions = {}",
+            s.iterations, s.directions
+        ),
+        Pattern::Gbn(g) => format!("gbn n = {n}, iterations = {}", g.iterations),
         other => format!("{} n = {n}", other.name()),
     }
 }

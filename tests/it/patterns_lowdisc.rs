@@ -280,6 +280,7 @@ fn halton_and_hammersley_equal_radical_inverse_bit_for_bit() {
         base_x: 7907,
         base_y: 3,
         skip: 4_000_000_000,
+        ..Halton::default()
     };
     let pts = lowdisc::halton(&h, 5000).unwrap();
     for (j, p) in pts.iter().enumerate() {
@@ -600,6 +601,7 @@ fn halton_equal_bases_are_rejected() {
                 base_x: 5,
                 base_y: 5,
                 skip: 0,
+                ..Halton::default()
             },
             8,
         ),
@@ -644,6 +646,7 @@ fn all_lowdisc_patterns() -> Vec<Pattern> {
             base_x: 7907,
             base_y: 7919,
             skip: u32::MAX - 5000,
+            ..Halton::default()
         }),
         Pattern::Hammersley(Hammersley { p1: 2 }),
         Pattern::Hammersley(Hammersley { p1: 11 }),

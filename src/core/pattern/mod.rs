@@ -264,6 +264,7 @@ declare_params! {
         base_x: int(2, 2, 7919, "base of x (a prime ≤ 7919)"),
         base_y: int(3, 2, 7919, "base of y (a prime ≤ 7919)"),
         skip: int(0, 0, u32::MAX, "index of the first point"),
+        scramble: choice(halton_scramble::HaltonScramble, "none | permute (random digit permutations per digit position, pbrt-v4) | owen (nested uniform scrambling in each base)"),
     }
 }
 declare_params! {
@@ -291,6 +292,56 @@ declare_params! {
     Sobol = "sobol", "Sobol' (0,2)-sequence (first two dimensions), optionally scrambled" {
         scramble: choice(Scramble, "none | random-digit (XOR) | owen (nested uniform, hash-based)"),
         skip: int(0, 0, u32::MAX, "index of the first point (a multiple of 2^m keeps the (0,m,2)-net property)"),
+    }
+}
+declare_params! {
+    /// Progressive multi-jittered (0,2) sequence (Christensen, Kensler, Kilpatrick 2018).
+    Pmj02 = "pmj02", "progressive multi-jittered (0,2) sequence (Christensen et al. 2018, Pharr 2019): every 2^k prefix is a (0,k,2)-net" {}
+}
+declare_params! {
+    /// PMJ02 with the blue-noise choice among valid candidates.
+    Pmj02bn = "pmj02bn", "pmj02 with blue noise: each point the farthest of `candidates` valid candidates; still a (0,k,2)-net at every 2^k prefix" {
+        candidates: int(10, 1, pmj::MAX_CANDIDATES, "valid candidates tried per point (1 = pmj02)"),
+    }
+}
+declare_params! {
+    /// The rank-1 Fibonacci lattice.
+    Fibonacci = "fibonacci", "Fibonacci lattice x_i = (i/F_k, frac(i·F_(k−1)/F_k)); N must be a Fibonacci number" {
+        shift: flag(false, "Cranley–Patterson rotation by a seeded uniform shift (mod 1)"),
+    }
+}
+declare_params! {
+    /// Korobov rank-1 lattice.
+    Rank1 = "rank1", "Korobov lattice x_i = (i/N, frac(i·g/N)); g = 0 picks the generator with the largest minimum distance" {
+        g: int(0, 0, MAX_N, "generator g in 1..N−1 (g coprime to N gives N distinct rows); 0 = the best coprime g (largest toroidal minimum distance, each g ≤ N/2 by 2D lattice reduction: O(N log N), 0.1 s at N = 2^20)"),
+        shift: flag(false, "Cranley–Patterson rotation by a seeded uniform shift (mod 1)"),
+    }
+}
+declare_params! {
+    /// The R2 sequence (Roberts 2018).
+    Kronecker = "kronecker", "R2 sequence x_i = frac(s + i·α), α = (1/φ₂, 1/φ₂²), φ₂ the plastic number (Roberts 2018); progressive" {
+        offset_x: float(0.5, 0.0, ONE_MINUS_EPSILON, "offset s_x in [0, 1)"),
+        offset_y: float(0.5, 0.0, ONE_MINUS_EPSILON, "offset s_y in [0, 1)"),
+    }
+}
+declare_params! {
+    /// Centroidal Voronoi tessellation by Lloyd relaxation on the torus.
+    Lloyd = "lloyd", "Lloyd relaxation on the torus from white noise: each step moves every point to the centroid of its exact Voronoi cell" {
+        iterations: int(optimize::LLOYD_DEFAULT_ITERATIONS, 0, optimize::LLOYD_MAX_ITERATIONS, "relaxation steps"),
+    }
+}
+declare_params! {
+    /// Sliced optimal transport sampling (Paulin et al. 2020).
+    Sot = "sot", "sliced optimal transport (Paulin et al. 2020): 1D transport to the exact projections of the uniform square along random directions" {
+        iterations: int(optimize::SOT_DEFAULT_ITERATIONS, 0, optimize::SOT_MAX_ITERATIONS, "steps"),
+        directions: int(optimize::SOT_DEFAULT_DIRECTIONS, 1, optimize::SOT_MAX_DIRECTIONS, "random directions per step"),
+    }
+}
+declare_params! {
+    /// Gaussian blue noise (Ahmed, Ren, Wonka 2022).
+    Gbn = "gbn", "Gaussian blue noise (Ahmed, Ren, Wonka 2022): gradient descent on Σ exp(−d²/2σ²) over toroidal pairs" {
+        iterations: int(optimize::GBN_DEFAULT_ITERATIONS, 0, optimize::GBN_MAX_ITERATIONS, "gradient steps"),
+        sigma: float(0.0, 0.0, 1.0, "kernel width σ in mean spacings 1/√n; 0 = the default (1)"),
     }
 }
 
@@ -344,6 +395,14 @@ patterns!(
     HaltonZaremba = "halton-zaremba",
     HammersleyZaremba = "hammersley-zaremba",
     Sobol = "sobol",
+    Pmj02 = "pmj02",
+    Pmj02bn = "pmj02bn",
+    Fibonacci = "fibonacci",
+    Rank1 = "rank1",
+    Kronecker = "kronecker",
+    Lloyd = "lloyd",
+    Sot = "sot",
+    Gbn = "gbn",
 );
 
 impl Default for Pattern {
@@ -378,7 +437,11 @@ impl Pattern {
                 | Pattern::Hammersley(_)
                 | Pattern::HaltonZaremba(_)
                 | Pattern::HammersleyZaremba(_)
+                | Pattern::Kronecker(_)
         ) && !matches!(self, Pattern::Sobol(s) if s.scramble == Scramble::None)
+            && !matches!(self, Pattern::Halton(h) if h.scramble == halton_scramble::HaltonScramble::None)
+            && !matches!(self, Pattern::Fibonacci(f) if !f.shift)
+            && !matches!(self, Pattern::Rank1(r) if !r.shift)
             && !matches!(self, Pattern::Jitter(j) if j.amount == 0.0)
             && !matches!(self, Pattern::Hex(h) if h.amount == 0.0)
     }
@@ -393,6 +456,9 @@ impl Pattern {
                 | Pattern::Halton(_)
                 | Pattern::HaltonZaremba(_)
                 | Pattern::Sobol(_)
+                | Pattern::Pmj02(_)
+                | Pattern::Pmj02bn(_)
+                | Pattern::Kronecker(_)
         )
     }
 
@@ -425,11 +491,35 @@ impl Pattern {
             Pattern::PoissonBridson(p) => return poisson::bridson(p, n, seed, cancel),
             Pattern::BestCandidate(p) => best_candidate::best_candidate(p, n, seed, cancel)?,
             Pattern::VanDerCorput(p) => lowdisc::van_der_corput(p, n)?,
-            Pattern::Halton(p) => lowdisc::halton(p, n)?,
+            Pattern::Halton(p) if p.scramble == halton_scramble::HaltonScramble::None => {
+                lowdisc::halton(p, n)?
+            }
+            Pattern::Halton(p) => halton_scramble::scrambled_halton_with(
+                p.base_x, p.base_y, p.skip, p.scramble, n, seed, cancel,
+            )?,
             Pattern::Hammersley(p) => lowdisc::hammersley(p, n)?,
             Pattern::HaltonZaremba(p) => lowdisc::halton_zaremba(p, n)?,
             Pattern::HammersleyZaremba(p) => lowdisc::hammersley_zaremba(p, n)?,
             Pattern::Sobol(p) => lowdisc::sobol(p, n, seed)?,
+            Pattern::Pmj02(_) => pmj::pmj02(n, seed, cancel)?,
+            Pattern::Pmj02bn(p) => pmj::pmj02bn(n, seed, p.candidates, cancel)?,
+            Pattern::Fibonacci(p) => lattice::fibonacci(n, p.shift, seed)?,
+            Pattern::Rank1(p) => lattice::rank1_with(n, p.g, p.shift, seed, cancel)?,
+            Pattern::Kronecker(p) => {
+                lattice::kronecker(n, DVec2::new(p.offset_x, p.offset_y))?
+            }
+            Pattern::Lloyd(p) => optimize::lloyd(n, p.iterations, seed, cancel, &mut |_, _| {})?,
+            Pattern::Sot(p) => optimize::sot(
+                n,
+                p.iterations,
+                p.directions,
+                seed,
+                cancel,
+                &mut |_, _| {},
+            )?,
+            Pattern::Gbn(p) => {
+                optimize::gbn(n, p.iterations, p.sigma, seed, cancel, &mut |_, _| {})?
+            }
         };
         debug_assert!(points
             .iter()
