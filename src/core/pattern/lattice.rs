@@ -115,16 +115,30 @@ fn fibonacci_error(n: usize) -> PatternError {
         .collect();
     let below = allowed.iter().copied().filter(|&x| x < n as u64).max();
     let above = allowed.iter().copied().find(|&x| x > n as u64);
-    let why = match (below, above) {
-        (None, _) => "; the Fibonacci lattice needs N = F_k ≥ 2: the smallest is 2".to_string(),
+    let allowed = match (below, above) {
+        (None, _) => {
+            "a Fibonacci number F_k ≥ 2 (the Fibonacci lattice needs N = F_k): the smallest is 2"
+                .to_string()
+        }
         (Some(b), Some(a)) => {
-            format!("; the Fibonacci lattice needs N = F_k: nearest are {b} and {a}")
+            format!("a Fibonacci number F_k (the Fibonacci lattice needs N = F_k): nearest are {b} and {a}")
         }
         (Some(b), None) => {
-            format!("; the Fibonacci lattice needs N = F_k ≤ {MAX_N}: the largest is {b}")
+            format!("a Fibonacci number F_k ≤ {MAX_N} (the Fibonacci lattice needs N = F_k): the largest is {b}")
         }
     };
-    PatternError::InvalidN { n, max: MAX_N, why }
+    if n == 0 || n > MAX_N {
+        return PatternError::InvalidN {
+            n,
+            max: MAX_N,
+            why: format!("; {allowed}"),
+        };
+    }
+    PatternError::UnsupportedN {
+        pattern: FIBONACCI_NAME,
+        n,
+        allowed,
+    }
 }
 
 /// The Korobov lattice x_i = (i/N, frac(i·g/N)), i = 0..N (module docs); `g = 0` uses
@@ -146,10 +160,12 @@ pub fn rank1_with(
 ) -> Result<Vec<DVec2>, PatternError> {
     check_n(n, MAX_N)?;
     if n < 2 {
-        return Err(PatternError::InvalidN {
+        return Err(PatternError::UnsupportedN {
+            pattern: RANK1_NAME,
             n,
-            max: MAX_N,
-            why: "; a rank-1 lattice needs N ≥ 2 (a generator in 1..N)".into(),
+            allowed: format!(
+                "an integer in 2..={MAX_N} (a rank-1 lattice needs a generator in 1..N)"
+            ),
         });
     }
     let g = if g == 0 {
@@ -530,10 +546,10 @@ mod tests {
         let e = fibonacci(1000, false, 0).unwrap_err();
         assert!(
             e.to_string()
-                .contains("the Fibonacci lattice needs N = F_k: nearest are 987 and 1597"),
+                .contains("the Fibonacci lattice needs N = F_k): nearest are 987 and 1597"),
             "{e}"
         );
-        assert!(matches!(e, PatternError::InvalidN { n: 1000, .. }));
+        assert!(matches!(e, PatternError::UnsupportedN { n: 1000, .. }));
         for n in [0usize, 1] {
             let e = fibonacci(n, false, 0).unwrap_err();
             assert!(e.to_string().contains("the smallest is 2"), "{e}");
@@ -566,7 +582,7 @@ mod tests {
         assert!(rank1(10, u32::MAX, false, 0).is_err());
         assert!(matches!(
             rank1(1, 0, false, 0),
-            Err(PatternError::InvalidN { n: 1, .. })
+            Err(PatternError::UnsupportedN { n: 1, .. })
         ));
         assert!(rank1(0, 1, false, 0).is_err());
         assert!(rank1(MAX_N + 1, 1, false, 0).is_err());

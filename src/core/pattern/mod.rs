@@ -9,7 +9,10 @@
 //! | stratified | [`stratified`] | grid, random, jitter, nrooks, lhs, multijitter, cmj |
 //! | lattice | [`hex`] | hex |
 //! | blue noise | [`poisson`], [`best_candidate`] | poisson-dart, poisson-bridson, best-candidate |
-//! | low discrepancy | [`lowdisc`], [`radical_inverse`] | van-der-corput, halton, hammersley, halton-zaremba, hammersley-zaremba, sobol |
+//! | low discrepancy | [`lowdisc`], [`radical_inverse`], [`halton_scramble`] | van-der-corput, halton (plain, permuted or Owen-scrambled digits), hammersley, halton-zaremba, hammersley-zaremba, sobol |
+//! | progressive multi-jittered | [`pmj`] | pmj02, pmj02bn |
+//! | lattices | [`lattice`] | fibonacci, rank1 (Korobov, best generator), kronecker (R2) |
+//! | optimised blue noise | [`optimize`] | lloyd (CVT on the torus), sot (sliced optimal transport), gbn (Gaussian blue noise) |
 //!
 //! [`sphere`] maps any 2D pattern onto the unit sphere.
 //!
