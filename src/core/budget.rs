@@ -337,12 +337,14 @@ const RANK1_GENERATOR_NS: f64 = 25.0;
 const HALTON_OWEN_POINT_NS: f64 = 800.0;
 /// One Lloyd point update (its share of the triangulation of ~n + 16√n points, its cell's
 /// centroid).
-const LLOYD_UPDATE_NS: f64 = 2_000.0;
+/// (measured 22–31 ms for 1024 points × 50 iterations).
+const LLOYD_UPDATE_NS: f64 = 1_000.0;
 /// One SOT projection of a point on a direction (projection, its share of the sort, the
 /// quantile and the displacement).
 const SOT_UPDATE_NS: f64 = 100.0;
-/// One GBN point update (the Gaussian kernel over ~200 neighbours in the grid).
-const GBN_UPDATE_NS: f64 = 1_500.0;
+/// One GBN point update (the Gaussian kernel over ~200 neighbours in the grid; measured
+/// 1.2 s for 1024 points × 500 iterations on 2 cores).
+const GBN_UPDATE_NS: f64 = 5_000.0;
 /// One point of the shuffling patterns (N-rooks, multi-jitter, correlated multi-jitter).
 const SHUFFLE_POINT_NS: f64 = 150.0;
 /// One call of a pattern (checks, allocation): matters for per-pixel patterns.

@@ -17,7 +17,9 @@
 //! quantisation energy E = Σ_i ∫_{V_i} |x − p_i|² dx (moving p_i to the centroid minimises
 //! E for fixed cells, and recomputing the cells minimises it for fixed points), converging to a
 //! centroidal Voronoi tessellation, whose cells tend to regular hexagons.
-//! Recommended: [`LLOYD_DEFAULT_ITERATIONS`] = 50 (allowed 0..=1000).
+//! Recommended: [`LLOYD_DEFAULT_ITERATIONS`] = 50 (allowed 0..=1000): at n = 1024 it gives
+//! d_min/d_hex ≈ 0.78, mean nearest-neighbour distance ≈ 0.91 d_hex and E·n ≈ 0.1638 (the
+//! hexagonal optimum is 5/(18√3) ≈ 0.1604; 100 iterations: 0.80, 0.92, 0.1629).
 //!
 //! The cells are exact (up to rounding): a Delaunay triangulation ([`delaunator`]) of the points
 //! plus periodic copies p + (a, b), a, b ∈ {−2, …, 2}, kept when they lie in the band
@@ -68,8 +70,16 @@
 //! to the mean spacing 1/√n: σ = sigma/√n, with sigma = 0 meaning [`GBN_DEFAULT_SIGMA`] = 1, the
 //! default of the authors' periodic reference implementation (σ equal to the mean spacing).
 //! The step is the authors': x_i ← x_i + ¼ Σ_j Δ_ij exp(−d_ij²/(2σ²)) (Δ_ij the toroidal
-//! displacement x_i − x_j), i.e. gradient descent with step η = σ²/4, wrapped mod 1.
-//! Recommended: [`GBN_DEFAULT_ITERATIONS`] iterations (allowed 0..=10000); sigma is 0 or in (0, 1].
+//! displacement x_i − x_j), i.e. gradient descent with step η = σ²/4, wrapped mod 1. It is
+//! stable: the stiffest modes of E are density waves, of curvature ≈ 2π·(nσ²)·(2/e)/σ² ≈ 4.6/σ²
+//! at sigma = 1, so η times it is ≈ 1.16 < 2 (measured: twice the step, η = σ²/2, makes E
+//! grow). Convergence is slow (the energy is flat along many directions): at n = 1024,
+//! sigma = 1, d_min/d_hex reaches 0.06, 0.13, 0.39, 0.59, 0.61 after 50, 100, 200, 500, 1000
+//! iterations (mean nearest-neighbour distance 0.69 … 0.80 d_hex), while the low-frequency
+//! power is already below 10⁻⁴ of white noise's after 100. Recommended:
+//! [`GBN_DEFAULT_ITERATIONS`] = 500 (allowed 0..=10000). sigma is 0 or in (0, 1]; a narrower
+//! kernel converges faster to a larger minimum distance with less low-frequency suppression
+//! (sigma = 0.6: d_min/d_hex 0.83 after 500 iterations).
 //!
 //! The kernel is truncated at d = R = [`GBN_CUTOFF_SIGMAS`] σ = 8σ: each omitted pair changes E
 //! by less than e^{−32} ≈ 1.3·10⁻¹⁴ and a point's gradient by less than (8/σ)·e^{−32}, so
@@ -340,7 +350,11 @@ fn voronoi_with_band(points: &[DVec2], w: f64, accept: bool) -> Option<Vec<CellM
     }
     let mut cells = Vec::with_capacity(n);
     for i in 0..n {
-        let bad = !valid[i] || broken[i] || !(area[i].abs() > 0.0) || !second[i].is_finite();
+        let bad = !valid[i]
+            || broken[i]
+            || area[i] == 0.0
+            || !area[i].is_finite()
+            || !second[i].is_finite();
         if bad {
             if !accept {
                 return None;
@@ -374,8 +388,8 @@ pub fn voronoi_moments(points: &[DVec2]) -> Result<Vec<CellMoments>, PatternErro
 }
 
 /// The quantisation energy Σ_i ∫_{V_i} |x − p_i|² dx of `points` on the unit torus, from the
-/// exact Voronoi cells (Lloyd's objective; 1/(6n)·… ≈ 0.0802/n for a regular hexagonal
-/// tessellation). Errors as [`voronoi_moments`].
+/// exact Voronoi cells (Lloyd's objective; 5/(18√3·n) ≈ 0.1604/n for a regular hexagonal
+/// tessellation, ≈ 0.32/n for white noise). Errors as [`voronoi_moments`].
 pub fn lloyd_energy(points: &[DVec2]) -> Result<f64, PatternError> {
     Ok(voronoi_moments(points)?.iter().map(|c| c.energy).sum())
 }
