@@ -350,6 +350,14 @@ pub const BUILTIN: &[(&str, &str)] = &[
         include_str!("../../assets/scenes/two-columns.ron"),
     ),
     (
+        "frontier-blue-noise.ron",
+        include_str!("../../assets/scenes/frontier-blue-noise.ron"),
+    ),
+    (
+        "lattices-and-sequences.ron",
+        include_str!("../../assets/scenes/lattices-and-sequences.ron"),
+    ),
+    (
         "sampling-theorem.ron",
         include_str!("../../assets/scenes/sampling-theorem.ron"),
     ),
