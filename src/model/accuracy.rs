@@ -38,8 +38,13 @@ pub enum Accuracy {
     TheoremBand { band: f64, tail: f64 },
     /// Points read from a file, not generated (`source` names it).
     Imported { source: String },
-    /// The error image against the reference: RMSE and PSNR (dB).
-    Error { rmse: f64, psnr: f64 },
+    /// The error image against the reference: RMSE, PSNR (dB) and the share of the error's
+    /// energy at frequencies up to W/8 cycles per image (white noise ≈ 4.9 %).
+    Error {
+        rmse: f64,
+        psnr: f64,
+        low_frequency: Option<f64>,
+    },
 }
 
 impl Accuracy {
@@ -103,7 +108,17 @@ impl std::fmt::Display for Accuracy {
                 write!(f, "band ±{band:.3} cycles/unit, tail ≤ {tail:.1e}")
             }
             Accuracy::Imported { source } => write!(f, "imported from {source}"),
-            Accuracy::Error { rmse, psnr } => write!(f, "RMSE {rmse:.4}, PSNR {psnr:.2} dB"),
+            Accuracy::Error {
+                rmse,
+                psnr,
+                low_frequency,
+            } => {
+                write!(f, "RMSE {rmse:.4}, PSNR {psnr:.2} dB")?;
+                match low_frequency {
+                    Some(l) => write!(f, ", low-frequency error {:.1} %", 100.0 * l),
+                    None => Ok(()),
+                }
+            }
         }
     }
 }

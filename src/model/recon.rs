@@ -73,6 +73,10 @@ pub struct ErrorData {
     pub image: ImageData,
     /// The largest value of [`Self::image`] (the top of its colour range).
     pub max_error: f32,
+    /// The share of the error's energy at low frequencies: its periodogram summed over
+    /// 0 < |k| ≤ W/8 cycles per image, over the total for k ≠ 0 (white noise ≈ π/64 ≈ 4.9 %;
+    /// blue-noise error, e.g. ZSobol's, much less). `None` for a constant error.
+    pub low_frequency: Option<f64>,
 }
 
 /// One point of a convergence curve.

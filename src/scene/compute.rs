@@ -2,7 +2,10 @@
 
 use super::node::{Deps, JobCtx, NodeError, NodeKind, NodeValue, Output, Partial};
 use super::ReconMode;
+use crate::core::recon::image_plane::{ImagePlaneProvider, ZSobolProvider};
+use crate::core::recon::supersample::SampleProvider;
 use crate::model::Accuracy;
+use crate::scene::PixelSampling;
 use std::sync::Arc;
 use std::time::Duration;
 
@@ -136,9 +139,22 @@ pub(super) fn reconstruction(ctx: &JobCtx) -> Output {
                     what: "supersampling",
                 });
             }
-            let provider = crate::core::recon::PatternProvider {
-                pattern: col.pattern,
-                seed: col.seed,
+            let provider = |spp: usize| -> Result<Box<dyn SampleProvider>, NodeError> {
+                Ok(match col.pixels {
+                    PixelSampling::PerPixel => Box::new(crate::core::recon::PatternProvider {
+                        pattern: col.pattern,
+                        seed: col.seed,
+                    }),
+                    PixelSampling::ImagePlane { tile } => Box::new(ImagePlaneProvider::new(
+                        &col.pattern,
+                        w,
+                        spp,
+                        col.seed,
+                        tile,
+                        cancel,
+                    )?),
+                    PixelSampling::ZSobol => Box::new(ZSobolProvider { seed: col.seed, w }),
+                })
             };
             // A heavy supersampling (over PREVIEW_SAMPLES samples) shows a preview at 1/16
             // of the samples per pixel first (6 % extra work), then the full image.
@@ -148,7 +164,7 @@ pub(super) fn reconstruction(ctx: &JobCtx) -> Output {
                     &scene.signal,
                     w,
                     preview_spp,
-                    &provider,
+                    provider(preview_spp)?.as_ref(),
                     &scene.filter,
                     cancel,
                 )?;
@@ -167,7 +183,7 @@ pub(super) fn reconstruction(ctx: &JobCtx) -> Output {
                 &scene.signal,
                 w,
                 spp,
-                &provider,
+                provider(spp)?.as_ref(),
                 &scene.filter,
                 cancel,
             )?
@@ -243,6 +259,22 @@ pub(super) fn error(ctx: &JobCtx) -> Output {
     // shown is the difference of the two display images.
     let report = crate::core::recon::error_report(&recon.exact, &reference.pixels)?;
     let (rmse, psnr) = (report.rmse, report.psnr);
+    // Blue-noise error (image-plane samplers) keeps its energy away from low frequencies.
+    let w = a.width;
+    let signed: Vec<f64> = recon
+        .exact
+        .pixels
+        .iter()
+        .zip(reference.pixels.iter())
+        .map(|(x, y)| x - y)
+        .collect();
+    let low_frequency = if w == a.height && w <= crate::core::recon::image_plane::MAX_SPECTRUM_W {
+        crate::core::recon::image_plane::low_frequency_energy(&signed, w, w as f64 / 8.0)
+            .ok()
+            .filter(|v| v.is_finite() && *v > 0.0)
+    } else {
+        None
+    };
     let mut max = 0.0f32;
     let diff: Vec<f32> = a
         .values
@@ -260,8 +292,13 @@ pub(super) fn error(ctx: &JobCtx) -> Output {
             psnr,
             image: ImageData::new(a.width, a.height, diff),
             max_error: max,
+            low_frequency,
         })),
-        Some(Accuracy::Error { rmse, psnr }),
+        Some(Accuracy::Error {
+            rmse,
+            psnr,
+            low_frequency,
+        }),
     ))
 }
 

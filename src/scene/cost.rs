@@ -90,6 +90,11 @@ fn node_estimates(scene: &Scene, c: usize, kind: NodeKind) -> Vec<Estimate> {
                     ));
                 }
                 v.push(budget::supersampling(signal, w, spp, &col.pattern, filter));
+                if let crate::scene::PixelSampling::ImagePlane { tile } = col.pixels {
+                    // One pattern of s·T² points over the tile, generated once.
+                    let t = if tile == 0 { w } else { tile };
+                    v.push(budget::pattern(&col.pattern, spp.saturating_mul(t * t)));
+                }
                 v
             }
         },

@@ -210,7 +210,7 @@ pub static NODES: [NodeDef; 10] = [
                 ReconMode::Supersample { spp } => Inputs::new(
                     NodeKind::Reconstruction,
                     &[],
-                    (&col.pattern, col.seed, spp, &s.signal, f, w),
+                    (&col.pattern, col.seed, spp, &s.signal, f, w, col.pixels),
                 ),
             }
         },

@@ -41,6 +41,40 @@ pub struct Column {
     /// whatever the shared overlay setting; lets a scene show several interval shapes side by
     /// side. At most [`MAX_ELEMENTARY_K`].
     pub elementary_k: Option<u32>,
+    /// How supersampling gives the pixels their samples (only with `recon.mode: Supersample`).
+    pub pixels: PixelSampling,
+}
+
+/// How a supersampling column draws each pixel's s samples.
+///
+/// In scene files: `pixels: per_pixel`, `pixels: image_plane(tile: 0)`, `pixels: zsobol`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum PixelSampling {
+    /// Every pixel draws its own, independent copy of the pattern (seed derived from the pixel).
+    #[default]
+    PerPixel,
+    /// One pattern of s·T² points over a toroidal tile of T×T pixels (T = 0: the whole image),
+    /// repeated across the image; each pixel takes the points that fall in it (excess points of
+    /// unstratified patterns move to the nearest underfull pixel; see
+    /// [`crate::core::recon::image_plane`]).
+    ImagePlane { tile: usize },
+    /// Ahmed & Wonka's ZSobol (pbrt-v4): one Owen-scrambled Sobol' sequence over the pixels in
+    /// Morton order with base-4 digit randomisation; the column's pattern is not used. spp must
+    /// be a power of two.
+    #[serde(rename = "zsobol")]
+    ZSobol,
+}
+
+impl PixelSampling {
+    /// Name shown in the GUI and in figure labels.
+    pub fn name(self) -> &'static str {
+        match self {
+            PixelSampling::PerPixel => "per-pixel",
+            PixelSampling::ImagePlane { .. } => "image-plane",
+            PixelSampling::ZSobol => "zsobol",
+        }
+    }
 }
 
 /// Largest per-column elementary-interval exponent k (2^24 strata per axis).
@@ -54,6 +88,7 @@ impl Default for Column {
             label: String::new(),
             points: None,
             elementary_k: None,
+            pixels: PixelSampling::PerPixel,
         }
     }
 }
@@ -356,6 +391,10 @@ pub const BUILTIN: &[(&str, &str)] = &[
     (
         "lattices-and-sequences.ron",
         include_str!("../../assets/scenes/lattices-and-sequences.ron"),
+    ),
+    (
+        "image-plane-samplers.ron",
+        include_str!("../../assets/scenes/image-plane-samplers.ron"),
     ),
     (
         "sampling-theorem.ron",
@@ -692,6 +731,51 @@ impl Scene {
                             &field,
                             format!("Some({k})"),
                             &format!("an integer in 0..={m} (N = {n} = 2^{m})"),
+                        ));
+                    }
+                }
+            }
+        }
+        for (i, c) in self.columns.iter().enumerate() {
+            let field = format!("columns[{i}].pixels");
+            match (c.pixels, self.recon.mode) {
+                (PixelSampling::PerPixel, _) => {}
+                (_, ReconMode::Scattered | ReconMode::Resample { .. }) => {
+                    return Err(invalid(
+                        &field,
+                        c.pixels.name().into(),
+                        "per-pixel: image-plane and zsobol apply only to recon.mode: Supersample",
+                    ))
+                }
+                (PixelSampling::ImagePlane { tile }, ReconMode::Supersample { spp }) => {
+                    if tile > self.recon.size {
+                        return Err(invalid(
+                            &format!("{field}.tile"),
+                            tile.to_string(),
+                            &format!(
+                                "0 (the whole image) or a tile side in 1..={}",
+                                self.recon.size
+                            ),
+                        ));
+                    }
+                    let t = if tile == 0 { self.recon.size } else { tile };
+                    if spp.saturating_mul(t * t) > crate::core::pattern::MAX_N {
+                        return Err(invalid(
+                            &format!("{field}.tile"),
+                            tile.to_string(),
+                            &format!(
+                                "a tile with spp·T² ≤ {} points (spp = {spp})",
+                                crate::core::pattern::MAX_N
+                            ),
+                        ));
+                    }
+                }
+                (PixelSampling::ZSobol, ReconMode::Supersample { spp }) => {
+                    if !spp.is_power_of_two() {
+                        return Err(invalid(
+                            "recon.mode.spp",
+                            spp.to_string(),
+                            &format!("a power of two with columns[{i}].pixels: zsobol"),
                         ));
                     }
                 }

@@ -560,6 +560,7 @@ impl SamplescopeApp {
             });
         ui.separator();
         let ncols = self.scene.columns.len();
+        let supersampling = matches!(self.scene.recon.mode, ReconMode::Supersample { .. });
         let mut remove = None;
         let mut duplicate = None;
         for (ci, column) in self.scene.columns.iter_mut().enumerate() {
@@ -575,6 +576,9 @@ impl SamplescopeApp {
                 });
                 dropped::imported_column_ui(ui, column);
                 params::pattern_ui(ui, column);
+                if supersampling {
+                    params::pixel_sampling_ui(ui, column);
+                }
             });
             ui.separator();
         }

@@ -508,18 +508,11 @@ impl Pattern {
             Pattern::Pmj02bn(p) => pmj::pmj02bn(n, seed, p.candidates, cancel)?,
             Pattern::Fibonacci(p) => lattice::fibonacci(n, p.shift, seed)?,
             Pattern::Rank1(p) => lattice::rank1_with(n, p.g, p.shift, seed, cancel)?,
-            Pattern::Kronecker(p) => {
-                lattice::kronecker(n, DVec2::new(p.offset_x, p.offset_y))?
-            }
+            Pattern::Kronecker(p) => lattice::kronecker(n, DVec2::new(p.offset_x, p.offset_y))?,
             Pattern::Lloyd(p) => optimize::lloyd(n, p.iterations, seed, cancel, &mut |_, _| {})?,
-            Pattern::Sot(p) => optimize::sot(
-                n,
-                p.iterations,
-                p.directions,
-                seed,
-                cancel,
-                &mut |_, _| {},
-            )?,
+            Pattern::Sot(p) => {
+                optimize::sot(n, p.iterations, p.directions, seed, cancel, &mut |_, _| {})?
+            }
             Pattern::Gbn(p) => {
                 optimize::gbn(n, p.iterations, p.sigma, seed, cancel, &mut |_, _| {})?
             }

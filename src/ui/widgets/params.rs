@@ -35,6 +35,34 @@ pub fn pattern_ui(ui: &mut egui::Ui, column: &mut Column) {
     column.seed = seed;
 }
 
+/// How a supersampling column gives its pixels their samples: per pixel, one pattern over the
+/// image plane, or ZSobol.
+pub fn pixel_sampling_ui(ui: &mut egui::Ui, column: &mut Column) {
+    use crate::scene::PixelSampling;
+    let mut choice = column.pixels;
+    egui::ComboBox::from_label("Pixel samples")
+        .selected_text(choice.name())
+        .show_ui(ui, |ui| {
+            for p in [
+                PixelSampling::PerPixel,
+                PixelSampling::ImagePlane { tile: 0 },
+                PixelSampling::ZSobol,
+            ] {
+                let selected = std::mem::discriminant(&choice) == std::mem::discriminant(&p);
+                if ui.selectable_label(selected, p.name()).clicked() && !selected {
+                    choice = p;
+                }
+            }
+        })
+        .response
+        .on_hover_text(
+            "per-pixel: an independent copy of the pattern in every pixel; image-plane: one \
+             pattern over the whole image, each pixel takes its points; zsobol: one Sobol' \
+             sequence over the pixels in Morton order (blue-noise error)",
+        );
+    column.pixels = choice;
+}
+
 /// One control per parameter descriptor of `params`; a change is applied only if the whole
 /// set stays valid ([`Params::set_value`]).
 pub fn params_ui(ui: &mut egui::Ui, params: &mut impl Params) {
