@@ -117,7 +117,14 @@ impl Panel for ZonePlatePanel {
             }
         }
         if let Some(Ok(NodeValue::Error(e))) = cx.result(NodeKind::Error).map(|r| &r.value) {
-            ui.small(format!("RMSE {:.4} · PSNR {:.2} dB", e.rmse, e.psnr));
+            let low = e.low_frequency.map_or(String::new(), |l| {
+                format!(" · low-freq. error {:.1} % (white ≈ 4.9 %)", 100.0 * l)
+            });
+            ui.small(format!("RMSE {:.4} · PSNR {:.2} dB{low}", e.rmse, e.psnr))
+                .on_hover_text(
+                    "low-freq. error: the share of the error image's energy at frequencies up to \
+                     W/8 cycles per image; blue-noise error (zsobol) keeps it small",
+                );
         }
         if let Some(r) = cx.result(NodeKind::Reference) {
             if let Ok(NodeValue::Reference(rf)) = &r.value {
