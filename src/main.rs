@@ -38,6 +38,9 @@ enum Command {
     Recon(cli::recon::ReconArgs),
     /// Write every figure of a scene (PNG, SVG, CSV, composites) with no window and no GPU.
     Render(cli::render::RenderArgs),
+    /// Integration error of a pattern on an integrand with a known integral as N grows: MSE
+    /// per N over realizations and its log-log slope.
+    Converge(cli::converge::ConvergeArgs),
 }
 
 fn main() -> ExitCode {
@@ -59,6 +62,7 @@ fn main() -> ExitCode {
         Some(Command::Analyze(args)) => cli::analyze::run(&args, &session),
         Some(Command::Recon(args)) => cli::recon::run(&args, &session),
         Some(Command::Render(args)) => cli::render::run(&args, &session),
+        Some(Command::Converge(args)) => cli::converge::run(&args, &session),
         None => {
             samplescope::ui::run_gui_with_points(cli.scene, cli.points.map(|p| (p, cli.normalize)))
                 .map_err(cli::CliError::Gui)

@@ -3,6 +3,7 @@
 pub mod budget;
 pub mod cancel;
 pub mod filter;
+pub mod integration;
 pub mod metrics;
 pub mod params;
 pub mod pattern;

@@ -9,6 +9,7 @@ use std::time::{Duration, Instant};
 mod bad_input;
 mod budget_cli;
 mod cli_points;
+mod converge;
 mod figures;
 mod filter_cli;
 mod filter_metrics;

@@ -1,0 +1,270 @@
+//! `samplescope converge`: the integration error of a pattern on an integrand with a known
+//! integral, as N grows: MSE, its standard error, variance and squared bias per N, and the
+//! log–log slope of the MSE.
+
+use super::session::{write_output, Session};
+use super::{apply_settings, outln, pattern_from_args, CliError};
+use samplescope::core::budget;
+use samplescope::core::integration::{
+    check_request, estimate, run_study, Integrand, Study, StudyError, StudyRequest, MAX_STUDY_N,
+};
+use samplescope::core::params::{ParamValue, Params};
+use std::path::Path;
+
+/// Arguments of `samplescope converge`.
+#[derive(clap::Args, Debug)]
+pub struct ConvergeArgs {
+    /// Sample pattern (see `points --list`).
+    #[arg(long)]
+    pub pattern: String,
+    /// Pattern parameter `key=value`; repeatable.
+    #[arg(long = "set", value_name = "KEY=VALUE")]
+    pub set: Vec<String>,
+    /// Integrand on [0,1]² with an exact integral: disk (cx, cy, r), gaussian (cx, cy, sigma),
+    /// heaviside (px, py, theta in degrees), bilinear (x·y), cosines (a, b).
+    #[arg(long)]
+    pub integrand: String,
+    /// Integrand parameter `key=value`; repeatable (e.g. `--integrand-set r=0.2`).
+    #[arg(long = "integrand-set", value_name = "KEY=VALUE")]
+    pub integrand_set: Vec<String>,
+    /// A new random instance of the integrand's family per realization (disk centre in
+    /// [0.2,0.8]², r in [0.1,0.4]; gaussian centre in [0,1]², σ in [0.05,0.3]; heaviside p in
+    /// [0,1]², θ in [0°,360°); cosines a, b in [0.5,8]).
+    #[arg(long)]
+    pub randomize: bool,
+    /// Sample counts, comma-separated (e.g. 16,64,256,1024), each in 1..=1048576, at most 64.
+    #[arg(long = "n", value_name = "N,N,…")]
+    pub n: String,
+    /// Realizations per N, in 1..=4096.
+    #[arg(long, value_name = "R")]
+    pub realizations: String,
+    /// Seed of the realizations' streams.
+    #[arg(long, default_value_t = 0)]
+    pub seed: u64,
+    /// No Cranley–Patterson rotation of deterministic patterns (every realization the same).
+    #[arg(long = "no-shift")]
+    pub no_shift: bool,
+    /// Print one JSON object.
+    #[arg(long)]
+    pub json: bool,
+    /// Also write the rows as CSV (`n,mse,mse_stderr,variance,bias2`).
+    #[arg(long, value_name = "OUT.csv")]
+    pub csv: Option<String>,
+}
+
+/// The integrand named `name` with `key=value` settings applied through its descriptors.
+pub fn integrand_from_args(name: &str, settings: &[String]) -> Result<Integrand, CliError> {
+    let mut integrand =
+        Integrand::from_name(name).map_err(|e| CliError::Usage(format!("--integrand {}", e)))?;
+    apply_settings(
+        &mut integrand,
+        "--integrand-set",
+        settings,
+        "samplescope converge --help",
+    )?;
+    Ok(integrand)
+}
+
+/// Parses the comma-separated `--n` list (the range is checked with the request).
+fn parse_ns(text: &str) -> Result<Vec<usize>, CliError> {
+    text.split(',')
+        .map(|t| {
+            t.trim().parse::<usize>().map_err(|_| {
+                CliError::Usage(format!(
+                    "--n {}: must be a comma-separated list of integers, each in 1..={MAX_STUDY_N}",
+                    samplescope::core::params::fmt_text(t)
+                ))
+            })
+        })
+        .collect()
+}
+
+fn study_error(e: StudyError) -> CliError {
+    match e {
+        StudyError::Cancelled => CliError::Cancelled,
+        other => CliError::Usage(other.to_string()),
+    }
+}
+
+/// A number for JSON: `null` when absent or not finite.
+fn num(v: Option<f64>) -> serde_json::Value {
+    v.filter(|x| x.is_finite())
+        .map_or(serde_json::Value::Null, serde_json::Value::from)
+}
+
+/// A parameter set as a JSON object `{key: value}` (numbers as numbers, choices as names).
+fn params_json<P: Params>(p: &P) -> serde_json::Value {
+    let map: serde_json::Map<String, serde_json::Value> = p
+        .specs()
+        .iter()
+        .filter_map(|s| {
+            let v = match p.get(s.name)? {
+                ParamValue::Int(i) => serde_json::Value::from(i),
+                ParamValue::Float(x) => num(Some(x)),
+                ParamValue::Bool(b) => serde_json::Value::from(b),
+                ParamValue::Choice(c) => serde_json::Value::from(c),
+                ParamValue::List(v) => v.into_iter().map(|x| num(Some(x))).collect(),
+            };
+            Some((s.name.to_string(), v))
+        })
+        .collect();
+    serde_json::Value::Object(map)
+}
+
+fn ms(d: std::time::Duration) -> f64 {
+    d.as_secs_f64() * 1e3
+}
+
+/// The rows as CSV, numbers in shortest round-trip form, an absent standard error empty.
+pub fn csv_text(study: &Study) -> String {
+    let mut s = String::from("n,mse,mse_stderr,variance,bias2\n");
+    for r in &study.rows {
+        let se = r.mse_stderr.map(|v| format!("{v:?}")).unwrap_or_default();
+        s.push_str(&format!(
+            "{},{:?},{se},{:?},{:?}\n",
+            r.n, r.mse, r.variance, r.bias2
+        ));
+    }
+    s
+}
+
+/// Runs `samplescope converge`.
+pub fn run(args: &ConvergeArgs, session: &Session) -> Result<(), CliError> {
+    let pattern = pattern_from_args(&args.pattern, &args.set)?;
+    let integrand = integrand_from_args(&args.integrand, &args.integrand_set)?;
+    let ns = parse_ns(&args.n)?;
+    let realizations = args.realizations.trim().parse::<usize>().map_err(|_| {
+        CliError::Usage(format!(
+            "--realizations {}: must be an integer in 1..={}",
+            samplescope::core::params::fmt_text(&args.realizations),
+            samplescope::core::integration::MAX_REALIZATIONS
+        ))
+    })?;
+    let req = StudyRequest {
+        pattern,
+        integrand,
+        ns,
+        realizations,
+        seed: args.seed,
+        shift: !args.no_shift,
+        randomize: args.randomize,
+    };
+    check_request(&req).map_err(study_error)?;
+    let mut plan = estimate(&req);
+    let stages = plan.len();
+    // The share of the work before the evaluation stage, to move the bar between stages.
+    let first = plan[0].seconds / budget::total_seconds(&plan).max(f64::MIN_POSITIVE);
+    if args.csv.is_some() {
+        plan.push(budget::text_rows("CSV", req.ns.len()));
+    }
+    let Some(progress) = session.admit(plan)? else {
+        return Ok(());
+    };
+    progress.stage(0);
+    let mut stage = 0;
+    let study = run_study(&req, &session.cancel, &mut |done, total| {
+        if stage == 0 && done as f64 >= first * total as f64 && stages > 1 {
+            stage = 1;
+            progress.stage(1);
+        }
+    })
+    .map_err(study_error)?;
+    if let Some(path) = &args.csv {
+        progress.stage(stages);
+        write_output(
+            Path::new(path),
+            csv_text(&study).as_bytes(),
+            &session.cancel,
+        )?;
+    }
+    drop(progress);
+    let t = &study.timings;
+    if args.json {
+        let rows: Vec<serde_json::Value> = study
+            .rows
+            .iter()
+            .map(|r| {
+                serde_json::json!({
+                    "n": r.n,
+                    "mse": num(Some(r.mse)),
+                    "mse_stderr": num(r.mse_stderr),
+                    "variance": num(Some(r.variance)),
+                    "bias2": num(Some(r.bias2)),
+                })
+            })
+            .collect();
+        outln!(
+            "{}",
+            serde_json::json!({
+                "pattern": req.pattern.name(),
+                "pattern_params": params_json(&req.pattern),
+                "integrand": req.integrand.name(),
+                "integrand_params": params_json(&req.integrand),
+                "randomize": req.randomize,
+                "shift": req.applies_shift(),
+                "seed": req.seed,
+                "realizations": req.realizations,
+                "reference": study.reference,
+                "rows": rows,
+                "slope": num(study.slope),
+                "slope_stderr": num(study.slope_stderr),
+                "timings_ms": {
+                    "points": ms(t.points),
+                    "evaluation": ms(t.evaluation),
+                    "statistics": ms(t.statistics),
+                    "total": ms(t.total),
+                },
+            })
+        )?;
+        return Ok(());
+    }
+    let shift = if req.pattern.is_random() {
+        "none (random pattern)"
+    } else if req.shift {
+        "Cranley–Patterson rotation per realization"
+    } else {
+        "none (every realization the same)"
+    };
+    outln!(
+        "{} on {}{}: reference {:.12}, {} realizations, seed {}, shift: {shift}",
+        req.pattern.name(),
+        req.integrand.name(),
+        if req.randomize { " (randomized)" } else { "" },
+        study.reference,
+        req.realizations,
+        req.seed
+    )?;
+    outln!(
+        "{:>8}  {:>12}  {:>12}  {:>12}  {:>12}",
+        "N",
+        "MSE",
+        "± stderr",
+        "variance",
+        "bias²"
+    )?;
+    for r in &study.rows {
+        let se = r
+            .mse_stderr
+            .map_or_else(|| "—".to_string(), |v| format!("{v:.5e}"));
+        outln!(
+            "{:>8}  {:>12.5e}  {:>12}  {:>12.5e}  {:>12.5e}",
+            r.n,
+            r.mse,
+            se,
+            r.variance,
+            r.bias2
+        )?;
+    }
+    match (study.slope, study.slope_stderr) {
+        (Some(b), Some(se)) => outln!("slope  {b:.4} ± {se:.4} (least squares of ln MSE on ln N)")?,
+        (Some(b), None) => outln!("slope  {b:.4} (two values of N: no standard error)")?,
+        _ => outln!("slope  — (fewer than two values of N with MSE > 0)")?,
+    }
+    outln!(
+        "time   {:.2} ms (points {:.2} ms, evaluation {:.2} ms, summed over threads)",
+        ms(t.total),
+        ms(t.points),
+        ms(t.evaluation)
+    )?;
+    Ok(())
+}
