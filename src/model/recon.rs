@@ -77,6 +77,9 @@ pub struct ErrorData {
     /// 0 < |k| ≤ W/8 cycles per image, over the total for k ≠ 0 (white noise ≈ π/64 ≈ 4.9 %;
     /// blue-noise error, e.g. ZSobol's, much less). `None` for a constant error.
     pub low_frequency: Option<f64>,
+    /// The error's periodogram (centred, DC in the middle), as log₁₀ P, with its display range
+    /// (lo, hi); `None` when it was not computed (non-square or over 4096²).
+    pub spectrum: Option<(ImageData, f32, f32)>,
 }
 
 /// One point of a convergence curve.

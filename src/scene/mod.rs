@@ -397,6 +397,10 @@ pub const BUILTIN: &[(&str, &str)] = &[
         include_str!("../../assets/scenes/image-plane-samplers.ron"),
     ),
     (
+        "image-plane-samplers-4spp.ron",
+        include_str!("../../assets/scenes/image-plane-samplers-4spp.ron"),
+    ),
+    (
         "sampling-theorem.ron",
         include_str!("../../assets/scenes/sampling-theorem.ron"),
     ),

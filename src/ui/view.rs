@@ -15,6 +15,8 @@ pub enum ZoneImage {
     Reference,
     /// |reconstruction − reference|.
     Error,
+    /// The error's periodogram (log₁₀ P, centred).
+    ErrorSpectrum,
 }
 
 /// Display state shared by the panels (persisted between runs).

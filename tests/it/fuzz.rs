@@ -97,7 +97,7 @@ const SETTINGS: &[&str] = &[
     "",
     "=",
 ];
-const SUBCOMMANDS: &[&str] = &["points", "analyze", "filter", "recon", "render"];
+const SUBCOMMANDS: &[&str] = &["points", "analyze", "filter", "recon", "render", "converge"];
 const FLAGS: &[&str] = &[
     "-n",
     "--seed",

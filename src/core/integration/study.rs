@@ -396,21 +396,21 @@ pub fn run_study(
             .collect()
     };
     let weight = |t: &Task| t.k.map_or(plan.nmax, |k| req.ns[k]);
-    let total: usize = tasks.iter().map(weight).sum();
+    let total = tasks.iter().map(weight).fold(0usize, usize::saturating_add);
     let threads = rayon::current_num_threads().max(1);
     let target = (total / 64).max(1 << 16);
 
     let k_len = req.ns.len();
     let mut errors = vec![0.0; distinct * k_len];
     let mut references = vec![0.0; distinct];
-    let mut done = 0;
+    let mut done = 0usize;
     let mut i = 0;
     while i < tasks.len() {
         cancel.check()?;
         let mut j = i;
-        let mut w = 0;
+        let mut w = 0usize;
         while j < tasks.len() && (j - i < 2 * threads || w < target) && j - i < 4096 {
-            w += weight(&tasks[j]);
+            w = w.saturating_add(weight(&tasks[j]));
             j += 1;
         }
         let outs: Vec<Result<TaskOut, StudyError>> = tasks[i..j]
@@ -426,7 +426,7 @@ pub fn run_study(
             timings.points += out.points;
             timings.evaluation += out.evaluation;
         }
-        done += w;
+        done = done.saturating_add(w);
         i = j;
         progress(done, total);
     }

@@ -28,7 +28,7 @@ impl Panel for ZonePlatePanel {
         match view.zone_image {
             ZoneImage::Reconstruction => PanelKind::Reconstruction,
             ZoneImage::Reference => PanelKind::Reference,
-            ZoneImage::Error => PanelKind::Error,
+            ZoneImage::Error | ZoneImage::ErrorSpectrum => PanelKind::Error,
         }
     }
 
@@ -42,6 +42,12 @@ impl Panel for ZonePlatePanel {
             ui.selectable_value(&mut cx.view.zone_image, ZoneImage::Reconstruction, "recon");
             ui.selectable_value(&mut cx.view.zone_image, ZoneImage::Reference, "reference");
             ui.selectable_value(&mut cx.view.zone_image, ZoneImage::Error, "error");
+            ui.selectable_value(
+                &mut cx.view.zone_image,
+                ZoneImage::ErrorSpectrum,
+                "error spectrum",
+            )
+            .on_hover_text("periodogram of the signed error (log10 P, DC in the centre)");
             cx.figures.panel_menu_ui(
                 ui,
                 ci,
@@ -59,7 +65,7 @@ impl Panel for ZonePlatePanel {
         let kind = match cx.view.zone_image {
             ZoneImage::Reconstruction => NodeKind::Reconstruction,
             ZoneImage::Reference => NodeKind::Reference,
-            ZoneImage::Error => NodeKind::Error,
+            ZoneImage::Error | ZoneImage::ErrorSpectrum => NodeKind::Error,
         };
         let Some(r) = cx.result(kind) else {
             if cx.view.zone_image != ZoneImage::Reconstruction && !cx.scene.effects.error {
@@ -77,6 +83,22 @@ impl Panel for ZonePlatePanel {
         let (image, range) = match &r.value {
             Ok(NodeValue::Reconstruction(d)) => (d.image.clone(), grey),
             Ok(NodeValue::Reference(d)) => (d.image.clone(), grey),
+            Ok(NodeValue::Error(d)) if cx.view.zone_image == ZoneImage::ErrorSpectrum => {
+                match &d.spectrum {
+                    Some((img, lo, hi)) => (
+                        img.clone(),
+                        DisplayRange {
+                            lo: *lo,
+                            hi: *hi,
+                            colormap: Colormap::Viridis,
+                        },
+                    ),
+                    None => {
+                        ui.small("no error spectrum for this image size");
+                        return;
+                    }
+                }
+            }
             Ok(NodeValue::Error(d)) => (
                 d.image.clone(),
                 DisplayRange {
