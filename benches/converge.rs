@@ -16,6 +16,8 @@
 //!
 //! Hammersley is not progressive and is left out, as in the lecture's convergence plots.
 
+mod common;
+use common::{median_ms_with, process_cpu_ms, selected, Timing};
 use criterion::Criterion;
 use samplescope::core::budget;
 use samplescope::core::cancel::Cancel;
@@ -47,100 +49,6 @@ fn push(row: Row) {
     if let Ok(mut rows) = ROWS.lock() {
         rows.push(row);
     }
-}
-
-/// Medians in ms: wall time and the process's CPU time (every thread).
-#[derive(Clone, Copy)]
-struct Timing {
-    wall: f64,
-    cpu: f64,
-}
-
-/// CPU time of the whole process in ms (`clock_gettime(CLOCK_PROCESS_CPUTIME_ID)`), NaN where
-/// unavailable: the study runs on rayon's threads, so a thread clock would miss most of it.
-#[cfg(target_os = "linux")]
-fn process_cpu_ms() -> f64 {
-    #[repr(C)]
-    struct Timespec {
-        tv_sec: i64,
-        tv_nsec: i64,
-    }
-    extern "C" {
-        fn clock_gettime(clock: i32, tp: *mut Timespec) -> i32;
-    }
-    const CLOCK_PROCESS_CPUTIME_ID: i32 = 2;
-    let mut t = Timespec {
-        tv_sec: 0,
-        tv_nsec: 0,
-    };
-    // SAFETY: `t` is a valid, writable timespec; the clock id is Linux's process CPU clock.
-    let rc = unsafe { clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &mut t) };
-    if rc != 0 {
-        return f64::NAN;
-    }
-    t.tv_sec as f64 * 1e3 + t.tv_nsec as f64 * 1e-6
-}
-
-#[cfg(not(target_os = "linux"))]
-fn process_cpu_ms() -> f64 {
-    f64::NAN
-}
-
-/// Median wall and CPU times in ms of `reps` runs (after one warm-up run).
-fn median_ms(reps: usize, mut f: impl FnMut()) -> Timing {
-    f();
-    let mut wall = Vec::with_capacity(reps);
-    let mut cpu = Vec::with_capacity(reps);
-    for _ in 0..reps {
-        let (c0, start) = (process_cpu_ms(), Instant::now());
-        f();
-        wall.push(start.elapsed().as_secs_f64() * 1e3);
-        cpu.push(process_cpu_ms() - c0);
-    }
-    wall.sort_by(f64::total_cmp);
-    cpu.sort_by(f64::total_cmp);
-    Timing {
-        wall: wall[reps / 2],
-        cpu: cpu[reps / 2],
-    }
-}
-
-/// The benchmark filter given on the command line (criterion's first positional argument), if any.
-fn filter() -> Option<String> {
-    const WITH_VALUE: &[&str] = &[
-        "--warm-up-time",
-        "--measurement-time",
-        "--sample-size",
-        "--save-baseline",
-        "-s",
-        "--baseline",
-        "-b",
-        "--baseline-lenient",
-        "--load-baseline",
-        "--output-format",
-        "--plotting-backend",
-        "--color",
-        "-c",
-        "--significance-level",
-        "--confidence-level",
-        "--nresamples",
-        "--noise-threshold",
-        "--profile-time",
-        "--format",
-    ];
-    let mut args = std::env::args().skip(1);
-    while let Some(a) = args.next() {
-        if WITH_VALUE.contains(&a.as_str()) {
-            args.next();
-        } else if !a.starts_with('-') {
-            return Some(a);
-        }
-    }
-    None
-}
-
-fn selected(id: &str) -> bool {
-    filter().is_none_or(|f| id.contains(&f))
 }
 
 /// "w ms wall / c ms cpu".
@@ -214,7 +122,7 @@ fn studies(c: &mut Criterion) {
         group.sample_size(10);
         group.bench_function("fast", |b| b.iter(|| black_box(run())));
         group.finish();
-        let fast = median_ms(5, || {
+        let fast = median_ms_with(process_cpu_ms, 5, || {
             black_box(run());
         });
         // The naive loop: one timed run (seconds for best candidate), checked equal.
@@ -279,7 +187,7 @@ fn evaluations(c: &mut Criterion) {
         group.bench_function("fast", |b| b.iter(|| black_box(run())));
         group.finish();
         let mut eval_cpu = Vec::new();
-        let t = median_ms(5, || {
+        let t = median_ms_with(process_cpu_ms, 5, || {
             eval_cpu.push(run().timings.evaluation.as_secs_f64() * 1e3);
         });
         eval_cpu.sort_by(f64::total_cmp);

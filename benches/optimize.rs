@@ -19,6 +19,8 @@
 //! The CPU column is the calling thread's CPU time: for the multi-threaded runs it misses the
 //! work of rayon's other threads, so compare their wall times.
 
+mod common;
+use common::{both, median_ms, selected, Timing};
 use criterion::Criterion;
 use samplescope::core::cancel::Cancel;
 use samplescope::core::pattern::optimize::{
@@ -28,7 +30,6 @@ use samplescope::core::pattern::optimize::{
 use samplescope::core::rng::Rng;
 use std::hint::black_box;
 use std::sync::Mutex;
-use std::time::Instant;
 
 const N: usize = 1024;
 const SEED: u64 = 1;
@@ -49,111 +50,12 @@ fn push(row: Row) {
     }
 }
 
-/// Medians in ms: wall time and this thread's CPU time.
-#[derive(Clone, Copy)]
-struct Timing {
-    wall: f64,
-    cpu: f64,
-}
-
-/// CPU time of the calling thread in ms (`clock_gettime(CLOCK_THREAD_CPUTIME_ID)`), NaN where
-/// unavailable.
-#[cfg(target_os = "linux")]
-fn thread_cpu_ms() -> f64 {
-    #[repr(C)]
-    struct Timespec {
-        tv_sec: i64,
-        tv_nsec: i64,
-    }
-    extern "C" {
-        fn clock_gettime(clock: i32, tp: *mut Timespec) -> i32;
-    }
-    const CLOCK_THREAD_CPUTIME_ID: i32 = 3;
-    let mut t = Timespec {
-        tv_sec: 0,
-        tv_nsec: 0,
-    };
-    // SAFETY: `t` is a valid, writable timespec; the clock id is Linux's thread CPU clock.
-    let rc = unsafe { clock_gettime(CLOCK_THREAD_CPUTIME_ID, &mut t) };
-    if rc != 0 {
-        return f64::NAN;
-    }
-    t.tv_sec as f64 * 1e3 + t.tv_nsec as f64 * 1e-6
-}
-
-#[cfg(not(target_os = "linux"))]
-fn thread_cpu_ms() -> f64 {
-    f64::NAN
-}
-
-/// Median wall and CPU times in ms of `reps` runs (after one warm-up run).
-fn median_ms(reps: usize, mut f: impl FnMut()) -> Timing {
-    f();
-    let mut wall = Vec::with_capacity(reps);
-    let mut cpu = Vec::with_capacity(reps);
-    for _ in 0..reps {
-        let (c0, start) = (thread_cpu_ms(), Instant::now());
-        f();
-        wall.push(start.elapsed().as_secs_f64() * 1e3);
-        cpu.push(thread_cpu_ms() - c0);
-    }
-    wall.sort_by(f64::total_cmp);
-    cpu.sort_by(f64::total_cmp);
-    Timing {
-        wall: wall[reps / 2],
-        cpu: cpu[reps / 2],
-    }
-}
-
 /// `f` inside a one-thread rayon pool (the single-threaded reference).
 fn single_thread<T: Send>(f: impl FnOnce() -> T + Send) -> T {
     match rayon::ThreadPoolBuilder::new().num_threads(1).build() {
         Ok(pool) => pool.install(f),
         Err(_) => f(),
     }
-}
-
-/// The benchmark filter given on the command line (criterion's first positional argument), if any.
-fn filter() -> Option<String> {
-    const WITH_VALUE: &[&str] = &[
-        "--warm-up-time",
-        "--measurement-time",
-        "--sample-size",
-        "--save-baseline",
-        "-s",
-        "--baseline",
-        "-b",
-        "--baseline-lenient",
-        "--load-baseline",
-        "--output-format",
-        "--plotting-backend",
-        "--color",
-        "-c",
-        "--significance-level",
-        "--confidence-level",
-        "--nresamples",
-        "--noise-threshold",
-        "--profile-time",
-        "--format",
-    ];
-    let mut args = std::env::args().skip(1);
-    while let Some(a) = args.next() {
-        if WITH_VALUE.contains(&a.as_str()) {
-            args.next();
-        } else if !a.starts_with('-') {
-            return Some(a);
-        }
-    }
-    None
-}
-
-fn selected(id: &str) -> bool {
-    filter().is_none_or(|f| id.contains(&f))
-}
-
-/// "w ms wall / c ms cpu".
-fn both(t: Timing) -> String {
-    format!("{:.3} ms wall / {:.3} ms cpu", t.wall, t.cpu)
 }
 
 /// White noise of N points (the common start of the three samplers), median of 21 runs.

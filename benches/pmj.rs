@@ -14,6 +14,8 @@
 //! | `pmj02bn_4096` | `pmj02bn`, N = 4096, 16 candidates | `pmj02bn_naive` (N = 4096, timed once), `pmj02` | ≤ 10 ms, one core |
 //! | `pmj02_65536` | `pmj02`, N = 65 536 | white noise of the same size | — (scaling) |
 
+mod common;
+use common::{both, median_ms, once_ms, selected, Timing};
 use criterion::Criterion;
 use glam::DVec2;
 use samplescope::core::cancel::Cancel;
@@ -21,7 +23,6 @@ use samplescope::core::pattern::pmj::{pmj02, pmj02_naive, pmj02bn, pmj02bn_naive
 use samplescope::core::rng::Rng;
 use std::hint::black_box;
 use std::sync::Mutex;
-use std::time::Instant;
 
 const N: usize = 4096;
 const SEED: u64 = 1;
@@ -43,117 +44,6 @@ fn push(row: Row) {
     if let Ok(mut rows) = ROWS.lock() {
         rows.push(row);
     }
-}
-
-/// Medians in ms: wall time and this thread's CPU time.
-#[derive(Clone, Copy)]
-struct Timing {
-    wall: f64,
-    cpu: f64,
-}
-
-/// CPU time of the calling thread in ms (`clock_gettime(CLOCK_THREAD_CPUTIME_ID)`), NaN where
-/// unavailable. On a shared machine it excludes the time the thread waited for a core.
-#[cfg(target_os = "linux")]
-fn thread_cpu_ms() -> f64 {
-    #[repr(C)]
-    struct Timespec {
-        tv_sec: i64,
-        tv_nsec: i64,
-    }
-    extern "C" {
-        fn clock_gettime(clock: i32, tp: *mut Timespec) -> i32;
-    }
-    const CLOCK_THREAD_CPUTIME_ID: i32 = 3;
-    let mut t = Timespec {
-        tv_sec: 0,
-        tv_nsec: 0,
-    };
-    // SAFETY: `t` is a valid, writable timespec; the clock id is Linux's thread CPU clock.
-    let rc = unsafe { clock_gettime(CLOCK_THREAD_CPUTIME_ID, &mut t) };
-    if rc != 0 {
-        return f64::NAN;
-    }
-    t.tv_sec as f64 * 1e3 + t.tv_nsec as f64 * 1e-6
-}
-
-#[cfg(not(target_os = "linux"))]
-fn thread_cpu_ms() -> f64 {
-    f64::NAN
-}
-
-/// Wall and CPU time in ms of one run (for references that take seconds).
-fn once_ms(f: impl FnOnce()) -> Timing {
-    let (c0, start) = (thread_cpu_ms(), Instant::now());
-    f();
-    Timing {
-        wall: start.elapsed().as_secs_f64() * 1e3,
-        cpu: thread_cpu_ms() - c0,
-    }
-}
-
-/// Median wall and CPU times in ms of `reps` runs (after one warm-up run).
-fn median_ms(reps: usize, mut f: impl FnMut()) -> Timing {
-    f();
-    let mut wall = Vec::with_capacity(reps);
-    let mut cpu = Vec::with_capacity(reps);
-    for _ in 0..reps {
-        let (c0, start) = (thread_cpu_ms(), Instant::now());
-        f();
-        wall.push(start.elapsed().as_secs_f64() * 1e3);
-        cpu.push(thread_cpu_ms() - c0);
-    }
-    wall.sort_by(f64::total_cmp);
-    cpu.sort_by(f64::total_cmp);
-    Timing {
-        wall: wall[reps / 2],
-        cpu: cpu[reps / 2],
-    }
-}
-
-/// The benchmark filter given on the command line (criterion's first positional argument), if any.
-fn filter() -> Option<String> {
-    const WITH_VALUE: &[&str] = &[
-        "--warm-up-time",
-        "--measurement-time",
-        "--sample-size",
-        "--save-baseline",
-        "-s",
-        "--baseline",
-        "-b",
-        "--baseline-lenient",
-        "--load-baseline",
-        "--output-format",
-        "--plotting-backend",
-        "--color",
-        "-c",
-        "--significance-level",
-        "--confidence-level",
-        "--nresamples",
-        "--noise-threshold",
-        "--profile-time",
-        "--format",
-    ];
-    let mut args = std::env::args().skip(1);
-    while let Some(a) = args.next() {
-        if WITH_VALUE.contains(&a.as_str()) {
-            args.next();
-        } else if !a.starts_with('-') {
-            return Some(a);
-        }
-    }
-    None
-}
-
-/// Whether benchmark `id` passes the filter (substring match, criterion's rule; `pmj02_4096`
-/// is not a substring of `pmj02bn_4096`).
-fn selected(id: &str) -> bool {
-    filter().is_none_or(|f| id.contains(&f))
-}
-
-/// "w ms wall / c ms cpu".
-fn both(t: Timing) -> String {
-    format!("{:.3} ms wall / {:.3} ms cpu", t.wall, t.cpu)
 }
 
 /// Ratio a/b on wall and on CPU time.
