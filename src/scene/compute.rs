@@ -20,27 +20,6 @@ impl JobCtx<'_> {
     }
 }
 
-/// Σ P over 0 < |k| ≤ radius divided by Σ P over k ≠ 0, for a centred W×W periodogram (the
-/// same share as `image_plane::low_frequency_energy`, from the periodogram already computed).
-fn low_frequency_share(p: &[f64], w: usize, radius: f64) -> Option<f64> {
-    let half = (w / 2) as f64;
-    let (mut low, mut total) = (0.0, 0.0);
-    for iy in 0..w {
-        for ix in 0..w {
-            let (kx, ky) = (ix as f64 - half, iy as f64 - half);
-            if kx == 0.0 && ky == 0.0 {
-                continue;
-            }
-            let v = p[iy * w + ix];
-            total += v;
-            if kx * kx + ky * ky <= radius * radius {
-                low += v;
-            }
-        }
-    }
-    (total > 0.0 && total.is_finite()).then_some(low / total)
-}
-
 pub(super) fn theorem(ctx: &JobCtx) -> Output {
     ctx.cancel.check()?;
     let v = crate::core::signal::theorem::compute_view(&ctx.scene.theorem)?;
@@ -294,7 +273,10 @@ pub(super) fn error(ctx: &JobCtx) -> Output {
         .flatten();
     let low_frequency = periodogram
         .as_ref()
-        .and_then(|p| low_frequency_share(p, w, w as f64 / 8.0));
+        .map(|p| {
+            crate::core::recon::image_plane::periodogram_low_frequency_share(p, w, w as f64 / 8.0)
+        })
+        .filter(|v| v.is_finite() && *v > 0.0);
     let spectrum = periodogram.map(|p| {
         let floor = 1e-12;
         let logs: Vec<f32> = p.iter().map(|v| (v.max(floor)).log10() as f32).collect();
@@ -548,30 +530,4 @@ fn spectrum_data(
         anisotropy,
         stages,
     })
-}
-
-#[cfg(test)]
-mod error_spectrum_tests {
-    use super::low_frequency_share;
-    use crate::core::recon::image_plane::{error_periodogram, low_frequency_energy};
-    use crate::core::rng::Rng;
-
-    #[test]
-    fn the_share_from_the_periodogram_equals_image_plane_s_low_frequency_energy() {
-        for w in [8usize, 15, 64] {
-            let mut rng = Rng::new(w as u64);
-            let e: Vec<f64> = (0..w * w).map(|_| rng.next_f64() - 0.5).collect();
-            let p = error_periodogram(&e, w).unwrap();
-            let r = w as f64 / 8.0;
-            let a = low_frequency_share(&p, w, r).unwrap();
-            let b = low_frequency_energy(&e, w, r).unwrap();
-            assert!(
-                (a - b).abs() <= 1e-12 * b.max(1e-300),
-                "w = {w}: {a} vs {b}"
-            );
-        }
-        // A constant error has no energy off DC.
-        let p = error_periodogram(&[0.25; 64], 8).unwrap();
-        assert_eq!(low_frequency_share(&p, 8, 1.0), None);
-    }
 }

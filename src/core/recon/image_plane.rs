@@ -1060,33 +1060,39 @@ pub fn low_frequency_energy(error: &[f64], w: usize, radius: f64) -> Result<f64,
             value: radius,
         });
     }
-    let f = fft2(error, w);
-    let half = w / 2;
-    let signed = |i: usize| -> f64 {
-        // FFT index → signed frequency in −⌊W/2⌋ ..< W − ⌊W/2⌋.
-        if i < w - half {
-            i as f64
-        } else {
-            i as f64 - w as f64
-        }
-    };
+    Ok(periodogram_low_frequency_share(
+        &error_periodogram(error, w)?,
+        w,
+        radius,
+    ))
+}
+
+/// [`low_frequency_energy`] of a centred W×W periodogram already computed
+/// ([`error_periodogram`]'s layout: kx = ix − ⌊W/2⌋): Σ P over 0 < |k| ≤ `radius` divided by
+/// Σ P over k ≠ 0; 0 when there is no energy off DC.
+pub fn periodogram_low_frequency_share(p: &[f64], w: usize, radius: f64) -> f64 {
+    let half = (w / 2) as f64;
     let r2 = radius * radius;
     let (mut low, mut total) = (0.0, 0.0);
-    for ky in 0..w {
-        let y = signed(ky);
-        for kx in 0..w {
-            if kx == 0 && ky == 0 {
+    for iy in 0..w {
+        let ky = iy as f64 - half;
+        for ix in 0..w {
+            let kx = ix as f64 - half;
+            if kx == 0.0 && ky == 0.0 {
                 continue;
             }
-            let x = signed(kx);
-            let p = f[ky * w + kx].norm_sqr();
-            total += p;
-            if radius >= 0.0 && x * x + y * y <= r2 {
-                low += p;
+            let v = p[iy * w + ix];
+            total += v;
+            if radius >= 0.0 && kx * kx + ky * ky <= r2 {
+                low += v;
             }
         }
     }
-    Ok(if total > 0.0 { low / total } else { 0.0 })
+    if total > 0.0 {
+        low / total
+    } else {
+        0.0
+    }
 }
 
 #[cfg(test)]
