@@ -80,19 +80,19 @@ fn lloyd_1024(c: &mut Criterion) {
     let mut group = c.benchmark_group("lloyd_1024");
     group.sample_size(20);
     group.bench_function("exact", |b| {
-        b.iter(|| lloyd(black_box(N), it, SEED, &never, &mut |_, _| {}))
+        b.iter(|| lloyd(black_box(N), it, SEED, &never, &mut |_, _, _| {}))
     });
     group.finish();
     let fast = median_ms(11, || {
-        black_box(lloyd(N, it, SEED, &never, &mut |_, _| {}).ok());
+        black_box(lloyd(N, it, SEED, &never, &mut |_, _, _| {}).ok());
     });
     let one = single_thread(|| {
         median_ms(11, || {
-            black_box(lloyd(N, it, SEED, &never, &mut |_, _| {}).ok());
+            black_box(lloyd(N, it, SEED, &never, &mut |_, _, _| {}).ok());
         })
     });
     let naive = median_ms(3, || {
-        black_box(lloyd_naive(N, 1, SEED, &never, &mut |_, _| {}).ok());
+        black_box(lloyd_naive(N, 1, SEED, &never, &mut |_, _, _| {}).ok());
     });
     let white = white_noise_ms();
     push(Row {
@@ -119,15 +119,15 @@ fn sot_1024(c: &mut Criterion) {
     let mut group = c.benchmark_group("sot_1024");
     group.sample_size(20);
     group.bench_function("defaults", |b| {
-        b.iter(|| sot(black_box(N), it, dirs, SEED, &never, &mut |_, _| {}))
+        b.iter(|| sot(black_box(N), it, dirs, SEED, &never, &mut |_, _, _| {}))
     });
     group.finish();
     let fast = median_ms(11, || {
-        black_box(sot(N, it, dirs, SEED, &never, &mut |_, _| {}).ok());
+        black_box(sot(N, it, dirs, SEED, &never, &mut |_, _, _| {}).ok());
     });
     let one = single_thread(|| {
         median_ms(11, || {
-            black_box(sot(N, it, dirs, SEED, &never, &mut |_, _| {}).ok());
+            black_box(sot(N, it, dirs, SEED, &never, &mut |_, _, _| {}).ok());
         })
     });
     let white = white_noise_ms();
@@ -155,15 +155,15 @@ fn gbn_1024(c: &mut Criterion) {
     let mut group = c.benchmark_group("gbn_1024");
     group.sample_size(10);
     group.bench_function("defaults", |b| {
-        b.iter(|| gbn(black_box(N), it, 0.0, SEED, &never, &mut |_, _| {}))
+        b.iter(|| gbn(black_box(N), it, 0.0, SEED, &never, &mut |_, _, _| {}))
     });
     group.finish();
     let fast = median_ms(5, || {
-        black_box(gbn(N, it, 0.0, SEED, &never, &mut |_, _| {}).ok());
+        black_box(gbn(N, it, 0.0, SEED, &never, &mut |_, _, _| {}).ok());
     });
     let one = single_thread(|| {
         median_ms(5, || {
-            black_box(gbn(N, it, 0.0, SEED, &never, &mut |_, _| {}).ok());
+            black_box(gbn(N, it, 0.0, SEED, &never, &mut |_, _, _| {}).ok());
         })
     });
     let white = white_noise_ms();

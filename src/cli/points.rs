@@ -53,7 +53,9 @@ pub fn run(args: &PointsArgs, session: &Session) -> Result<(), CliError> {
     };
     let cancel = &session.cancel;
     progress.stage(0);
-    let generated = pattern.generate_with(n, args.seed, cancel)?;
+    let generated = pattern.generate_observed(n, args.seed, cancel, &mut |r| {
+        progress.steps_done(r.step, r.steps)
+    })?;
     if let Some(note) = &generated.note {
         eprintln!("note: {note}");
     }

@@ -125,11 +125,22 @@ pub fn estimate_text(plan: &[Estimate]) -> String {
     s
 }
 
-/// Where the bar stands: the estimated milliseconds before the current stage and in it.
+/// Where the bar stands: the estimated milliseconds before the current stage and in it, and
+/// the share of the stage done when the stage reports it (else the elapsed time is used).
 struct Position {
     before: f64,
     stage: f64,
     started: Instant,
+    done: Option<f64>,
+}
+
+impl Position {
+    fn within(&self) -> f64 {
+        match self.done {
+            Some(f) => f * self.stage,
+            None => (self.started.elapsed().as_secs_f64() * 1e3).min(self.stage),
+        }
+    }
 }
 
 /// The progress bar of a command (hidden for short commands and when stderr is not a
@@ -149,6 +160,7 @@ impl Progress {
             before: 0.0,
             stage: 0.0,
             started: Instant::now(),
+            done: None,
         }));
         let stop = Arc::new(AtomicBool::new(false));
         let target = ProgressDrawTarget::stderr();
@@ -166,8 +178,7 @@ impl Progress {
             std::thread::spawn(move || {
                 while !stop.load(Ordering::Relaxed) {
                     if let Ok(p) = position.lock() {
-                        let within = (p.started.elapsed().as_secs_f64() * 1e3).min(p.stage);
-                        bar.set_position((p.before + within) as u64);
+                        bar.set_position((p.before + p.within()) as u64);
                     }
                     std::thread::sleep(Duration::from_millis(100));
                 }
@@ -191,11 +202,25 @@ impl Progress {
                 before,
                 stage,
                 started: Instant::now(),
+                done: None,
             };
         }
         if let (Some(bar), Some(e)) = (&self.bar, self.plan.get(i)) {
             bar.set_position(before as u64);
             bar.set_message(e.operation.clone());
+        }
+    }
+}
+
+impl Progress {
+    /// The current stage reports that `done` of `of` of its steps are done (an optimiser's
+    /// iterations): the bar follows them instead of the estimated time.
+    pub fn steps_done(&self, done: usize, of: usize) {
+        if of == 0 {
+            return;
+        }
+        if let Ok(mut p) = self.position.lock() {
+            p.done = Some((done as f64 / of as f64).min(1.0));
         }
     }
 }
@@ -249,4 +274,23 @@ pub fn write_output(path: &Path, bytes: &[u8], cancel: &Cancel) -> Result<(), Cl
         let _ = std::fs::remove_file(&partial);
         io(e)
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_stage_that_reports_its_steps_moves_the_bar_by_them_not_by_the_clock() {
+        let mut p = Position {
+            before: 100.0,
+            stage: 1000.0,
+            started: Instant::now() - Duration::from_secs(10),
+            done: None,
+        };
+        // Without steps the elapsed time is used, at most the stage's estimate.
+        assert_eq!(p.within(), 1000.0);
+        p.done = Some(0.25);
+        assert_eq!(p.within(), 250.0);
+    }
 }

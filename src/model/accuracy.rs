@@ -36,6 +36,8 @@ pub enum Accuracy {
     ConvergenceLevels { done: usize, of: usize },
     /// The 1D theorem view: errors integrated over |ω| ≤ band; the rest is bounded by `tail`.
     TheoremBand { band: f64, tail: f64 },
+    /// An iterative pattern (Lloyd, SOT, GBN) part way: `done` of `of` iterations.
+    Iterations { done: usize, of: usize },
     /// Points read from a file, not generated (`source` names it).
     Imported { source: String },
     /// The error image against the reference: RMSE, PSNR (dB) and the share of the error's
@@ -107,6 +109,7 @@ impl std::fmt::Display for Accuracy {
             Accuracy::TheoremBand { band, tail } => {
                 write!(f, "band ±{band:.3} cycles/unit, tail ≤ {tail:.1e}")
             }
+            Accuracy::Iterations { done, of } => write!(f, "iteration {done} of {of}"),
             Accuracy::Imported { source } => write!(f, "imported from {source}"),
             Accuracy::Error {
                 rmse,
@@ -160,6 +163,10 @@ mod tests {
                     tail: 2.5e-9,
                 },
                 "band ±32.000 cycles/unit, tail ≤ 2.5e-9",
+            ),
+            (
+                Accuracy::Iterations { done: 12, of: 50 },
+                "iteration 12 of 50",
             ),
         ];
         for (a, want) in cases {

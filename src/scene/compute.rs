@@ -75,17 +75,40 @@ pub(super) fn points(ctx: &JobCtx) -> Output {
             }),
         ));
     }
-    let g = col.pattern.generate_with(scene.n, col.seed, cancel)?;
-    let gpu = g.points.iter().map(|p| [p.x as f32, p.y as f32]).collect();
-    Ok((
-        NodeValue::Points(Arc::new(PointsData {
-            points: g.points,
-            gpu: Arc::new(gpu),
-            version: next_version(),
-            note: g.note,
-        })),
-        None,
-    ))
+    // An optimiser (Lloyd, SOT, GBN) shows the points it has reached, at most every
+    // POINTS_PARTIAL_INTERVAL, so the pattern panel relaxes live; the final points do not
+    // depend on what was shown.
+    let mut last = std::time::Instant::now();
+    let g = col
+        .pattern
+        .generate_observed(scene.n, col.seed, cancel, &mut |r| {
+            if r.step < r.steps && last.elapsed() >= POINTS_PARTIAL_INTERVAL {
+                (ctx.progress)(Partial {
+                    value: points_value(r.points.to_vec(), None),
+                    accuracy: Some(Accuracy::Iterations {
+                        done: r.step,
+                        of: r.steps,
+                    }),
+                    step: r.step,
+                    steps: r.steps,
+                });
+                last = std::time::Instant::now();
+            }
+        })?;
+    Ok((points_value(g.points, g.note), None))
+}
+
+/// How often an iterative pattern's points node publishes the points reached so far.
+pub(crate) const POINTS_PARTIAL_INTERVAL: Duration = Duration::from_millis(100);
+
+fn points_value(points: Vec<glam::DVec2>, note: Option<String>) -> NodeValue {
+    let gpu = points.iter().map(|p| [p.x as f32, p.y as f32]).collect();
+    NodeValue::Points(Arc::new(PointsData {
+        points,
+        gpu: Arc::new(gpu),
+        version: next_version(),
+        note,
+    }))
 }
 
 pub(super) fn statistics(ctx: &JobCtx) -> Output {

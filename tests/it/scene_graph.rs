@@ -637,3 +637,66 @@ fn heavy_supersampling_previews_at_a_sixteenth_then_gives_the_plain_result() {
         }
     }
 }
+
+#[test]
+fn lloyd_publishes_the_points_it_has_reached_then_gives_the_plain_result() {
+    use samplescope::core::pattern::{optimize, Pattern};
+    let mut s = Scene::builtin_default();
+    s.panels.spectrum = false;
+    s.panels.zoneplate = false;
+    s.panels.filter = false;
+    s.effects = samplescope::scene::Effects {
+        reconstruction: false,
+        error: false,
+        convergence: false,
+        statistics: false,
+    };
+    s.n = 4096;
+    let mut pattern = Pattern::from_name("lloyd").unwrap();
+    pattern.set("iterations", "400").unwrap();
+    s.columns.truncate(1);
+    s.columns[0].pattern = pattern;
+    let mut engine = Engine::with_evaluator(Evaluator::default(), Arc::new(|| {}));
+    engine.submit(&s);
+    let updates = engine.wait(Duration::from_secs(300));
+    let points: Vec<_> = updates
+        .iter()
+        .filter(|u| u.kind == NodeKind::Points)
+        .collect();
+    let (last, partials) = points.split_last().expect("a final points result");
+    assert!(last.progress.is_none());
+    assert!(
+        !partials.is_empty(),
+        "400 Lloyd steps of 4096 points take over 100 ms"
+    );
+    let value = |u: &samplescope::engine::Update| match &u.result.value {
+        Ok(NodeValue::Points(p)) => p.points.clone(),
+        other => panic!("{other:?}"),
+    };
+    let seed = s.columns[0].seed;
+    let mut prev = 0;
+    for u in partials {
+        let (step, steps) = u.progress.map(|p| (p.step, p.steps)).unwrap();
+        assert_eq!(steps, 400);
+        assert!(
+            step > prev && step < steps,
+            "steps rise: {prev} then {step}"
+        );
+        prev = step;
+        assert_eq!(
+            u.result.accuracy,
+            Some(samplescope::model::Accuracy::Iterations {
+                done: step,
+                of: 400
+            })
+        );
+    }
+    // A run of k steps is the prefix of a longer one: a partial is exactly Lloyd with k steps.
+    for u in [partials[0], partials[partials.len() - 1]] {
+        let step = u.progress.unwrap().step;
+        let want =
+            optimize::lloyd(4096, step as u32, seed, &Cancel::never(), &mut |_, _, _| {}).unwrap();
+        assert_eq!(value(u), want, "step {step}");
+    }
+    assert_eq!(value(last), pattern.generate(4096, seed).unwrap());
+}

@@ -161,6 +161,15 @@ impl Generated {
     }
 }
 
+/// One step of an iterative pattern's refinement: step `step` of `steps` is done, and `points`
+/// are the points it reached (not yet the final pattern unless `step == steps`).
+#[derive(Debug, Clone, Copy)]
+pub struct Refining<'a> {
+    pub step: usize,
+    pub steps: usize,
+    pub points: &'a [DVec2],
+}
+
 /// Scrambling of the Sobol' (0,2)-sequence.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
 #[serde(rename_all = "kebab-case")]
@@ -480,7 +489,34 @@ impl Pattern {
         seed: u64,
         cancel: &Cancel,
     ) -> Result<Generated, PatternError> {
+        self.generate_observed(n, seed, cancel, &mut |_| {})
+    }
+
+    /// Whether the pattern is made by an optimiser that refines a whole point set step by step
+    /// (Lloyd, SOT, GBN), and so reports [`Refining`] steps from [`Pattern::generate_observed`].
+    pub fn is_iterative(&self) -> bool {
+        matches!(self, Pattern::Lloyd(_) | Pattern::Sot(_) | Pattern::Gbn(_))
+    }
+
+    /// As [`Pattern::generate_with`]; an iterative pattern ([`Pattern::is_iterative`]) also
+    /// calls `observe` after every step with the points reached so far, which are a valid point
+    /// set of the same size (what the GUI shows while it refines, and what drives the CLI's
+    /// progress bar). The result does not depend on `observe`.
+    pub fn generate_observed(
+        &self,
+        n: usize,
+        seed: u64,
+        cancel: &Cancel,
+        observe: &mut dyn FnMut(Refining<'_>),
+    ) -> Result<Generated, PatternError> {
         check_n(n, MAX_N)?;
+        let mut step = |step: usize, steps: usize, points: &[DVec2]| {
+            observe(Refining {
+                step,
+                steps,
+                points,
+            })
+        };
         let points = match self {
             Pattern::Grid(p) => stratified::grid(p, n)?,
             Pattern::Random(_) => stratified::random(n, seed),
@@ -509,13 +545,11 @@ impl Pattern {
             Pattern::Fibonacci(p) => lattice::fibonacci(n, p.shift, seed)?,
             Pattern::Rank1(p) => lattice::rank1_with(n, p.g, p.shift, seed, cancel)?,
             Pattern::Kronecker(p) => lattice::kronecker(n, DVec2::new(p.offset_x, p.offset_y))?,
-            Pattern::Lloyd(p) => optimize::lloyd(n, p.iterations, seed, cancel, &mut |_, _| {})?,
+            Pattern::Lloyd(p) => optimize::lloyd(n, p.iterations, seed, cancel, &mut step)?,
             Pattern::Sot(p) => {
-                optimize::sot(n, p.iterations, p.directions, seed, cancel, &mut |_, _| {})?
+                optimize::sot(n, p.iterations, p.directions, seed, cancel, &mut step)?
             }
-            Pattern::Gbn(p) => {
-                optimize::gbn(n, p.iterations, p.sigma, seed, cancel, &mut |_, _| {})?
-            }
+            Pattern::Gbn(p) => optimize::gbn(n, p.iterations, p.sigma, seed, cancel, &mut step)?,
         };
         debug_assert!(points
             .iter()

@@ -6,7 +6,8 @@
 //! of `(parameters, n, seed)`: the same bits for the same seed whatever the number of rayon
 //! threads (parallel work writes per-point or per-direction results into vectors that are
 //! combined serially in a fixed order). Each checks its [`Cancel`] token at least once per
-//! iteration and calls `progress(done, total)` after every iteration.
+//! iteration and calls `progress(done, total, points)` after every iteration, with the points
+//! reached so far (a valid point set, which the GUI shows while the optimiser runs).
 //!
 //! # Lloyd relaxation ([`lloyd`], reference [`lloyd_naive`])
 //!
@@ -399,13 +400,13 @@ const LLOYD_WHY: &str = "; lloyd triangulates about n + 16√n points every iter
 /// Lloyd relaxation on the unit torus: `iterations` steps (recommended
 /// [`LLOYD_DEFAULT_ITERATIONS`] = 50, allowed 0..=1000) from white noise, each moving every point
 /// to the centroid of its exact Voronoi cell (see the module docs). n ≤ [`LLOYD_MAX_N`].
-/// `progress(k, iterations)` is called after step k.
+/// `progress(k, iterations, points)` is called after step k.
 pub fn lloyd(
     n: usize,
     iterations: u32,
     seed: u64,
     cancel: &Cancel,
-    progress: &mut dyn FnMut(usize, usize),
+    progress: &mut dyn FnMut(usize, usize, &[DVec2]),
 ) -> Result<Vec<DVec2>, PatternError> {
     check_n_max(n, LLOYD_MAX_N, LLOYD_WHY)?;
     check_iterations(LLOYD, iterations, LLOYD_MAX_ITERATIONS)?;
@@ -414,7 +415,7 @@ pub fn lloyd(
     for k in 0..iterations {
         cancel.check()?;
         lloyd_step(&mut points);
-        progress(k as usize + 1, iterations as usize);
+        progress(k as usize + 1, iterations as usize, &points);
     }
     Ok(points)
 }
@@ -437,7 +438,7 @@ pub fn lloyd_naive(
     iterations: u32,
     seed: u64,
     cancel: &Cancel,
-    progress: &mut dyn FnMut(usize, usize),
+    progress: &mut dyn FnMut(usize, usize, &[DVec2]),
 ) -> Result<Vec<DVec2>, PatternError> {
     check_n_max(
         n,
@@ -450,7 +451,7 @@ pub fn lloyd_naive(
     for k in 0..iterations {
         let labels = raster_labels(&points, LLOYD_NAIVE_RASTER, cancel)?;
         points = raster_centroids(&points, &labels, LLOYD_NAIVE_RASTER);
-        progress(k as usize + 1, iterations as usize);
+        progress(k as usize + 1, iterations as usize, &points);
     }
     Ok(points)
 }
@@ -651,14 +652,14 @@ fn sot_step(points: &mut [DVec2], dirs: &[DVec2], cancel: &Cancel) -> Result<(),
 /// each (default [`SOT_DEFAULT_DIRECTIONS`], 1..=1024) from white noise; see the module docs.
 /// The directions of iteration k are drawn after the start points and those of iterations
 /// 0 … k−1 from the same `Rng::new(seed)` stream (angle π·u), so a run of k iterations is the
-/// prefix of a longer one. `progress(k, iterations)` is called after iteration k.
+/// prefix of a longer one. `progress(k, iterations, points)` is called after iteration k.
 pub fn sot(
     n: usize,
     iterations: u32,
     directions: u32,
     seed: u64,
     cancel: &Cancel,
-    progress: &mut dyn FnMut(usize, usize),
+    progress: &mut dyn FnMut(usize, usize, &[DVec2]),
 ) -> Result<Vec<DVec2>, PatternError> {
     check_n_max(n, MAX_N, "")?;
     check_iterations(SOT, iterations, SOT_MAX_ITERATIONS)?;
@@ -686,7 +687,7 @@ pub fn sot(
             dirs.push(DVec2::new(t.cos(), t.sin()));
         }
         sot_step(&mut points, &dirs, cancel)?;
-        progress(k as usize + 1, iterations as usize);
+        progress(k as usize + 1, iterations as usize, &points);
     }
     Ok(points)
 }
@@ -875,7 +876,7 @@ fn gbn_gradient(points: &[DVec2], sigma: f64, cancel: &Cancel) -> Result<Vec<DVe
 /// Gaussian blue noise (Ahmed, Ren, Wonka 2022) on the unit torus: `iterations` gradient
 /// descent steps (recommended [`GBN_DEFAULT_ITERATIONS`], 0..=10000) on the Gaussian energy with
 /// σ = sigma/√n (sigma 0 = [`GBN_DEFAULT_SIGMA`], or in (0, 1]) from white noise, step σ²/4
-/// (the authors'), kernel truncated at 8σ; see the module docs. `progress(k, iterations)` is
+/// (the authors'), kernel truncated at 8σ; see the module docs. `progress(k, iterations, points)` is
 /// called after step k.
 pub fn gbn(
     n: usize,
@@ -883,7 +884,7 @@ pub fn gbn(
     sigma: f64,
     seed: u64,
     cancel: &Cancel,
-    progress: &mut dyn FnMut(usize, usize),
+    progress: &mut dyn FnMut(usize, usize, &[DVec2]),
 ) -> Result<Vec<DVec2>, PatternError> {
     check_n_max(n, MAX_N, "")?;
     check_iterations(GBN, iterations, GBN_MAX_ITERATIONS)?;
@@ -897,7 +898,7 @@ pub fn gbn(
         for (p, g) in points.iter_mut().zip(&grad) {
             *p = wrap_point(*p - step * *g);
         }
-        progress(k as usize + 1, iterations as usize);
+        progress(k as usize + 1, iterations as usize, &points);
     }
     Ok(points)
 }
@@ -907,8 +908,8 @@ mod tests {
     use super::*;
     use crate::core::metrics::min_distance;
 
-    fn none() -> impl FnMut(usize, usize) {
-        |_, _| {}
+    fn none() -> impl FnMut(usize, usize, &[DVec2]) {
+        |_, _, _| {}
     }
 
     fn white(n: usize, seed: u64) -> Vec<DVec2> {
@@ -1186,7 +1187,7 @@ mod tests {
             bits(&white(50, 2))
         );
         let mut calls = Vec::new();
-        lloyd(50, 4, 2, &never, &mut |k, t| calls.push((k, t))).unwrap();
+        lloyd(50, 4, 2, &never, &mut |k, t, _| calls.push((k, t))).unwrap();
         assert_eq!(calls, vec![(1, 4), (2, 4), (3, 4), (4, 4)]);
         // Cancelled before, and during (from the progress callback after step 2).
         let c = Cancel::new();
@@ -1197,7 +1198,7 @@ mod tests {
         );
         let c = Cancel::new();
         let mut steps = 0;
-        let r = lloyd(50, 10, 2, &c, &mut |k, _| {
+        let r = lloyd(50, 10, 2, &c, &mut |k, _, _| {
             steps = k;
             if k == 2 {
                 c.cancel();
@@ -1358,10 +1359,10 @@ mod tests {
         let p = sot(1, 200, 16, 1, &never, &mut none()).unwrap();
         assert!(p[0].distance(DVec2::splat(0.5)) < 0.05, "{:?}", p[0]);
         let mut calls = Vec::new();
-        sot(20, 3, 4, 0, &never, &mut |k, t| calls.push((k, t))).unwrap();
+        sot(20, 3, 4, 0, &never, &mut |k, t, _| calls.push((k, t))).unwrap();
         assert_eq!(calls, vec![(1, 3), (2, 3), (3, 3)]);
         let c = Cancel::new();
-        let r = sot(20, 10, 4, 0, &c, &mut |k, _| {
+        let r = sot(20, 10, 4, 0, &c, &mut |k, _, _| {
             if k == 2 {
                 c.cancel();
             }
@@ -1512,10 +1513,10 @@ mod tests {
             assert!(p.len() == n && in_unit(&p));
         }
         let mut calls = Vec::new();
-        gbn(30, 2, 0.0, 0, &never, &mut |k, t| calls.push((k, t))).unwrap();
+        gbn(30, 2, 0.0, 0, &never, &mut |k, t, _| calls.push((k, t))).unwrap();
         assert_eq!(calls, vec![(1, 2), (2, 2)]);
         let c = Cancel::new();
-        let r = gbn(30, 10, 0.0, 0, &c, &mut |k, _| {
+        let r = gbn(30, 10, 0.0, 0, &c, &mut |k, _, _| {
             if k == 3 {
                 c.cancel();
             }
