@@ -164,9 +164,12 @@ pub fn run(args: &RenderArgs, session: &Session) -> Result<(), CliError> {
     drop(progress);
 
     let mut columns: Vec<(FigureContext, ColumnData)> = Vec::new();
-    for (c, res) in results.iter().enumerate() {
+    for (c, data) in figure::columns_data(&scene, &results)
+        .into_iter()
+        .enumerate()
+    {
         let ctx = figure::context(&scene, c, &stem).map_err(|e| CliError::Usage(e.to_string()))?;
-        columns.push((ctx, figure::column_data(res)));
+        columns.push((ctx, data));
     }
     // One colour range for every periodogram: the union of the columns' automatic ranges.
     let ranges: Vec<(f32, f32)> = columns

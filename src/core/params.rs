@@ -369,6 +369,16 @@ pub trait Params: Clone {
         None
     }
 
+    /// Every parameter that applies now as `key=value`, separated by spaces (titles and
+    /// metadata).
+    fn params_text(&self) -> String {
+        self.specs()
+            .iter()
+            .filter_map(|s| self.get(s.name).map(|v| format!("{}={v}", s.name)))
+            .collect::<Vec<_>>()
+            .join(" ")
+    }
+
     /// The descriptor of `key`, if it applies now.
     fn spec(&self, key: &str) -> Option<ParamSpec> {
         self.specs().into_iter().find(|s| s.name == key)

@@ -1,8 +1,8 @@
 //! A column's data as the figures read it.
 
 use super::{
-    ConvergencePoint, ErrorData, PointsData, ReconData, ReferenceData, ResponseData, SpectrumData,
-    TheoremView,
+    ConvergencePoint, ErrorData, IntegrationData, IntegrationPlot, PointsData, ReconData,
+    ReferenceData, ResponseData, SpectrumData, TheoremView,
 };
 use std::sync::Arc;
 
@@ -27,4 +27,9 @@ pub struct ColumnData {
     pub convergence: Option<Arc<Vec<ConvergencePoint>>>,
     /// The 1D sampling-theorem view (column 0 only, when the scene shows the theorem panel).
     pub theorem: Option<Arc<TheoremView>>,
+    /// This column's integration-error study.
+    pub integration: Option<Arc<IntegrationData>>,
+    /// Every column's study, for the integration figure (column 0 only; filled by
+    /// `scene::figure::columns_data`).
+    pub integration_plot: Option<Arc<IntegrationPlot>>,
 }

@@ -15,6 +15,7 @@ mod column;
 mod context;
 mod filter;
 mod image;
+mod integration;
 pub mod palette;
 mod panel;
 mod points;
@@ -27,6 +28,9 @@ pub use column::ColumnData;
 pub use context::{sanitize, FigureContext};
 pub use filter::{amplitude_db, ResponseData, ResponseMetrics, DB_FLOOR};
 pub use image::{next_version, ImageData};
+pub use integration::{
+    guide_line, IntegrationCurve, IntegrationData, IntegrationPlot, GUIDE_SLOPES,
+};
 pub use panel::PanelKind;
 pub use points::{elementary_grid, PointsData, StatsData};
 pub use recon::{ConvergencePoint, ErrorData, ReconData, ReferenceData};

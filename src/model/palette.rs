@@ -23,6 +23,24 @@ pub const REPLICAS: [[u8; 3]; 7] = [
     [188, 189, 34],
 ];
 
+/// The colours of the columns where several share one plot (the integration study), in
+/// column order (matplotlib's tab10).
+pub const SERIES: [[u8; 3]; 8] = [
+    [31, 119, 180],
+    [255, 127, 14],
+    [44, 160, 44],
+    [214, 39, 40],
+    [148, 103, 189],
+    [140, 86, 75],
+    [227, 119, 194],
+    [23, 190, 207],
+];
+
+/// The colour of column `i` on a shared plot (repeating after eight).
+pub fn series(i: usize) -> [u8; 3] {
+    SERIES[i % SERIES.len()]
+}
+
 /// The colour of replica k (|k| > 3 take the colour of ±3; k = 0, the signal itself, is
 /// usually drawn in the text colour or [`INK`] instead).
 pub fn replica(k: i64) -> [u8; 3] {

@@ -32,11 +32,15 @@ pub enum PanelKind {
     /// The theorem panel's transform pair p(x) = g(a(x − s)) and its transform P(ω) side by
     /// side (|P|, Re P and Im P; the shah as impulses).
     TheoremPair,
+    /// The integration-error study: MSE against N (log–log) of every column on one plot, with
+    /// standard-error bars, fitted slopes in the legend and guide lines N⁻¹ … N⁻³ (column 0
+    /// only: the plot holds all columns).
+    Integration,
 }
 
 impl PanelKind {
     /// Every kind, in the order `render` writes them.
-    pub const ALL: [PanelKind; 13] = [
+    pub const ALL: [PanelKind; 14] = [
         PanelKind::Pattern,
         PanelKind::Spectrum,
         PanelKind::Raps,
@@ -50,6 +54,7 @@ impl PanelKind {
         PanelKind::TheoremSpectrum,
         PanelKind::TheoremReconstructed,
         PanelKind::TheoremPair,
+        PanelKind::Integration,
     ];
 
     /// The figures of the 1D sampling-theorem panel.
@@ -96,6 +101,7 @@ impl PanelKind {
             PanelKind::TheoremSpectrum => "theorem-spectrum",
             PanelKind::TheoremReconstructed => "theorem-reconstructed",
             PanelKind::TheoremPair => "theorem-pair",
+            PanelKind::Integration => "integration",
         }
     }
 }

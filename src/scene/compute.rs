@@ -10,8 +10,8 @@ use std::sync::Arc;
 use std::time::Duration;
 
 use crate::model::{
-    next_version, ConvergencePoint, ErrorData, ImageData, PointsData, ReconData, ReferenceData,
-    ResponseData, ResponseMetrics, SpectrumData, StatsData,
+    next_version, ConvergencePoint, ErrorData, ImageData, IntegrationData, PointsData, ReconData,
+    ReferenceData, ResponseData, ResponseMetrics, SpectrumData, StatsData,
 };
 
 impl JobCtx<'_> {
@@ -553,4 +553,73 @@ fn spectrum_data(
         anisotropy,
         stages,
     })
+}
+
+/// Side of the integrand's preview image.
+pub(crate) const INTEGRAND_THUMBNAIL: usize = 48;
+
+/// f at the pixel centres of a `side`² grid over [0,1]² (row 0 at the top), scaled to [0, 1]
+/// by its own minimum and maximum (a constant f is drawn as 0.5).
+pub(crate) fn integrand_thumbnail(
+    f: &crate::core::integration::Integrand,
+    side: usize,
+) -> ImageData {
+    let values: Vec<f64> = (0..side * side)
+        .map(|i| {
+            let (col, row) = (i % side, i / side);
+            f.eval(glam::DVec2::new(
+                (col as f64 + 0.5) / side as f64,
+                (row as f64 + 0.5) / side as f64,
+            ))
+        })
+        .collect();
+    let lo = values.iter().copied().fold(f64::INFINITY, f64::min);
+    let hi = values.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+    let scale = |v: f64| {
+        if hi > lo {
+            ((v - lo) / (hi - lo)) as f32
+        } else {
+            0.5
+        }
+    };
+    ImageData::from_y_up(side, side, |i| scale(values[i]))
+}
+
+pub(super) fn integration(ctx: &JobCtx) -> Output {
+    use crate::core::integration::{run_study_progressive, Study, StudyError};
+    use crate::core::params::Params;
+    let (scene, col, cancel) = (ctx.scene, ctx.col(), ctx.cancel);
+    if col.points.is_some() {
+        return Err(NodeError::ImportedNoStudy { column: ctx.column });
+    }
+    let settings = &scene.integration;
+    let req = settings.request(col.pattern, col.seed);
+    let f = settings.integrand;
+    let integrand = format!("{} {}", f.name(), f.params_text());
+    let thumbnail = integrand_thumbnail(&f, INTEGRAND_THUMBNAIL);
+    let of = req.realizations;
+    let data = |study: &Study, done: usize| {
+        NodeValue::Integration(Arc::new(IntegrationData {
+            study: study.clone(),
+            done,
+            of,
+            integrand: integrand.trim().to_string(),
+            randomized: settings.randomize,
+            thumbnail: thumbnail.clone(),
+        }))
+    };
+    // The curve shows 1, 2, 4, … realizations as they come in, then all R.
+    let study = run_study_progressive(&req, cancel, &mut |_, _| {}, &mut |s, r| {
+        (ctx.progress)(Partial {
+            value: data(s, r),
+            accuracy: Some(Accuracy::Realizations { done: r, of }),
+            step: r,
+            steps: of,
+        })
+    })
+    .map_err(|e| match e {
+        StudyError::Cancelled => NodeError::Cancelled,
+        e => NodeError::Study(e),
+    })?;
+    Ok((data(&study, of), None))
 }

@@ -109,5 +109,12 @@ fn node_estimates(scene: &Scene, c: usize, kind: NodeKind) -> Vec<Estimate> {
             filter,
         )],
         NodeKind::Theorem => vec![budget::theorem()],
+        // Imported points report an error instead of running.
+        NodeKind::Integration => match imported {
+            Some(_) => Vec::new(),
+            None => crate::core::integration::estimate(
+                &scene.integration.request(col.pattern, col.seed),
+            ),
+        },
     }
 }

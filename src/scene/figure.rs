@@ -5,8 +5,11 @@
 use super::graph::{NodeKind, NodeResult};
 use super::{ReconMode, Scene};
 use crate::core::params::Params;
-use crate::model::{sanitize, Colormap, ColumnData, FigureContext};
+use crate::model::{
+    sanitize, Colormap, ColumnData, FigureContext, IntegrationCurve, IntegrationPlot,
+};
 use std::collections::HashMap;
+use std::sync::Arc;
 
 /// What names the "pattern" of a column whose points were imported from a file.
 const IMPORTED: &str = "imported";
@@ -40,15 +43,7 @@ pub fn context(
             IMPORTED.to_string(),
             format!("file={} normalize={}", p.label(), p.normalize),
         ),
-        None => (
-            col.pattern.name().to_string(),
-            col.pattern
-                .specs()
-                .iter()
-                .filter_map(|s| col.pattern.get(s.name).map(|v| format!("{}={v}", s.name)))
-                .collect::<Vec<_>>()
-                .join(" "),
-        ),
+        None => (col.pattern.name().to_string(), col.pattern.params_text()),
     };
     let recon = match scene.recon.mode {
         ReconMode::Scattered => "scattered".to_string(),
@@ -95,11 +90,36 @@ pub fn column_data<R: AsRef<NodeResult>>(results: &HashMap<NodeKind, R>) -> Colu
             Ok(NodeValue::Response(v)) => d.response = Some(v.clone()),
             Ok(NodeValue::Convergence(v)) => d.convergence = Some(v.clone()),
             Ok(NodeValue::Theorem(v)) => d.theorem = Some(v.clone()),
+            Ok(NodeValue::Integration(v)) => d.integration = Some(v.clone()),
             // Values no figure draws (statistics, samples, …) and failed nodes.
             _ => {}
         }
     }
     d
+}
+
+/// Every column's data ([`column_data`]), with column 0 also holding the integration plot:
+/// the studies of all columns, labelled with their titles.
+pub fn columns_data<R: AsRef<NodeResult>>(
+    scene: &Scene,
+    results: &[HashMap<NodeKind, R>],
+) -> Vec<ColumnData> {
+    let mut columns: Vec<ColumnData> = results.iter().map(column_data).collect();
+    let curves: Vec<IntegrationCurve> = columns
+        .iter()
+        .enumerate()
+        .filter_map(|(c, d)| {
+            let data = d.integration.clone()?;
+            let label = scene.columns.get(c).map(|col| col.title())?;
+            Some(IntegrationCurve { label, data })
+        })
+        .collect();
+    if let Some(first) = columns.first_mut() {
+        if !curves.is_empty() {
+            first.integration_plot = Some(Arc::new(IntegrationPlot { curves }));
+        }
+    }
+    columns
 }
 
 /// Unique file-name parts for the columns of a scene.

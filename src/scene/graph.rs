@@ -6,6 +6,7 @@
 //!                           └─> Samples(points; signal) ─> Reconstruction(filter, size) ─┐
 //!                                             Reference(signal, size) ─────────────────> Error
 //! Filter ─> Response         Convergence(pattern, seed, signal, filter)    Theorem(settings)
+//! Integration(pattern, seed, integration settings)
 //! ```
 //!
 //! Every node kind has **one entry** in [`NODES`]: whether a visible panel or an effect asks
@@ -135,7 +136,7 @@ pub struct NodeDef {
 }
 
 /// The node table, indexed by `NodeKind as usize`.
-pub static NODES: [NodeDef; 10] = [
+pub static NODES: [NodeDef; 11] = [
     NodeDef {
         kind: NodeKind::Points,
         shown: |s, c| panels::shows(s, c, PanelKind::Pattern),
@@ -271,6 +272,28 @@ pub static NODES: [NodeDef; 10] = [
         shown: |s, c| panels::shows(s, c, PanelKind::TheoremSignal),
         inputs: |s, _| Inputs::new(NodeKind::Theorem, &[], s.theorem),
         run: compute::theorem,
+        disk_cached: false,
+        version: 1,
+    },
+    NodeDef {
+        kind: NodeKind::Integration,
+        // Every column's curve goes on the one plot (whose figure belongs to column 0).
+        shown: |s, _| panels::shows_integration(s),
+        inputs: |s, c| {
+            let col = &s.columns[c];
+            match &col.points {
+                // Imported points have one N: the job reports that instead of running.
+                Some(p) => {
+                    Inputs::new(NodeKind::Integration, &[], ("imported", p.content_digest()))
+                }
+                None => Inputs::new(
+                    NodeKind::Integration,
+                    &[],
+                    (&col.pattern, col.seed, &s.integration),
+                ),
+            }
+        },
+        run: compute::integration,
         disk_cached: false,
         version: 1,
     },

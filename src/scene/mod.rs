@@ -10,12 +10,14 @@ pub mod cost;
 pub mod figure;
 pub mod graph;
 pub mod import;
+pub mod integration;
 pub mod motion;
 pub mod node;
 pub mod panels;
 pub mod ron_path;
 
 pub use import::ImportedPoints;
+pub use integration::IntegrationSettings;
 pub use motion::Motion;
 
 use crate::core::filter::Filter2D;
@@ -181,6 +183,9 @@ pub struct Panels {
     pub cost: bool,
     /// The 1D sampling-theorem view (signal, replicas, filter, pre-/post-aliasing).
     pub theorem: bool,
+    /// The integration-error study: MSE of the Monte Carlo estimate against N, every column
+    /// on one log–log plot.
+    pub integration: bool,
 }
 
 impl Default for Panels {
@@ -192,6 +197,7 @@ impl Default for Panels {
             filter: true,
             cost: false,
             theorem: false,
+            integration: false,
         }
     }
 }
@@ -241,6 +247,8 @@ pub struct Scene {
     pub motion: Option<Motion>,
     /// The 1D sampling-theorem view's settings (used only while `panels.theorem` is on).
     pub theorem: TheoremSettings,
+    /// The integration-error study (used only while `panels.integration` is on).
+    pub integration: IntegrationSettings,
 }
 
 impl Default for Scene {
@@ -258,6 +266,7 @@ impl Default for Scene {
             effects: Effects::default(),
             motion: None,
             theorem: TheoremSettings::default(),
+            integration: IntegrationSettings::default(),
         }
     }
 }
@@ -399,6 +408,14 @@ pub const BUILTIN: &[(&str, &str)] = &[
     (
         "image-plane-samplers-4spp.ron",
         include_str!("../../assets/scenes/image-plane-samplers-4spp.ron"),
+    ),
+    (
+        "integration-error-disk.ron",
+        include_str!("../../assets/scenes/integration-error-disk.ron"),
+    ),
+    (
+        "integration-error-gaussian.ron",
+        include_str!("../../assets/scenes/integration-error-gaussian.ron"),
     ),
     (
         "sampling-theorem.ron",
@@ -855,6 +872,13 @@ impl Scene {
                 ))
             }
             Ok(()) => {}
+        }
+        self.integration
+            .integrand
+            .check_params()
+            .map_err(|e| param("integration.integrand", e))?;
+        if let Some((field, value, allowed)) = self.integration.check() {
+            return Err(invalid(&format!("integration.{field}"), value, &allowed));
         }
         if let Some(m) = &self.motion {
             match m.validate() {

@@ -12,8 +12,8 @@ use crate::core::signal::theorem::TheoremError;
 use crate::core::spectrum::SpectrumError;
 use crate::model::Accuracy;
 use crate::model::{
-    ConvergencePoint, ErrorData, ImageData, PointsData, ReconData, ReferenceData, ResponseData,
-    SpectrumData, StatsData,
+    ConvergencePoint, ErrorData, ImageData, IntegrationData, PointsData, ReconData, ReferenceData,
+    ResponseData, SpectrumData, StatsData,
 };
 use serde::Serialize;
 use std::collections::HashMap;
@@ -35,11 +35,13 @@ pub enum NodeKind {
     Convergence,
     /// The 1D sampling-theorem view (column-independent: computed for column 0 only).
     Theorem,
+    /// The integration-error study of the column's pattern.
+    Integration,
 }
 
 impl NodeKind {
     /// Every kind, in dependency (evaluation) order.
-    pub const ALL: [NodeKind; 10] = [
+    pub const ALL: [NodeKind; 11] = [
         NodeKind::Points,
         NodeKind::Statistics,
         NodeKind::Spectrum,
@@ -50,6 +52,7 @@ impl NodeKind {
         NodeKind::Response,
         NodeKind::Convergence,
         NodeKind::Theorem,
+        NodeKind::Integration,
     ];
 
     /// Display name.
@@ -65,6 +68,7 @@ impl NodeKind {
             NodeKind::Response => "filter response",
             NodeKind::Convergence => "convergence",
             NodeKind::Theorem => "sampling theorem",
+            NodeKind::Integration => "integration error",
         }
     }
 }
@@ -141,6 +145,8 @@ pub enum NodeError {
     Spectrum(Arc<SpectrumError>),
     #[error(transparent)]
     Theorem(#[from] TheoremError),
+    #[error(transparent)]
+    Study(#[from] crate::core::integration::StudyError),
     /// The job stopped because its token was cancelled.
     #[error("cancelled")]
     Cancelled,
@@ -160,6 +166,13 @@ pub enum NodeError {
         column + 1
     )]
     ImportedNeedsPattern { column: usize, what: &'static str },
+    /// The integration study on a column of imported points (they have one N).
+    #[error(
+        "column {} shows imported points: the integration study needs a pattern that makes \
+         every N of its curve",
+        column + 1
+    )]
+    ImportedNoStudy { column: usize },
     /// The job panicked (a bug; the message is the panic's).
     #[error("internal error (panic): {0}")]
     Panic(String),
@@ -197,6 +210,8 @@ pub enum NodeValue {
     Convergence(Arc<Vec<ConvergencePoint>>),
     /// The 1D sampling-theorem view.
     Theorem(Arc<crate::core::signal::theorem::TheoremView>),
+    /// The integration-error study.
+    Integration(Arc<IntegrationData>),
 }
 
 /// The results of a node's declared inputs, by kind.
@@ -241,6 +256,10 @@ impl NodeValue {
             NodeValue::Response(r) => img(&r.image) + pairs(&r.kernel) + pairs(&r.magnitude),
             NodeValue::Convergence(c) => c.len() * std::mem::size_of::<ConvergencePoint>(),
             NodeValue::Theorem(t) => t.approx_bytes(),
+            NodeValue::Integration(i) => {
+                i.study.rows.len() * std::mem::size_of::<crate::core::integration::StudyRow>()
+                    + i.thumbnail.values.len() * 4
+            }
         }
     }
 }

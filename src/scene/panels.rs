@@ -20,11 +20,18 @@ pub fn shows(scene: &Scene, column: usize, kind: PanelKind) -> bool {
         PanelKind::Reference | PanelKind::Error => recon && fx.error,
         PanelKind::Kernel | PanelKind::Response => p.filter,
         PanelKind::Convergence => p.cost && fx.convergence,
+        PanelKind::Integration => p.integration && column == 0,
         PanelKind::TheoremSignal
         | PanelKind::TheoremSpectrum
         | PanelKind::TheoremReconstructed
         | PanelKind::TheoremPair => p.theorem && column == 0,
     }
+}
+
+/// Whether the scene computes the integration study (of every column: the one plot of the
+/// integration figure, column 0's, shows them all).
+pub fn shows_integration(scene: &Scene) -> bool {
+    scene.panels.integration
 }
 
 /// The figures column `column` has, in [`PanelKind::ALL`] order: what `render` writes for it.

@@ -7,6 +7,7 @@ use super::figures::{self, FigureRequests};
 use super::gpu;
 use super::lecture;
 use super::panels::cost::CostPanel;
+use super::panels::integration::IntegrationPanel;
 use super::panels::theorem::TheoremPanel;
 use super::panels::{Panel, PanelCx};
 use super::playback::Playback;
@@ -57,6 +58,7 @@ pub struct SamplescopeApp {
     /// The column panels and where each column was drawn.
     columns: Columns,
     cost: CostPanel,
+    integration: IntegrationPanel,
     theorem: TheoremPanel,
     /// Playback of a scene with motion (frame shown, playing or not).
     playback: Playback,
@@ -118,6 +120,7 @@ impl SamplescopeApp {
             images: ImageView::new(gpu),
             columns: Columns::default(),
             cost: CostPanel,
+            integration: IntegrationPanel,
             theorem: TheoremPanel::default(),
             playback: Playback::default(),
             import: PointImport::default(),
@@ -411,6 +414,7 @@ impl SamplescopeApp {
             columns,
             cost,
             theorem,
+            integration,
             figures,
             ..
         } = self;
@@ -429,6 +433,12 @@ impl SamplescopeApp {
                 .resizable(true)
                 .default_size(220.0)
                 .show(ui, |ui| cost.ui(ui, &mut cx));
+        }
+        if integration.is_shown(&cx.scene.panels) {
+            egui::Panel::bottom("samplescope-integration")
+                .resizable(true)
+                .default_size(380.0)
+                .show(ui, |ui| integration.ui(ui, &mut cx));
         }
         if theorem.is_shown(&cx.scene.panels) {
             egui::Panel::bottom("samplescope-theorem")
@@ -456,13 +466,11 @@ impl SamplescopeApp {
             Some(c) => (c.scene.as_ref().clone(), &c.columns),
             None => (self.scene.clone(), &self.results),
         };
+        let columns = crate::scene::figure::columns_data(&scene, columns);
         figures::Snapshot {
             scene,
             scene_name: figures::scene_stem(&self.scene_name),
-            columns: columns
-                .iter()
-                .map(crate::scene::figure::column_data)
-                .collect(),
+            columns,
             spectrum_range: self
                 .view
                 .lock_scales
@@ -548,6 +556,7 @@ impl SamplescopeApp {
                 ui.checkbox(&mut p.filter, "Filter");
                 ui.checkbox(&mut p.cost, "Cost view (F4)");
                 ui.checkbox(&mut p.theorem, "Sampling theorem (1D)");
+                ui.checkbox(&mut p.integration, "Integration error");
             });
         egui::CollapsingHeader::new("Effects")
             .default_open(true)

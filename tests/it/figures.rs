@@ -27,8 +27,9 @@ const SCENE: &str = r#"(
     filter: (filter: (kind: "gaussian", sigma: 0.5, radius: 2.0, subtract_edge: true), mode: separable),
     recon: (mode: scattered, size: 64),
     spectrum: (size: 64, tolerance: 1e-6, exact: false, realizations: 1, mask_dc: true),
-    panels: (pattern: true, spectrum: true, zoneplate: true, filter: true, cost: true),
+    panels: (pattern: true, spectrum: true, zoneplate: true, filter: true, cost: true, integration: true),
     effects: (reconstruction: true, error: true, convergence: true, statistics: false),
+    integration: (ns: [16, 64, 256], realizations: 8),
 )"#;
 
 /// The test scene with every figure, the convergence curve included (its evaluation is the
@@ -41,6 +42,7 @@ fn scene() -> Scene {
 fn quick_scene() -> Scene {
     let mut s = scene();
     s.panels.cost = false;
+    s.panels.integration = false;
     s.effects.convergence = false;
     s
 }
@@ -57,15 +59,10 @@ fn columns(scene: &Scene) -> Vec<(FigureContext, ColumnData)> {
         );
         results[c].insert(kind, r);
     });
-    results
-        .iter()
+    scene_figure::columns_data(scene, &results)
+        .into_iter()
         .enumerate()
-        .map(|(c, r)| {
-            (
-                scene_figure::context(scene, c, "figure-test").unwrap(),
-                scene_figure::column_data(r),
-            )
-        })
+        .map(|(c, d)| (scene_figure::context(scene, c, "figure-test").unwrap(), d))
         .collect()
 }
 

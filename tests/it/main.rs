@@ -16,6 +16,7 @@ mod filter_metrics;
 mod filter_numerics;
 mod fuzz;
 mod import;
+mod integration_study;
 mod metrics_common;
 mod metrics_l2;
 mod metrics_min_distance;

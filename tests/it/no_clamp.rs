@@ -7,13 +7,17 @@ use eframe::egui;
 use egui_kittest::Harness;
 use samplescope::core::budget::Budget;
 use samplescope::core::filter::{Filter, Window, WindowedSinc};
+use samplescope::core::integration::Integrand;
 use samplescope::core::params::{ParamKind, ParamValue, Params};
 use samplescope::core::pattern::Pattern;
 use samplescope::core::signal::theorem::{
     Signal1D, EXTENT_RANGE, MAX_RATE, MAX_VDC_ROWS, MIN_RATE, PAIR_SCALE_RANGE, PAIR_SHIFT_RANGE,
 };
 use samplescope::core::signal::Signal;
-use samplescope::scene::{limits, Column, ReconMode, Scene, BUILTIN, MAX_COLUMNS};
+use samplescope::scene::integration::limits as integration_limits;
+use samplescope::scene::{
+    limits, Column, IntegrationSettings, ReconMode, Scene, BUILTIN, MAX_COLUMNS,
+};
 use samplescope::ui::SamplescopeApp;
 
 /// Every panel on, so that every control is drawn.
@@ -25,6 +29,7 @@ fn all_panels(mut s: Scene) -> Scene {
     p.filter = true;
     p.cost = true;
     p.theorem = true;
+    p.integration = true;
     s
 }
 
@@ -199,6 +204,49 @@ fn limit_scenes() -> Vec<(String, Scene)> {
             th(&|s| s.theorem.pair.shift = shift),
         );
     }
+    for f in Integrand::all() {
+        for g in at_limits(&f) {
+            let mut s = base.clone();
+            s.integration.integrand = g;
+            push(format!("integrand {g:?}"), s);
+        }
+    }
+    let study = |f: &dyn Fn(&mut IntegrationSettings)| {
+        let mut s = base.clone();
+        f(&mut s.integration);
+        s
+    };
+    let (n_lo, n_hi) = (*integration_limits::N.start(), *integration_limits::N.end());
+    for (name, ns) in [
+        ("one N at the minimum", vec![n_lo]),
+        ("one N at the maximum", vec![n_hi]),
+        (
+            "N not powers of two, unordered, repeated",
+            vec![1000, 10, 77, 10],
+        ),
+        ("the most N", vec![n_lo; *integration_limits::NS.end()]),
+    ] {
+        push(
+            format!("integration.ns: {name}"),
+            study(&|s| s.ns = ns.clone()),
+        );
+    }
+    for r in [
+        *integration_limits::REALIZATIONS.start(),
+        *integration_limits::REALIZATIONS.end(),
+    ] {
+        push(
+            format!("integration.realizations={r}"),
+            study(&|s| s.realizations = r),
+        );
+    }
+    push(
+        "integration randomize, no shift".into(),
+        study(&|s| {
+            s.randomize = true;
+            s.shift = false
+        }),
+    );
     for rows in [1, MAX_VDC_ROWS] {
         push(
             format!("theorem.vdc_rows={rows}"),

@@ -574,6 +574,7 @@ fn bits(v: &NodeValue) -> String {
         NodeValue::Response(r) => format!("{} {:?} {:?}", img(&r.image), r.magnitude, r.metrics),
         NodeValue::Convergence(c) => format!("{:?}", c.iter().map(|p| p.rmse).collect::<Vec<_>>()),
         NodeValue::Theorem(t) => format!("{:?}", t.errors),
+        NodeValue::Integration(i) => format!("{:?} {:?}", i.study.rows, i.study.slope),
     }
 }
 

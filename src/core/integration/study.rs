@@ -353,7 +353,7 @@ fn finish(
     start: Instant,
 ) -> Study {
     let t = Instant::now();
-    let rows = reduce(&req.ns, errors, req.realizations);
+    let rows = reduce(&req.ns, errors, errors.len() / req.ns.len().max(1));
     let (slope, slope_stderr) = log_log_fit(&rows);
     let reference = if req.randomize {
         references.iter().sum::<f64>() / references.len() as f64
@@ -377,6 +377,19 @@ pub fn run_study(
     req: &StudyRequest,
     cancel: &Cancel,
     progress: &mut dyn FnMut(usize, usize),
+) -> Result<Study, StudyError> {
+    run_study_progressive(req, cancel, progress, &mut |_, _| {})
+}
+
+/// As [`run_study`], and whenever the realizations done reach 1, 2, 4, 8, … (checked after
+/// each chunk of tasks, so some powers may be passed over), `partial(study, r)` receives the
+/// study of the first r < R realizations: exactly [`run_study`] with R = r, so the curve
+/// sharpens as realizations come in. The final result is the same bits as [`run_study`]'s.
+pub fn run_study_progressive(
+    req: &StudyRequest,
+    cancel: &Cancel,
+    progress: &mut dyn FnMut(usize, usize),
+    partial: &mut dyn FnMut(&Study, usize),
 ) -> Result<Study, StudyError> {
     check_request(req)?;
     let start = Instant::now();
@@ -404,6 +417,7 @@ pub fn run_study(
     let mut errors = vec![0.0; distinct * k_len];
     let mut references = vec![0.0; distinct];
     let mut done = 0usize;
+    let mut next_partial = 1usize;
     let mut i = 0;
     while i < tasks.len() {
         cancel.check()?;
@@ -429,6 +443,25 @@ pub fn run_study(
         done = done.saturating_add(w);
         i = j;
         progress(done, total);
+        // Tasks run in realization order: every realization before task j's is complete.
+        let complete = tasks.get(j).map_or(distinct, |t| t.r);
+        if !plan.identical && complete >= next_partial && complete < req.realizations {
+            let mut t = timings;
+            t.total = start.elapsed();
+            let sub = StudyRequest {
+                realizations: complete,
+                ..req.clone()
+            };
+            let study = finish(
+                &sub,
+                &errors[..complete * k_len],
+                &references[..complete],
+                t,
+                start,
+            );
+            partial(&study, complete);
+            next_partial = complete * 2;
+        }
     }
     if plan.identical {
         errors = errors.repeat(req.realizations);
@@ -986,6 +1019,51 @@ mod tests {
             let naive = run_study_naive(&req, &Cancel::never(), &mut |_, _| {}).unwrap();
             same_bits(&fast, &naive);
         }
+    }
+
+    #[test]
+    fn partial_studies_are_the_studies_of_their_first_realizations() {
+        // Enough points per realization that chunks end between realizations.
+        let req = StudyRequest {
+            pattern: Pattern::from_name("jitter").unwrap(),
+            ns: vec![64, 1024, 16384],
+            realizations: 40,
+            seed: 5,
+            ..StudyRequest::default()
+        };
+        let mut partials = Vec::new();
+        let last = run_study_progressive(&req, &Cancel::never(), &mut |_, _| {}, &mut |s, r| {
+            partials.push((r, s.clone()))
+        })
+        .unwrap();
+        assert!(partials.len() >= 2, "{} partials", partials.len());
+        let mut prev = 0;
+        for (r, s) in &partials {
+            assert!(*r > prev && *r < 40, "{prev} then {r}");
+            assert!(*r >= 2 * prev, "powers of two or later: {prev} then {r}");
+            prev = *r;
+            let sub = StudyRequest {
+                realizations: *r,
+                ..req.clone()
+            };
+            same_bits(
+                s,
+                &run_study_naive(&sub, &Cancel::never(), &mut |_, _| {}).unwrap(),
+            );
+        }
+        same_bits(&last, &study(&req));
+        // Identical realizations publish nothing part way.
+        let mut none = 0;
+        let fixed = StudyRequest {
+            pattern: Pattern::from_name("hammersley").unwrap(),
+            shift: false,
+            ..req.clone()
+        };
+        run_study_progressive(&fixed, &Cancel::never(), &mut |_, _| {}, &mut |_, _| {
+            none += 1
+        })
+        .unwrap();
+        assert_eq!(none, 0);
     }
 
     #[test]

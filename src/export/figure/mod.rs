@@ -48,6 +48,7 @@ mod convergence;
 mod csv;
 mod draw;
 mod error;
+mod integration;
 mod kernel;
 mod pattern;
 mod raps;
@@ -71,6 +72,7 @@ pub use composite::{
     column_png, column_rgba, column_size, comparison_png, comparison_rgba, comparison_size,
 };
 pub use draw::Frame;
+pub use integration::legend_label as integration_legend;
 pub use theorem::theorem_caption;
 
 /// The allowed figure scales (a figure at scale s is s × its base size).
@@ -127,6 +129,7 @@ pub fn figure(kind: PanelKind) -> &'static dyn Figure {
         PanelKind::TheoremSpectrum => &theorem_spectrum::TheoremSpectrum,
         PanelKind::TheoremReconstructed => &theorem_reconstructed::TheoremReconstructed,
         PanelKind::TheoremPair => &theorem_pair::TheoremPair,
+        PanelKind::Integration => &integration::Integration,
     }
 }
 

@@ -23,19 +23,20 @@ const KIND: PanelKind = PanelKind::TheoremSpectrum;
 const LEGEND_PART: u32 = 180;
 
 /// How an entry of the legend column is drawn.
-enum Mark {
+pub(super) enum Mark {
     Line(ShapeStyle),
     Dot(RGBColor),
 }
 
 /// The legend as a column of entries (a line or dot sample, then the label) from the top of
 /// `area`, level with the plot.
-fn legend_column(
+pub(super) fn legend_column(
     area: &Area<'_>,
     entries: &[(String, Mark)],
     f: &Frame<'_, '_>,
+    kind: PanelKind,
 ) -> Result<(), ExportError> {
-    let de = |e| draw_err(KIND, e);
+    let de = |e| draw_err(kind, e);
     let look = f.look;
     let style = look.text(TICK_PX).pos(Pos::new(HPos::Left, VPos::Center));
     let x0 = look.i(8);
@@ -145,7 +146,7 @@ impl Figure for TheoremSpectrum {
             "Nyquist ±f_s/2".to_string(),
             Mark::Line(look.line(NYQUIST, 1)),
         ));
-        legend_column(&legend_area, &entries, f)
+        legend_column(&legend_area, &entries, f, KIND)
     }
 
     fn csv(&self, data: &ColumnData) -> Result<String, ExportError> {

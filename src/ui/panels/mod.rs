@@ -3,12 +3,13 @@
 //! lent by the app for the frame.
 //!
 //! The column panels ([`pattern`], [`spectrum`], [`zoneplate`], [`filter`]) are laid out per
-//! column by [`crate::ui::columns`]; [`cost`] and [`theorem`] are docked below the columns by
+//! column by [`crate::ui::columns`]; [`cost`], [`integration`] and [`theorem`] are docked below the columns by
 //! the app. A new panel is a new file here implementing [`Panel`], plus one line where it is
 //! placed (the column list in `columns.rs`, or a dock in `app.rs`).
 
 pub mod cost;
 pub mod filter;
+pub mod integration;
 pub mod pattern;
 pub mod spectrum;
 pub mod theorem;

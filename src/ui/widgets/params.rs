@@ -101,6 +101,26 @@ pub fn signal_ui(ui: &mut egui::Ui, signal: &mut crate::core::signal::Signal) {
     params_ui(ui, signal);
 }
 
+/// Integrand selection (the integration study's families) and its parameters.
+pub fn integrand_ui(ui: &mut egui::Ui, f: &mut crate::core::integration::Integrand) {
+    use crate::core::integration::Integrand;
+    let mut name = f.name();
+    egui::ComboBox::from_label("Integrand")
+        .selected_text(name)
+        .show_ui(ui, |ui| {
+            for i in Integrand::all() {
+                ui.selectable_value(&mut name, i.name(), i.name())
+                    .on_hover_text(i.summary());
+            }
+        });
+    if name != f.name() {
+        if let Ok(i) = Integrand::from_name(name) {
+            *f = i;
+        }
+    }
+    params_ui(ui, f);
+}
+
 /// Filter selection, parameters (from the filter's descriptors), 2D mode and the
 /// Mitchell–Netravali (B, C) picker.
 pub fn filter_ui(ui: &mut egui::Ui, f2: &mut crate::core::filter::Filter2D) {

@@ -1,0 +1,128 @@
+//! The integration-error study of a scene: the integrand and the study's N, realizations and
+//! randomisation, shared by every column (each column studies its own pattern and seed).
+
+use crate::core::integration::{Integrand, StudyRequest, MAX_NS, MAX_REALIZATIONS, MAX_STUDY_N};
+use crate::core::pattern::Pattern;
+use serde::{Deserialize, Serialize};
+
+/// The integration panel's study (used only while `panels.integration` is on).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct IntegrationSettings {
+    /// The integrand (with `randomize`, the family each realization draws an instance of).
+    pub integrand: Integrand,
+    /// A new random instance of the integrand's family per realization.
+    pub randomize: bool,
+    /// The sample counts N of the curve, each in 1..=2²⁰, 1 to 64 values.
+    pub ns: Vec<usize>,
+    /// Realizations R per N, 1..=4096 (the panel shows them coming in: 1, 2, 4, … R).
+    pub realizations: usize,
+    /// Cranley–Patterson rotation of deterministic patterns per realization.
+    pub shift: bool,
+}
+
+impl Default for IntegrationSettings {
+    /// The disk, N = 16 … 4096 (powers of 2), 64 realizations, shifted.
+    fn default() -> Self {
+        IntegrationSettings {
+            integrand: Integrand::default(),
+            randomize: false,
+            ns: DEFAULT_NS.to_vec(),
+            realizations: 64,
+            shift: true,
+        }
+    }
+}
+
+/// The default sample counts: 16 … 4096 in powers of two.
+pub const DEFAULT_NS: [usize; 9] = [16, 32, 64, 128, 256, 512, 1024, 2048, 4096];
+
+/// The documented ranges of the settings (what `Scene::validate` checks and the GUI spans).
+pub mod limits {
+    use std::ops::RangeInclusive;
+    /// Each sample count.
+    pub const N: RangeInclusive<usize> = 1..=super::MAX_STUDY_N;
+    /// How many sample counts.
+    pub const NS: RangeInclusive<usize> = 1..=super::MAX_NS;
+    /// Realizations.
+    pub const REALIZATIONS: RangeInclusive<usize> = 1..=super::MAX_REALIZATIONS;
+}
+
+impl IntegrationSettings {
+    /// The study of a column's pattern and seed.
+    pub fn request(&self, pattern: Pattern, seed: u64) -> StudyRequest {
+        StudyRequest {
+            pattern,
+            integrand: self.integrand,
+            ns: self.ns.clone(),
+            realizations: self.realizations,
+            seed,
+            shift: self.shift,
+            randomize: self.randomize,
+        }
+    }
+
+    /// The first setting out of its range: (field, value, allowed). Parameters of the
+    /// integrand are checked by the caller through its descriptors.
+    pub fn check(&self) -> Option<(&'static str, String, String)> {
+        if !limits::NS.contains(&self.ns.len()) {
+            return Some((
+                "ns",
+                format!("{} values", self.ns.len()),
+                format!(
+                    "{} to {} sample counts",
+                    limits::NS.start(),
+                    limits::NS.end()
+                ),
+            ));
+        }
+        if let Some(n) = self.ns.iter().find(|n| !limits::N.contains(n)) {
+            return Some((
+                "ns",
+                n.to_string(),
+                format!(
+                    "sample counts in {}..={}",
+                    limits::N.start(),
+                    limits::N.end()
+                ),
+            ));
+        }
+        if !limits::REALIZATIONS.contains(&self.realizations) {
+            return Some((
+                "realizations",
+                self.realizations.to_string(),
+                format!(
+                    "an integer in {}..={}",
+                    limits::REALIZATIONS.start(),
+                    limits::REALIZATIONS.end()
+                ),
+            ));
+        }
+        None
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_default_is_valid_and_bad_values_name_their_field() {
+        assert_eq!(IntegrationSettings::default().check(), None);
+        let bad = |f: fn(&mut IntegrationSettings)| {
+            let mut s = IntegrationSettings::default();
+            f(&mut s);
+            s.check().map(|c| c.0)
+        };
+        assert_eq!(bad(|s| s.ns.clear()), Some("ns"));
+        assert_eq!(bad(|s| s.ns = vec![0]), Some("ns"));
+        assert_eq!(bad(|s| s.ns = vec![MAX_STUDY_N + 1]), Some("ns"));
+        assert_eq!(bad(|s| s.ns = vec![1; MAX_NS + 1]), Some("ns"));
+        assert_eq!(bad(|s| s.realizations = 0), Some("realizations"));
+        assert_eq!(
+            bad(|s| s.realizations = MAX_REALIZATIONS + 1),
+            Some("realizations")
+        );
+        assert_eq!(bad(|s| s.ns = vec![1, MAX_STUDY_N]), None);
+    }
+}
