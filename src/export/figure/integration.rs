@@ -27,6 +27,27 @@ fn plot_of(data: &ColumnData) -> Result<&IntegrationPlot, ExportError> {
         .ok_or_else(|| super::draw::missing(KIND))
 }
 
+/// The powers of ten in [lo, hi] (every other one beyond eight decades), or the 1-2-5 ticks
+/// when fewer than two powers fall inside.
+fn decades(lo: f64, hi: f64) -> Vec<f64> {
+    let (k0, k1) = (lo.log10().ceil() as i32, hi.log10().floor() as i32);
+    if k1 - k0 < 1 {
+        return log_ticks(lo, hi);
+    }
+    let step = if k1 - k0 > 8 { 2 } else { 1 };
+    (k0..=k1).step_by(step).map(|k| 10f64.powi(k)).collect()
+}
+
+/// An MSE tick: 1e-3 for a power of ten, else 2e-3.
+fn mse_label(v: &f64) -> String {
+    let k = v.log10().round();
+    if (v / 10f64.powf(k) - 1.0).abs() < 1e-9 {
+        format!("1e{k}")
+    } else {
+        format!("{v:.0e}")
+    }
+}
+
 /// "label: slope −1.52 ± 0.03" (or "no slope" with fewer than two usable N).
 pub fn legend_label(label: &str, slope: Option<f64>, stderr: Option<f64>) -> String {
     match (slope, stderr) {
@@ -70,13 +91,13 @@ impl Figure for Integration {
         (900, 510)
     }
 
-    fn title(&self, ctx: &FigureContext, data: &ColumnData) -> String {
+    fn title(&self, _ctx: &FigureContext, data: &ColumnData) -> String {
         let integrand = plot_of(data)
             .ok()
             .and_then(|p| p.curves.first())
             .map(|c| c.data.integrand.split(' ').next().unwrap_or("").to_string())
             .unwrap_or_default();
-        format!("Integration error of the {integrand}, {}", ctx.scene_title)
+        format!("Monte Carlo integration error of the {integrand} integrand: MSE against N")
     }
 
     fn has_data(&self, data: &ColumnData) -> bool {
@@ -109,7 +130,7 @@ impl Figure for Integration {
             .y_label_area_size(look.u(Y_LABEL + 10))
             .build_cartesian_2d(
                 (x0..x1).log_scale().with_key_points(log_ticks(x0, x1)),
-                (y0..y1).log_scale().with_key_points(log_ticks(y0, y1)),
+                (y0..y1).log_scale().with_key_points(decades(y0, y1)),
             )
             .map_err(de)?;
         ch.configure_mesh()
@@ -122,31 +143,34 @@ impl Figure for Integration {
             .max_light_lines(0)
             .bold_line_style(look.line(RGBColor(232, 232, 232), 1))
             .x_label_formatter(&tick_label)
-            .y_label_formatter(&|v| format!("{v:.0e}"))
+            .y_label_formatter(&mse_label)
             .draw()
             .map_err(de)?;
         // Guides, clipped to the plot, labelled with their slope at their right end.
-        let clip = |(x, y): (f64, f64)| (x, y.clamp(y0, y1));
         if let Some((n0, mse0)) = plot.anchor() {
             let text = look.text(TICK_PX).color(&GUIDE);
             for s in GUIDE_SLOPES {
                 // Where the guide leaves the plot at the bottom, it ends there.
-                let x_end = (n0 * (y0 / mse0).powf(1.0 / s)).min(x1);
+                let x_end = (n0 * (y0 / mse0).powf(1.0 / s)).min(x1 / 1.2);
                 let [a, b] = guide_line(s, n0, mse0, n0, x_end);
                 ch.draw_series(DashedLineSeries::new(
-                    [clip(a), clip(b)],
+                    [a, b],
                     look.u(6),
                     look.u(4),
                     look.line(GUIDE, 1),
                 ))
                 .map_err(de)?;
                 let label = crate::core::params::fmt_num(s).replacen('-', "−", 1);
-                let (px, py) = ch.backend_coord(&clip(b));
-                main.draw_text(
-                    &label,
-                    &text.clone().pos(Pos::new(HPos::Left, VPos::Bottom)),
-                    (px + look.i(3), py - look.i(2)),
-                )
+                let anchor = if b.1 <= y0 * 1.01 {
+                    Pos::new(HPos::Center, VPos::Bottom)
+                } else {
+                    Pos::new(HPos::Left, VPos::Center)
+                };
+                ch.draw_series(std::iter::once(Text::new(
+                    label,
+                    b,
+                    text.clone().pos(anchor),
+                )))
                 .map_err(de)?;
             }
         }
@@ -163,24 +187,25 @@ impl Figure for Integration {
                 .collect();
             let mut pts: Vec<(f64, f64)> = rows.iter().map(|r| (r.n as f64, r.mse)).collect();
             pts.sort_by(|a, b| a.0.total_cmp(&b.0));
+            // Error bars ±1 s.e. (down to the axis where mse − s.e. ≤ 0), capped; the caps
+            // span ±1 % of the N axis' decades.
+            let cap = (x1 / x0).powf(0.01);
             for r in &rows {
                 if let Some(se) = r.mse_stderr.filter(|s| *s > 0.0 && s.is_finite()) {
                     let x = r.n as f64;
                     let lo = if r.mse - se > y0 { r.mse - se } else { y0 };
-                    let cap = look.i(4);
-                    let (px, plo) = ch.backend_coord(&(x, lo));
-                    let (_, phi) = ch.backend_coord(&(x, (r.mse + se).min(y1)));
+                    let hi = (r.mse + se).min(y1);
                     let style = look.line(colour, 1);
-                    for seg in [
-                        [(px, plo), (px, phi)],
-                        [(px - cap, plo), (px + cap, plo)],
-                        [(px - cap, phi), (px + cap, phi)],
-                    ] {
-                        ch.plotting_area()
-                            .strip_coord_spec()
-                            .draw(&PathElement::new(seg.to_vec(), style))
-                            .map_err(de)?;
-                    }
+                    ch.draw_series(
+                        [
+                            vec![(x, lo), (x, hi)],
+                            vec![(x / cap, lo), (x * cap, lo)],
+                            vec![(x / cap, hi), (x * cap, hi)],
+                        ]
+                        .into_iter()
+                        .map(|seg| PathElement::new(seg, style)),
+                    )
+                    .map_err(de)?;
                 }
             }
             let style = look.line(colour, 2);
