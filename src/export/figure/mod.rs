@@ -68,7 +68,9 @@ use crate::model::{sanitize, ColumnData, FigureContext, PanelKind};
 
 pub use canvas::{Area, Canvas, CanvasError};
 pub use composite::{
-    column_png, column_rgba, column_size, comparison_png, comparison_rgba, comparison_size,
+    column_layout, column_png, column_rgba, column_size, comparison_layout, comparison_png,
+    comparison_rgba, comparison_size, comparison_title_lines, fill, text_width, wrap, Aspect,
+    AspectError, Layout,
 };
 pub use draw::Frame;
 pub use theorem::theorem_caption;
