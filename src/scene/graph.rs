@@ -138,7 +138,9 @@ pub struct NodeDef {
 pub static NODES: [NodeDef; 10] = [
     NodeDef {
         kind: NodeKind::Points,
-        shown: |s, c| panels::shows(s, c, PanelKind::Pattern),
+        shown: |s, c| {
+            panels::shows(s, c, PanelKind::Pattern) || panels::shows(s, c, PanelKind::Sphere)
+        },
         inputs: |s, c| {
             let col = &s.columns[c];
             match &col.points {

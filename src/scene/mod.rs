@@ -181,6 +181,8 @@ pub struct Panels {
     pub cost: bool,
     /// The 1D sampling-theorem view (signal, replicas, filter, pre-/post-aliasing).
     pub theorem: bool,
+    /// The points wrapped onto the sphere (the lecture's cylinder wrap and radial projection).
+    pub sphere: bool,
 }
 
 impl Default for Panels {
@@ -192,6 +194,7 @@ impl Default for Panels {
             filter: true,
             cost: false,
             theorem: false,
+            sphere: false,
         }
     }
 }

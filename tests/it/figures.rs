@@ -108,8 +108,12 @@ fn every_panel_png_decodes_at_base_size_times_scale() {
     let kinds = panels::available(&scene);
     assert_eq!(
         kinds.len(),
-        PanelKind::ALL.iter().filter(|k| !k.is_theorem()).count(),
-        "the scene shows every figure but the theorem's (tested on their own scene below)"
+        PanelKind::ALL
+            .iter()
+            .filter(|&&k| !k.is_theorem() && k != PanelKind::Sphere)
+            .count(),
+        "the scene shows every figure but the theorem's and the sphere's (tested on their own \
+         scenes below)"
     );
     for kind in kinds {
         for scale in [1, 2] {
@@ -1036,4 +1040,65 @@ fn the_net_scene_columns_carry_their_elementary_k_into_the_figures() {
         let ctx = scene_figure::context(&scene, c, "net").unwrap();
         assert_eq!(ctx.elementary_k, want);
     }
+}
+
+/// The sphere figure of a Hammersley set of 256 points (p1 = 3), the only panel shown.
+fn sphere_data() -> (FigureContext, ColumnData) {
+    let scene = Scene::from_ron(
+        r#"(
+            title: "Sphere test",
+            columns: [(pattern: (kind: "hammersley", p1: 3), seed: 0, label: "p1 = 3")],
+            n: 256,
+            panels: (pattern: false, spectrum: false, zoneplate: false, filter: false, sphere: true),
+        )"#,
+        "sphere.ron",
+    )
+    .unwrap();
+    assert_eq!(panels::available(&scene), vec![PanelKind::Sphere]);
+    columns(&scene).remove(0)
+}
+
+#[test]
+fn sphere_figure_draws_discs_in_both_views_and_repeats_byte_for_byte() {
+    let (ctx, data) = sphere_data();
+    let n = data.points.as_ref().unwrap().points.len();
+    assert_eq!(n, 256);
+    let bytes = panel_png(PanelKind::Sphere, &ctx, &data, 1).unwrap();
+    assert_eq!(bytes, panel_png(PanelKind::Sphere, &ctx, &data, 1).unwrap());
+    let (info, px, text) = decode(&bytes);
+    assert_eq!((info.width, info.height), base_size(PanelKind::Sphere));
+    assert_eq!(meta(&text, "figure"), "sphere");
+    assert!(meta(&text, "views").contains("front") && meta(&text, "mapping").contains("cylinder"));
+    let w = info.width as usize;
+    // Dark (near points) and dimmed (far points) pixels in each half, inside the disc band.
+    for (x0, x1) in [(0, w / 2), (w / 2, w)] {
+        let (mut ink, mut dim) = (0, 0);
+        for y in 60..460 {
+            for x in x0..x1 {
+                let i = (y * w + x) * 3;
+                let p = [px[i], px[i + 1], px[i + 2]];
+                if p.iter().all(|&c| c < 80) {
+                    ink += 1;
+                }
+                if p == [196, 200, 212] {
+                    dim += 1;
+                }
+            }
+        }
+        assert!(ink > 20 * 128 / 2, "{x0}..{x1}: {ink} ink pixels");
+        assert!(dim > 10 * 128 / 2, "{x0}..{x1}: {dim} dimmed pixels");
+    }
+    // The CSV holds every point on the unit sphere.
+    let csv = panel_csv(PanelKind::Sphere, &ctx, &data).unwrap();
+    let lines: Vec<&str> = csv.lines().collect();
+    assert_eq!(lines[0], "x,y,z");
+    assert_eq!(lines.len(), n + 1);
+    for l in &lines[1..] {
+        let v: Vec<f64> = l.split(',').map(|t| t.parse().unwrap()).collect();
+        let r = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
+        assert!((r - 1.0).abs() < 1e-12, "{l}");
+    }
+    // At scale 2 the same picture, twice the size.
+    let (info, _, _) = decode(&panel_png(PanelKind::Sphere, &ctx, &data, 2).unwrap());
+    assert_eq!(info.width, 2 * base_size(PanelKind::Sphere).0);
 }

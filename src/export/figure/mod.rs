@@ -55,6 +55,7 @@ mod reconstruction;
 mod reference;
 mod response;
 mod spectrum;
+mod sphere;
 mod svg;
 mod text;
 mod theorem;
@@ -117,6 +118,7 @@ pub trait Figure: Sync {
 pub fn figure(kind: PanelKind) -> &'static dyn Figure {
     match kind {
         PanelKind::Pattern => &pattern::Pattern,
+        PanelKind::Sphere => &sphere::Sphere,
         PanelKind::Spectrum => &spectrum::Spectrum,
         PanelKind::Raps => &raps::Raps,
         PanelKind::Reconstruction => &reconstruction::Reconstruction,
@@ -252,6 +254,7 @@ pub fn panel_svg(
 /// | kind | columns |
 /// |---|---|
 /// | pattern | `x,y` |
+/// | sphere | `x,y,z` (the points on the unit sphere, as `points --sphere` writes them) |
 /// | spectrum | `kx,ky,log10_power` (the displayed image: ky ascending, then kx; a masked DC holds the mean of its 8 neighbours) |
 /// | raps | `radius,power` |
 /// | reconstruction, reference, error | one image row per line, top row first, no header |

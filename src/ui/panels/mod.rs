@@ -11,6 +11,7 @@ pub mod cost;
 pub mod filter;
 pub mod pattern;
 pub mod spectrum;
+pub mod sphere;
 pub mod theorem;
 pub mod zoneplate;
 
