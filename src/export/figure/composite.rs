@@ -24,7 +24,9 @@
 //! **Locked scales.** When every column of a comparison draws its periodogram with the same
 //! colour range and map (the GUI's "Lock scales"; `samplescope render` always shares one
 //! range), the periodograms are drawn without their bars and one shared bar stands at the
-//! right of the first row of blocks, level with their images.
+//! right of the first row of blocks, level with their images — where the periodogram ends its
+//! row of panels, so that the bar stands beside one (elsewhere each keeps its own bar, with
+//! the same range). The layouts are measured each with its own choice.
 //!
 //! **Titles never cut.** The scene's title wraps onto a second line when it is wider than the
 //! figure (less a margin each side), and the second line ends in "…" if the rest does not fit;
@@ -183,23 +185,50 @@ fn panel_rows(sizes: &[(u32, u32)], cols: usize) -> Vec<(u64, u64)> {
         .collect()
 }
 
+/// The sizes of a block's panels at scale 1, in order.
+type Sizes<'a> = &'a [(u32, u32)];
+
 /// What a layout is measured with, at scale 1.
 #[derive(Debug, Clone)]
 struct Shape<'a> {
-    /// The panels of every block, in order.
-    panels: &'a [(u32, u32)],
+    /// The panels of every block, in order, each with its own colour bar.
+    own: &'a [(u32, u32)],
+    /// Where the periodograms share one bar: the panels with the periodogram's bar left out,
+    /// the periodogram's index and the shared bar's width.
+    shared: Option<(Sizes<'a>, usize, u64)>,
     /// Number of blocks.
     blocks: usize,
-    /// Height of the band above the blocks (the title), and width of the strip at their
-    /// right (the shared bar).
+    /// Height of the band above the blocks (the title).
     head: u64,
-    bar: u64,
 }
 
 impl Shape<'_> {
+    /// Whether `layout` draws the shared bar: only where the periodogram ends its row of
+    /// panels, so that the bar at the right of the first row of blocks stands beside one.
+    fn uses_bar(&self, layout: Layout) -> bool {
+        self.shared
+            .is_some_and(|(p, i, _)| (i + 1) % layout.panel_cols.max(1) == 0 || i + 1 == p.len())
+    }
+
+    /// The panels of `layout`'s blocks.
+    fn panels(&self, layout: Layout) -> &[(u32, u32)] {
+        match self.shared {
+            Some((p, _, _)) if self.uses_bar(layout) => p,
+            _ => self.own,
+        }
+    }
+
+    /// The width of the shared bar's strip in `layout` (0 without one).
+    fn bar(&self, layout: Layout) -> u64 {
+        match self.shared {
+            Some((_, _, w)) if self.uses_bar(layout) => w,
+            _ => 0,
+        }
+    }
+
     /// (block width, block height) of `layout`.
     fn block(&self, layout: Layout) -> (u64, u64) {
-        let rows = panel_rows(self.panels, layout.panel_cols);
+        let rows = panel_rows(self.panels(layout), layout.panel_cols);
         let w = rows.iter().map(|r| r.0).max().unwrap_or(0);
         let h = rows.iter().map(|r| r.1).sum::<u64>() + CAPTION_H as u64;
         (w, h)
@@ -209,7 +238,7 @@ impl Shape<'_> {
     fn size(&self, layout: Layout) -> (u64, u64) {
         let (bw, bh) = self.block(layout);
         (
-            bw * layout.block_cols as u64 + self.bar,
+            bw * layout.block_cols as u64 + self.bar(layout),
             self.head + bh * layout.block_rows as u64,
         )
     }
@@ -227,7 +256,7 @@ impl Shape<'_> {
         };
         let mut out = Vec::new();
         for &(block_cols, block_rows) in &grids(self.blocks) {
-            for &(panel_cols, panel_rows) in &grids(self.panels.len()) {
+            for &(panel_cols, panel_rows) in &grids(self.own.len()) {
                 out.push(Layout {
                     block_cols,
                     block_rows,
@@ -250,7 +279,7 @@ impl Shape<'_> {
         let f = aspect.ratio();
         let area: f64 = self.blocks as f64
             * self
-                .panels
+                .panels(layout)
                 .iter()
                 .map(|&(w, h)| w as f64 * h as f64)
                 .sum::<f64>();
@@ -411,30 +440,31 @@ fn plan(
     scale: u32,
     aspect: Aspect,
 ) -> Plan {
-    let base: Vec<(u32, u32)> = kinds
+    let own: Vec<(u32, u32)> = kinds.iter().map(|&k| figure(k).base_size()).collect();
+    let without_bar: Vec<(u32, u32)> = kinds
         .iter()
-        .map(|&k| match (k, bar) {
-            (PanelKind::Spectrum, Some(_)) => SpectrumWithoutBar.base_size(),
+        .map(|&k| match k {
+            PanelKind::Spectrum => SpectrumWithoutBar.base_size(),
             _ => figure(k).base_size(),
         })
         .collect();
-    let bar_w = if bar.is_some() {
-        SharedBar {
-            lo: 0.0,
-            hi: 1.0,
-            colormap: Colormap::Viridis,
-        }
-        .base_size()
-        .0 as u64
-    } else {
-        0
-    };
+    let bar_w = SharedBar {
+        lo: 0.0,
+        hi: 1.0,
+        colormap: Colormap::Viridis,
+    }
+    .base_size()
+    .0 as u64;
+    let shared = bar.and_then(|_| {
+        let i = kinds.iter().position(|&k| k == PanelKind::Spectrum)?;
+        Some((without_bar.as_slice(), i, bar_w))
+    });
     let head1 = if title.is_some() { HEADING_H as u64 } else { 0 };
     let shape = Shape {
-        panels: &base,
+        own: &own,
+        shared,
         blocks: blocks.max(1),
         head: head1,
-        bar: bar_w,
     };
     let layout = shape.choose(aspect);
     let s = scale as u64;
@@ -451,15 +481,20 @@ fn plan(
     let shape = Shape { head, ..shape };
     let (w, h) = shape.size(layout);
     let (bw, bh) = shape.block(layout);
+    let uses_bar = shape.uses_bar(layout);
     Plan {
         kinds: kinds.to_vec(),
         layout,
         scale,
-        panels: base.iter().map(|&(w, h)| (w * scale, h * scale)).collect(),
+        panels: shape
+            .panels(layout)
+            .iter()
+            .map(|&(w, h)| (w * scale, h * scale))
+            .collect(),
         heading,
         head: head * s,
-        bar,
-        bar_w: bar_w * s,
+        bar: bar.filter(|_| uses_bar),
+        bar_w: shape.bar(layout) * s,
         block: (bw * s, bh * s),
         size: (w * s, h * s),
     }
@@ -850,11 +885,49 @@ mod tests {
 
     fn shape(panels: &[(u32, u32)], blocks: usize) -> Shape<'_> {
         Shape {
-            panels,
+            own: panels,
+            shared: None,
             blocks,
             head: HEADING_H as u64,
-            bar: 0,
         }
+    }
+
+    #[test]
+    fn the_shared_bar_stands_only_where_a_periodogram_ends_its_row() {
+        const BARLESS: (u32, u32) = (480, 510);
+        // Two panels, the periodogram second: stacked or side by side, it ends its row.
+        let own = [PATTERN, SPECTRUM];
+        let without = [PATTERN, BARLESS];
+        let s = Shape {
+            shared: Some((&without, 1, 110)),
+            ..shape(&own, 3)
+        };
+        let l = s.choose(Aspect::SLIDE);
+        assert!(s.uses_bar(l), "{l}");
+        assert_eq!(s.size(l).0, l.block_cols as u64 * s.block(l).0 + 110);
+        // Five panels in one row, the periodogram second: no shared bar, each keeps its own.
+        let own = [PATTERN, SPECTRUM, PATTERN, LINE_PLOT, LINE_PLOT];
+        let without = [PATTERN, BARLESS, PATTERN, LINE_PLOT, LINE_PLOT];
+        let s = Shape {
+            shared: Some((&without, 1, 110)),
+            ..shape(&own, 3)
+        };
+        let row = Layout {
+            block_cols: 1,
+            block_rows: 3,
+            panel_cols: 5,
+            panel_rows: 1,
+        };
+        assert!(!s.uses_bar(row));
+        assert_eq!(s.size(row).0, 480 + 590 + 480 + 640 + 640);
+        let pairs = Layout {
+            panel_cols: 2,
+            panel_rows: 3,
+            ..row
+        };
+        assert!(s.uses_bar(pairs));
+        // Rows (pattern, periodogram), (pattern, kernel), (response): the widest sets it.
+        assert_eq!(s.size(pairs).0, 480 + 640 + 110);
     }
 
     #[test]
