@@ -3,7 +3,7 @@
 //! Loads the scene, evaluates its compute graph synchronously, and writes, for every column,
 //! each figure its visible panels show (PNG, SVG, CSV; the figures of
 //! [`samplescope::scene::panels`]' rule), the column composite, and the comparison of all
-//! columns, printing one line per file. The 1D sampling-theorem figures
+//! columns (laid out to fill a 16:9 frame, or `--aspect W:H`), printing one line per file. The 1D sampling-theorem figures
 //! belong to column 0 only (the view does not depend on the column). The periodograms of all columns
 //! share one colour range (the union of their automatic ranges), as locked scales do in
 //! the GUI. Same scene → byte-identical files.
@@ -15,7 +15,7 @@ use samplescope::core::cancel::Cancel;
 use samplescope::engine::Evaluator;
 use samplescope::export::figure::{
     column_file_name, column_png, comparison_file_name, comparison_png, comparison_size, panel_csv,
-    panel_file_name, panel_png, panel_svg, MAX_COMPOSITE_PIXELS, SCALES,
+    panel_file_name, panel_png, panel_svg, Aspect, MAX_COMPOSITE_PIXELS, SCALES,
 };
 use samplescope::export::ExportError;
 use samplescope::model::{ColumnData, FigureContext};
@@ -39,9 +39,19 @@ pub struct RenderArgs {
     /// Formats to write, comma-separated: png, svg, csv (composites are PNG only).
     #[arg(long, value_delimiter = ',', default_value = "png,svg,csv", value_enum)]
     pub format: Vec<Format>,
+    /// Shape of the frame the composites are laid out to fill, W:H with W and H positive
+    /// numbers and W/H in 0.1..=10 (e.g. 16:9, 4:3, 1:1, 9:16). The column and comparison
+    /// composites take the grid of panels that covers the largest part of such a frame.
+    #[arg(long, value_name = "W:H", default_value = "16:9", value_parser = parse_aspect)]
+    pub aspect: Aspect,
     /// Compute reference images even if the disk cache has them (and store nothing there).
     #[arg(long)]
     pub no_cache: bool,
+}
+
+fn parse_aspect(text: &str) -> Result<Aspect, String> {
+    text.parse()
+        .map_err(|e: samplescope::export::figure::AspectError| e.to_string())
 }
 
 /// An output format.
@@ -221,11 +231,11 @@ pub fn run(args: &RenderArgs, session: &Session) -> Result<(), CliError> {
         }
         let own = panels::composite_in(&scene, c);
         if !own.is_empty() && formats.contains(&Format::Png) {
-            let bytes = column_png(&own, ctx, data, s).map_err(export_err)?;
+            let bytes = column_png(&own, ctx, data, s, args.aspect).map_err(export_err)?;
             write(&args.out.join(column_file_name(ctx, s)), &bytes, cancel)?;
         }
     }
-    let (cw, ch) = comparison_size(&composite, columns.len(), s);
+    let (cw, ch) = comparison_size(&composite, &columns, s, args.aspect);
     if !composite.is_empty() && formats.contains(&Format::Png) && cw * ch > MAX_COMPOSITE_PIXELS {
         eprintln!(
             "warning: comparison skipped: {} columns at --scale {s} would be {cw}×{ch} pixels, \
@@ -233,7 +243,7 @@ pub fn run(args: &RenderArgs, session: &Session) -> Result<(), CliError> {
             columns.len()
         );
     } else if !composite.is_empty() && formats.contains(&Format::Png) {
-        let bytes = comparison_png(&composite, &columns, s).map_err(export_err)?;
+        let bytes = comparison_png(&composite, &columns, s, args.aspect).map_err(export_err)?;
         let name = columns
             .first()
             .map(|(c, _)| comparison_file_name(&c.scene_name, scene.n, s))

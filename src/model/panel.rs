@@ -5,6 +5,9 @@
 pub enum PanelKind {
     /// The points in the unit square.
     Pattern,
+    /// The points wrapped onto the sphere (cylinder wrap, radial projection): front and back
+    /// orthographic views.
+    Sphere,
     /// The periodogram image (log10 P through a colour map) with a colour bar.
     Spectrum,
     /// The radially averaged power spectrum as a line plot.
@@ -40,8 +43,9 @@ pub enum PanelKind {
 
 impl PanelKind {
     /// Every kind, in the order `render` writes them.
-    pub const ALL: [PanelKind; 14] = [
+    pub const ALL: [PanelKind; 15] = [
         PanelKind::Pattern,
+        PanelKind::Sphere,
         PanelKind::Spectrum,
         PanelKind::Raps,
         PanelKind::Reconstruction,
@@ -66,10 +70,11 @@ impl PanelKind {
     ];
 
     /// The kinds a composite may hold, in its order: one per panel as the GUI first shows it
-    /// (pattern, periodogram, reconstruction, kernel and response), then the theorem's
+    /// (pattern, sphere, periodogram, reconstruction, kernel and response), then the theorem's
     /// signal, spectrum and reconstructed spectrum (not the transform pair).
-    pub const COMPOSITE: [PanelKind; 8] = [
+    pub const COMPOSITE: [PanelKind; 9] = [
         PanelKind::Pattern,
+        PanelKind::Sphere,
         PanelKind::Spectrum,
         PanelKind::Reconstruction,
         PanelKind::Kernel,
@@ -89,6 +94,7 @@ impl PanelKind {
     pub fn name(self) -> &'static str {
         match self {
             PanelKind::Pattern => "pattern",
+            PanelKind::Sphere => "sphere",
             PanelKind::Spectrum => "spectrum",
             PanelKind::Raps => "raps",
             PanelKind::Reconstruction => "reconstruction",

@@ -139,7 +139,9 @@ pub struct NodeDef {
 pub static NODES: [NodeDef; 11] = [
     NodeDef {
         kind: NodeKind::Points,
-        shown: |s, c| panels::shows(s, c, PanelKind::Pattern),
+        shown: |s, c| {
+            panels::shows(s, c, PanelKind::Pattern) || panels::shows(s, c, PanelKind::Sphere)
+        },
         inputs: |s, c| {
             let col = &s.columns[c];
             match &col.points {

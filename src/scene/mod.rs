@@ -186,6 +186,8 @@ pub struct Panels {
     /// The integration-error study: MSE of the Monte Carlo estimate against N, every column
     /// on one log–log plot.
     pub integration: bool,
+    /// The points wrapped onto the sphere (the lecture's cylinder wrap and radial projection).
+    pub sphere: bool,
 }
 
 impl Default for Panels {
@@ -198,6 +200,7 @@ impl Default for Panels {
             cost: false,
             theorem: false,
             integration: false,
+            sphere: false,
         }
     }
 }

@@ -15,6 +15,7 @@ pub fn shows(scene: &Scene, column: usize, kind: PanelKind) -> bool {
     let recon = p.zoneplate && fx.reconstruction;
     match kind {
         PanelKind::Pattern => p.pattern,
+        PanelKind::Sphere => p.sphere,
         PanelKind::Spectrum | PanelKind::Raps => p.spectrum,
         PanelKind::Reconstruction => recon,
         PanelKind::Reference | PanelKind::Error => recon && fx.error,

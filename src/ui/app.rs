@@ -551,6 +551,7 @@ impl SamplescopeApp {
             .show(ui, |ui| {
                 let p = &mut self.scene.panels;
                 ui.checkbox(&mut p.pattern, "Pattern");
+                ui.checkbox(&mut p.sphere, "Sphere");
                 ui.checkbox(&mut p.spectrum, "Spectrum (F2)");
                 ui.checkbox(&mut p.zoneplate, "Zone plate");
                 ui.checkbox(&mut p.filter, "Filter");

@@ -3,6 +3,7 @@
 use super::panels::filter::FilterPanel;
 use super::panels::pattern::PatternPanel;
 use super::panels::spectrum::SpectrumPanel;
+use super::panels::sphere::SpherePanel;
 use super::panels::zoneplate::ZonePlatePanel;
 use super::panels::{Panel, PanelCx};
 use crate::scene::graph::NodeKind;
@@ -21,6 +22,7 @@ impl Default for Columns {
         Columns {
             panels: vec![
                 Box::new(PatternPanel),
+                Box::new(SpherePanel::default()),
                 Box::new(SpectrumPanel),
                 Box::new(ZonePlatePanel),
                 Box::new(FilterPanel),

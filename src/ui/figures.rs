@@ -14,6 +14,9 @@ use eframe::egui;
 use std::path::{Path, PathBuf};
 use std::sync::mpsc::{channel, Receiver, Sender};
 
+/// The frame the GUI's composites are laid out to fill: a 16:9 slide.
+const SLIDE: figure::Aspect = figure::Aspect::SLIDE;
+
 /// What a figure request covers.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Target {
@@ -281,12 +284,12 @@ impl Snapshot {
                 match out {
                     Output::Clipboard { scale } => {
                         let (w, h, rgba) =
-                            figure::column_rgba(&kinds, &ctx, data, scale).map_err(err)?;
+                            figure::column_rgba(&kinds, &ctx, data, scale, SLIDE).map_err(err)?;
                         Made::Image(w, h, rgba, figure::column_file_name(&ctx, scale))
                     }
                     Output::Png { scale } => Made::File(
                         figure::column_file_name(&ctx, scale),
-                        figure::column_png(&kinds, &ctx, data, scale).map_err(err)?,
+                        figure::column_png(&kinds, &ctx, data, scale, SLIDE).map_err(err)?,
                     ),
                     Output::Svg { .. } | Output::Csv => {
                         return Err("SVG and CSV are written per panel".into())
@@ -303,12 +306,12 @@ impl Snapshot {
                 match out {
                     Output::Clipboard { scale } => {
                         let (w, h, rgba) =
-                            figure::comparison_rgba(&kinds, &cols, scale).map_err(err)?;
+                            figure::comparison_rgba(&kinds, &cols, scale, SLIDE).map_err(err)?;
                         Made::Image(w, h, rgba, name(scale))
                     }
                     Output::Png { scale } => Made::File(
                         name(scale),
-                        figure::comparison_png(&kinds, &cols, scale).map_err(err)?,
+                        figure::comparison_png(&kinds, &cols, scale, SLIDE).map_err(err)?,
                     ),
                     Output::Svg { .. } | Output::Csv => {
                         return Err("SVG and CSV are written per panel".into())
@@ -556,12 +559,10 @@ mod tests {
             .unwrap()
             .info()
             .clone();
-        let want: u32 = scene::panels::composite_in(&snapshot.scene, 0)
-            .iter()
-            .map(|&k| figure::base_size(k).0)
-            .sum();
-        assert_eq!(info.width, want);
-        assert!(want > figure::base_size(PanelKind::Pattern).0 + 3 * 600);
+        let kinds = scene::panels::composite_in(&snapshot.scene, 0);
+        assert_eq!(kinds.len(), 4, "the pattern and three theorem figures");
+        let want = figure::column_size(&kinds, 1, SLIDE);
+        assert_eq!((info.width as u64, info.height as u64), want);
         written(Request {
             target: Target::Comparison,
             output: Output::Png { scale: 1 },

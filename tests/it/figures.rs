@@ -6,8 +6,9 @@ use samplescope::core::recon::{Reconstruction, ZERO_WEIGHT_FILL};
 use samplescope::core::signal::theorem::TheoremView;
 use samplescope::engine::Evaluator;
 use samplescope::export::figure::{
-    base_size, column_png, column_size, comparison_png, comparison_size, figure, panel_csv,
-    panel_file_name, panel_png, panel_rgba, panel_svg, MAX_COMPOSITE_PIXELS, SCALES,
+    base_size, column_layout, column_png, column_size, comparison_layout, comparison_png,
+    comparison_size, comparison_title_lines, figure, fill, panel_csv, panel_file_name, panel_png,
+    panel_rgba, panel_svg, text_width, Aspect, Layout, MAX_COMPOSITE_PIXELS, SCALES,
 };
 use samplescope::export::ExportError;
 use samplescope::model::{ColumnData, FigureContext, PanelKind, PointsData, ReconData};
@@ -104,8 +105,12 @@ fn every_panel_png_decodes_at_base_size_times_scale() {
     let kinds = panels::available(&scene);
     assert_eq!(
         kinds.len(),
-        PanelKind::ALL.iter().filter(|k| !k.is_theorem()).count(),
-        "the scene shows every figure but the theorem's (tested on their own scene below)"
+        PanelKind::ALL
+            .iter()
+            .filter(|&&k| !k.is_theorem() && k != PanelKind::Sphere)
+            .count(),
+        "the scene shows every figure but the theorem's and the sphere's (tested on their own \
+         scenes below)"
     );
     for kind in kinds {
         for scale in [1, 2] {
@@ -308,8 +313,8 @@ fn same_inputs_give_byte_identical_png_and_svg() {
     }
     let kinds = panels::composite(&scene);
     assert_eq!(
-        comparison_png(&kinds, &a, 1).unwrap(),
-        comparison_png(&kinds, &b, 1).unwrap()
+        comparison_png(&kinds, &a, 1, Aspect::SLIDE).unwrap(),
+        comparison_png(&kinds, &b, 1, Aspect::SLIDE).unwrap()
     );
 }
 
@@ -330,7 +335,7 @@ fn scale_out_of_range_is_a_typed_error_naming_the_field_and_range() {
             "{msg}"
         );
         assert!(panel_svg(PanelKind::Pattern, ctx, data, bad).is_err());
-        assert!(column_png(&[PanelKind::Pattern], ctx, data, bad).is_err());
+        assert!(column_png(&[PanelKind::Pattern], ctx, data, bad, Aspect::SLIDE).is_err());
     }
 }
 
@@ -358,7 +363,7 @@ fn missing_or_empty_data_is_an_error_naming_the_figure() {
     };
     let e = panel_png(PanelKind::Pattern, &ctx, &empty, 1).unwrap_err();
     assert!(e.to_string().contains("empty"), "{e}");
-    assert!(column_png(&[], &ctx, &empty, 1).is_err());
+    assert!(column_png(&[], &ctx, &empty, 1, Aspect::SLIDE).is_err());
     assert!(scene_figure::context(&scene, 5, "x").is_err());
 }
 
@@ -422,7 +427,7 @@ fn images_and_points_are_drawn_where_their_data_says() {
 }
 
 #[test]
-fn composites_put_every_panel_of_every_column_side_by_side() {
+fn composites_put_the_panels_of_every_column_in_the_grid_that_fills_the_frame() {
     let scene = quick_scene();
     let cols = columns(&scene);
     let kinds = panels::composite(&scene);
@@ -436,31 +441,167 @@ fn composites_put_every_panel_of_every_column_side_by_side() {
             PanelKind::Response
         ]
     );
-    let width: u32 = kinds.iter().map(|&k| base_size(k).0).sum();
     let (ctx, data) = &cols[0];
-    let (info, _, text) = decode(&column_png(&kinds, ctx, data, 1).unwrap());
-    assert_eq!((info.width, info.height), (width, 510 + 36));
-    assert_eq!(meta(&text, "figure"), "column");
-    assert_eq!(meta(&text, "seed"), "7");
-    let (info, _, text) = decode(&comparison_png(&kinds, &cols, 2).unwrap());
+    // A column of five figures at 16:9: three over two (pattern, periodogram,
+    // reconstruction; kernel, response), the widest row setting the width.
+    let l = column_layout(&kinds, Aspect::SLIDE);
+    assert_eq!((l.panel_cols, l.panel_rows), (3, 2), "{l}");
+    let row1: u32 = kinds[..3].iter().map(|&k| base_size(k).0).sum();
+    let row2: u32 = kinds[3..].iter().map(|&k| base_size(k).0).sum();
+    let (info, _, text) = decode(&column_png(&kinds, ctx, data, 1, Aspect::SLIDE).unwrap());
+    assert_eq!((info.width, info.height), (row1.max(row2), 36 + 2 * 510));
     assert_eq!(
-        comparison_size(&kinds, 2, 2),
+        column_size(&kinds, 1, Aspect::SLIDE),
         (info.width as u64, info.height as u64)
     );
-    assert_eq!(column_size(&kinds, 1), (width as u64, 510 + 36));
-    // Eight columns of five figures at scale 4 exceed the limit: refused, not allocated.
-    let (w, h) = comparison_size(&kinds, 8, 4);
-    assert!(w * h > MAX_COMPOSITE_PIXELS);
-    let many: Vec<_> = (0..8).map(|_| cols[0].clone()).collect();
-    let e = comparison_png(&kinds, &many, 4).unwrap_err();
-    assert!(matches!(e, ExportError::TooLarge { .. }), "{e:?}");
+    assert_eq!(meta(&text, "figure"), "column");
+    assert_eq!(meta(&text, "seed"), "7");
+    assert_eq!(meta(&text, "aspect"), "16:9");
+    // A 1:4 frame stacks them.
+    let tall = column_layout(&kinds, "1:4".parse().unwrap());
+    assert_eq!((tall.panel_cols, tall.panel_rows), (1, 5));
+
+    let (info, _, text) = decode(&comparison_png(&kinds, &cols, 2, Aspect::SLIDE).unwrap());
     assert_eq!(
-        (info.width, info.height),
-        (2 * width, 2 * (44 + 2 * (510 + 36)))
+        comparison_size(&kinds, &cols, 2, Aspect::SLIDE),
+        (info.width as u64, info.height as u64)
     );
     assert_eq!(meta(&text, "figure"), "comparison");
+    assert_eq!(
+        meta(&text, "layout"),
+        comparison_layout(&kinds, &cols, Aspect::SLIDE).to_string()
+    );
     let columns_meta = meta(&text, "columns");
     assert!(columns_meta.contains("jitter") && columns_meta.contains("white noise: random"));
+    // Eight columns of five figures at scale 4 exceed the limit: refused, not allocated.
+    let many: Vec<_> = (0..8).map(|_| cols[0].clone()).collect();
+    let (w, h) = comparison_size(&kinds, &many, 4, Aspect::SLIDE);
+    assert!(w * h > MAX_COMPOSITE_PIXELS);
+    let e = comparison_png(&kinds, &many, 4, Aspect::SLIDE).unwrap_err();
+    assert!(matches!(e, ExportError::TooLarge { .. }), "{e:?}");
+}
+
+/// Three columns of (pattern, periodogram) sharing one colour range, as `render` draws them.
+fn locked(scene: &Scene) -> Vec<(FigureContext, ColumnData)> {
+    let mut cols = columns(scene);
+    let range = (-1.0f32, 2.0f32);
+    for (c, _) in &mut cols {
+        c.spectrum_range = Some(range);
+    }
+    cols
+}
+
+#[test]
+fn five_columns_of_three_figures_stand_side_by_side_at_16_9() {
+    let mut scene = quick_scene();
+    scene.panels.zoneplate = false;
+    scene.panels.filter = false;
+    let two = columns(&scene);
+    let cols: Vec<_> = (0..5).map(|i| two[i % 2].clone()).collect();
+    let kinds = panels::comparison(&scene);
+    let stacked = Layout {
+        block_cols: 5,
+        block_rows: 1,
+        panel_cols: 1,
+        panel_rows: 3,
+    };
+    // With equal panels five columns of three stacked figures are the 16:9 choice.
+    let equal = [
+        PanelKind::Pattern,
+        PanelKind::Reconstruction,
+        PanelKind::Pattern,
+    ];
+    assert_eq!(comparison_layout(&equal, &cols, Aspect::SLIDE), stacked);
+    let (w, h) = comparison_size(&equal, &cols, 1, Aspect::SLIDE);
+    assert_eq!((w, h), (5 * 480, 44 + 36 + 3 * 510));
+    assert!(fill(w, h, Aspect::SLIDE) > 0.8, "{w}×{h}");
+    // Whatever the figures, the chosen grid is drawn at its computed size.
+    let l = comparison_layout(&kinds, &cols, Aspect::SLIDE);
+    let (info, _, _) = decode(&comparison_png(&kinds, &cols, 1, Aspect::SLIDE).unwrap());
+    assert_eq!(
+        (info.width as u64, info.height as u64),
+        comparison_size(&kinds, &cols, 1, Aspect::SLIDE),
+        "{l}"
+    );
+}
+
+#[test]
+fn locked_scales_draw_one_shared_colour_bar() {
+    let mut scene = quick_scene();
+    scene.panels.zoneplate = false;
+    scene.panels.filter = false;
+    let kinds = panels::comparison(&scene);
+    assert_eq!(kinds, vec![PanelKind::Pattern, PanelKind::Spectrum]);
+    let free = columns(&scene);
+    let lock = locked(&scene);
+    let (wf, _) = comparison_size(&kinds, &free, 1, Aspect::SLIDE);
+    let (wl, _) = comparison_size(&kinds, &lock, 1, Aspect::SLIDE);
+    let lf = comparison_layout(&kinds, &free, Aspect::SLIDE);
+    let ll = comparison_layout(&kinds, &lock, Aspect::SLIDE);
+    assert_eq!(lf, ll, "the same grid");
+    // Each periodogram loses its 110-pixel bar; one bar of 110 pixels is added.
+    assert_eq!(wl + 110 * ll.block_cols as u64 - 110, wf, "{lf}");
+    let (info, px, text) = decode(&comparison_png(&kinds, &lock, 1, Aspect::SLIDE).unwrap());
+    assert!(meta(&text, "layout").contains("columns"));
+    // The shared bar's gradient: a column of the strip at the right holds many colours.
+    let (w, h) = (info.width as usize, info.height as usize);
+    let x = w - 110 + 14 + 5;
+    let colours: std::collections::BTreeSet<[u8; 3]> = (0..h)
+        .map(|y| {
+            let i = (y * w + x) * 3;
+            [px[i], px[i + 1], px[i + 2]]
+        })
+        .collect();
+    assert!(
+        colours.len() > 100,
+        "{} colours in the bar strip",
+        colours.len()
+    );
+}
+
+#[test]
+fn comparison_titles_wrap_or_shorten_and_never_run_past_the_image() {
+    let mut scene = quick_scene();
+    scene.panels.zoneplate = false;
+    scene.panels.filter = false;
+    scene.panels.spectrum = false;
+    scene.columns.truncate(1);
+    let mut cols = columns(&scene);
+    let long = "A very long scene title that names every column, every parameter and every                 setting of the scene, far wider than one pattern figure can hold on one line";
+    cols[0].0.scene_title = long.into();
+    cols[0].0.column_title = "a label far too long for the caption band of one figure".into();
+    let kinds = panels::comparison(&scene);
+    assert_eq!(kinds, vec![PanelKind::Pattern]);
+    for scale in [1, 2] {
+        let (w, h) = comparison_size(&kinds, &cols, scale, Aspect::SLIDE);
+        assert_eq!(w, 480 * scale as u64);
+        let lines = comparison_title_lines(&kinds, &cols, scale, Aspect::SLIDE);
+        assert_eq!(lines.len(), 2, "{lines:?}");
+        assert!(lines[1].ends_with('…'), "{lines:?}");
+        for l in &lines {
+            assert!(
+                (text_width(l, 20.0 * scale as f64) as u64) < w,
+                "{l:?} wider than {w}"
+            );
+        }
+        // Two title lines: the band is one line higher.
+        assert_eq!(h, (44 + 26 + 36 + 510) * scale as u64);
+        // No ink in the first and last columns of pixels of the title and caption bands.
+        let (info, px, _) = decode(&comparison_png(&kinds, &cols, scale, Aspect::SLIDE).unwrap());
+        let (w, band) = (info.width as usize, ((44 + 26 + 36) * scale) as usize);
+        for y in 0..band {
+            for x in [0, 1, w - 2, w - 1] {
+                let i = (y * w + x) * 3;
+                assert_eq!(&px[i..i + 3], &[255, 255, 255], "ink at ({x}, {y})");
+            }
+        }
+    }
+    // A title that fits stays one line.
+    cols[0].0.scene_title = "short".into();
+    assert_eq!(
+        comparison_title_lines(&kinds, &cols, 1, Aspect::SLIDE),
+        vec!["short".to_string()]
+    );
 }
 
 #[test]
@@ -811,7 +952,7 @@ fn missing_theorem_data_is_a_typed_error_naming_the_figure() {
         }
     }
     // A column composite asking for them fails the same way.
-    let e = column_png(&PanelKind::THEOREM, ctx, data, 1).unwrap_err();
+    let e = column_png(&PanelKind::THEOREM, ctx, data, 1, Aspect::SLIDE).unwrap_err();
     assert!(e.to_string().starts_with("theorem-signal"), "{e}");
 }
 
@@ -896,4 +1037,65 @@ fn the_net_scene_columns_carry_their_elementary_k_into_the_figures() {
         let ctx = scene_figure::context(&scene, c, "net").unwrap();
         assert_eq!(ctx.elementary_k, want);
     }
+}
+
+/// The sphere figure of a Hammersley set of 256 points (p1 = 3), the only panel shown.
+fn sphere_data() -> (FigureContext, ColumnData) {
+    let scene = Scene::from_ron(
+        r#"(
+            title: "Sphere test",
+            columns: [(pattern: (kind: "hammersley", p1: 3), seed: 0, label: "p1 = 3")],
+            n: 256,
+            panels: (pattern: false, spectrum: false, zoneplate: false, filter: false, sphere: true),
+        )"#,
+        "sphere.ron",
+    )
+    .unwrap();
+    assert_eq!(panels::available(&scene), vec![PanelKind::Sphere]);
+    columns(&scene).remove(0)
+}
+
+#[test]
+fn sphere_figure_draws_discs_in_both_views_and_repeats_byte_for_byte() {
+    let (ctx, data) = sphere_data();
+    let n = data.points.as_ref().unwrap().points.len();
+    assert_eq!(n, 256);
+    let bytes = panel_png(PanelKind::Sphere, &ctx, &data, 1).unwrap();
+    assert_eq!(bytes, panel_png(PanelKind::Sphere, &ctx, &data, 1).unwrap());
+    let (info, px, text) = decode(&bytes);
+    assert_eq!((info.width, info.height), base_size(PanelKind::Sphere));
+    assert_eq!(meta(&text, "figure"), "sphere");
+    assert!(meta(&text, "views").contains("front") && meta(&text, "mapping").contains("cylinder"));
+    let w = info.width as usize;
+    // Dark (near points) and dimmed (far points) pixels in each half, inside the disc band.
+    for (x0, x1) in [(0, w / 2), (w / 2, w)] {
+        let (mut ink, mut dim) = (0, 0);
+        for y in 60..460 {
+            for x in x0..x1 {
+                let i = (y * w + x) * 3;
+                let p = [px[i], px[i + 1], px[i + 2]];
+                if p.iter().all(|&c| c < 80) {
+                    ink += 1;
+                }
+                if p == [196, 200, 212] {
+                    dim += 1;
+                }
+            }
+        }
+        assert!(ink > 20 * 128 / 2, "{x0}..{x1}: {ink} ink pixels");
+        assert!(dim > 10 * 128 / 2, "{x0}..{x1}: {dim} dimmed pixels");
+    }
+    // The CSV holds every point on the unit sphere.
+    let csv = panel_csv(PanelKind::Sphere, &ctx, &data).unwrap();
+    let lines: Vec<&str> = csv.lines().collect();
+    assert_eq!(lines[0], "x,y,z");
+    assert_eq!(lines.len(), n + 1);
+    for l in &lines[1..] {
+        let v: Vec<f64> = l.split(',').map(|t| t.parse().unwrap()).collect();
+        let r = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
+        assert!((r - 1.0).abs() < 1e-12, "{l}");
+    }
+    // At scale 2 the same picture, twice the size.
+    let (info, _, _) = decode(&panel_png(PanelKind::Sphere, &ctx, &data, 2).unwrap());
+    assert_eq!(info.width, 2 * base_size(PanelKind::Sphere).0);
 }

@@ -202,6 +202,32 @@ fn missing_scene_exits_1_naming_the_path() {
 }
 
 #[test]
+fn bad_aspect_exits_2_naming_the_option_and_what_it_must_be() {
+    let dir = temp_dir("aspect");
+    let scene = dir.join("small.ron");
+    std::fs::write(&scene, SCENE).unwrap();
+    for (bad, says) in [
+        ("0:9", "positive finite"),
+        ("16:", "W:H"),
+        ("abc", "W:H"),
+        ("NaN:9", "positive finite"),
+        ("100:1", "0.1..=10"),
+    ] {
+        let o = render(&[
+            scene.to_str().unwrap(),
+            "--out",
+            dir.join("o").to_str().unwrap(),
+            "--aspect",
+            bad,
+        ]);
+        assert_eq!(o.status.code(), Some(2), "{bad}: {}", stderr(&o));
+        let e = stderr(&o);
+        assert!(e.contains("--aspect") && e.contains(says), "{bad}: {e}");
+        assert!(!dir.join("o").exists(), "nothing written for {bad}");
+    }
+}
+
+#[test]
 fn scale_out_of_range_exits_2_naming_scale_and_range() {
     let dir = temp_dir("scale");
     let scene = dir.join("small.ron");

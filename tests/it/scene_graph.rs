@@ -129,6 +129,24 @@ fn hidden_panels_and_effects_cost_nothing() {
 }
 
 #[test]
+fn the_sphere_panel_alone_computes_the_points_and_nothing_else() {
+    let mut s = small(Scene::builtin_default());
+    s.panels = Default::default();
+    s.panels.pattern = false;
+    s.panels.spectrum = false;
+    s.panels.zoneplate = false;
+    s.panels.filter = false;
+    s.panels.sphere = true;
+    let eval = Evaluator::default();
+    let seen = evaluate(&eval, &s);
+    assert_eq!(eval.count(NodeKind::Points), 1);
+    assert!(seen.iter().all(|(_, k)| *k == NodeKind::Points), "{seen:?}");
+    // Hidden, it costs nothing.
+    s.panels.sphere = false;
+    assert!(graph::column_plan(&s, 0).nodes.is_empty());
+}
+
+#[test]
 fn a_filter_change_reruns_only_response_reconstruction_and_error() {
     let s = small(Scene::builtin_default());
     let eval = Evaluator::default();

@@ -6,9 +6,11 @@
 //! 512² resampling scenes; the whole test stays well under two minutes in the dev profile.
 
 use samplescope::core::cancel::Cancel;
+use samplescope::core::params::Params;
 use samplescope::engine::Evaluator;
+use samplescope::model::PanelKind;
 use samplescope::scene::graph::NodeKind;
-use samplescope::scene::{Scene, BUILTIN};
+use samplescope::scene::{panels, Scene, BUILTIN};
 use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
 
@@ -158,6 +160,25 @@ fn net_scene_columns_hold_one_point_per_elementary_interval_of_their_shape() {
         (0..=4).collect::<BTreeSet<u32>>(),
         "all five shapes"
     );
+}
+
+#[test]
+fn the_hammersley_scene_shows_every_p1_on_the_sphere_as_the_lecture_does() {
+    let text = std::fs::read_to_string(
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/scenes/hammersley-p1.ron"),
+    )
+    .unwrap();
+    let scene = Scene::from_ron(&text, "hammersley-p1.ron").unwrap();
+    let mut p1s = Vec::new();
+    for (c, col) in scene.columns.iter().enumerate() {
+        assert_eq!(col.pattern.name(), "hammersley");
+        p1s.push(col.pattern.get("p1").unwrap().to_string());
+        assert!(panels::available_in(&scene, c).contains(&PanelKind::Sphere));
+    }
+    assert_eq!(p1s, ["2", "3", "5", "7", "11"]);
+    // The comparison holds the square and the sphere of every column.
+    let kinds = panels::comparison(&scene);
+    assert!(kinds.contains(&PanelKind::Pattern) && kinds.contains(&PanelKind::Sphere));
 }
 
 #[test]

@@ -296,3 +296,57 @@ fn a_dead_engine_shows_a_banner() {
     assert!(h.state().engine.failure().is_some());
     h.get_by_label_contains("compute engine stopped");
 }
+
+#[test]
+fn the_hammersley_scene_draws_a_sphere_per_column_that_dragging_turns() {
+    let mut h = harness();
+    let text = samplescope::scene::BUILTIN
+        .iter()
+        .find(|(name, _)| name.starts_with("hammersley-p1"))
+        .map(|(_, t)| *t)
+        .expect("the hammersley-p1 scene is built in");
+    let scene = samplescope::scene::Scene::from_ron(text, "hammersley-p1").unwrap();
+    h.state_mut().set_scene(scene, "hammersley-p1".into());
+    crate::settle(&mut h, 3);
+    assert!(h.state().scene.panels.sphere);
+    let views: Vec<_> = h.get_all_by_label("sphere view").collect();
+    assert_eq!(views.len(), 5, "one sphere per column");
+    let rect = views[0].rect();
+    drop(views);
+    let before = h.get_all_by_label_contains("azimuth 30°").count();
+    assert_eq!(before, 5, "every column starts at the front view");
+    // Drag the first sphere 60 points to the right: all turn together by 0.6 rad (34°).
+    let start = rect.center();
+    h.hover_at(start);
+    h.event(eframe::egui::Event::PointerButton {
+        pos: start,
+        button: eframe::egui::PointerButton::Primary,
+        pressed: true,
+        modifiers: Default::default(),
+    });
+    h.step();
+    for i in 1..=6 {
+        h.hover_at(start + eframe::egui::vec2(10.0 * i as f32, 0.0));
+        h.step();
+    }
+    h.event(eframe::egui::Event::PointerButton {
+        pos: start + eframe::egui::vec2(60.0, 0.0),
+        button: eframe::egui::PointerButton::Primary,
+        pressed: false,
+        modifiers: Default::default(),
+    });
+    h.step();
+    h.step();
+    assert_eq!(h.query_all_by_label_contains("azimuth 30°").count(), 0);
+    let after: std::collections::BTreeSet<Option<String>> = h
+        .get_all_by_label_contains("azimuth ")
+        .map(|n| n.value())
+        .collect();
+    assert_eq!(after.len(), 1, "the columns turn together: {after:?}");
+    // Only the points were computed: the sphere needs no node of its own.
+    let app = h.state();
+    assert!(app
+        .results
+        .iter()
+        .all(|c| c.get(&NodeKind::Points).is_some()));
+}

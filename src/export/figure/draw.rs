@@ -26,7 +26,7 @@ pub(super) const Y_LABEL: u32 = 60;
 /// Height of the x label area.
 pub(super) const X_LABEL: u32 = 50;
 /// Width of the colour-bar part of the periodogram and error figures.
-const BAR_PART: u32 = 110;
+pub(super) const BAR_PART: u32 = 110;
 /// Title, tick-label and axis-description font sizes.
 const TITLE_PX: f64 = 17.0;
 pub(super) const TICK_PX: f64 = 13.0;

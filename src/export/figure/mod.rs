@@ -56,6 +56,7 @@ mod reconstruction;
 mod reference;
 mod response;
 mod spectrum;
+mod sphere;
 mod svg;
 mod text;
 mod theorem;
@@ -69,7 +70,9 @@ use crate::model::{sanitize, ColumnData, FigureContext, PanelKind};
 
 pub use canvas::{Area, Canvas, CanvasError};
 pub use composite::{
-    column_png, column_rgba, column_size, comparison_png, comparison_rgba, comparison_size,
+    column_layout, column_png, column_rgba, column_size, comparison_layout, comparison_png,
+    comparison_rgba, comparison_size, comparison_title_lines, fill, text_width, wrap, Aspect,
+    AspectError, Layout,
 };
 pub use draw::Frame;
 pub use integration::legend_label as integration_legend;
@@ -117,6 +120,7 @@ pub trait Figure: Sync {
 pub fn figure(kind: PanelKind) -> &'static dyn Figure {
     match kind {
         PanelKind::Pattern => &pattern::Pattern,
+        PanelKind::Sphere => &sphere::Sphere,
         PanelKind::Spectrum => &spectrum::Spectrum,
         PanelKind::Raps => &raps::Raps,
         PanelKind::Reconstruction => &reconstruction::Reconstruction,
@@ -253,6 +257,7 @@ pub fn panel_svg(
 /// | kind | columns |
 /// |---|---|
 /// | pattern | `x,y` |
+/// | sphere | `x,y,z` (the points on the unit sphere, as `points --sphere` writes them) |
 /// | spectrum | `kx,ky,log10_power` (the displayed image: ky ascending, then kx; a masked DC holds the mean of its 8 neighbours) |
 /// | raps | `radius,power` |
 /// | reconstruction, reference, error | one image row per line, top row first, no header |

@@ -1,15 +1,51 @@
-//! The periodogram image (log10 P through a colour map) with its colour bar.
+//! The periodogram image (log10 P through a colour map) with its colour bar; and the same
+//! image without its bar ([`SpectrumWithoutBar`]), which a composite of locked scales draws
+//! beside one shared bar ([`SharedBar`]).
 
-use super::draw::{empty, ordered_range, present, Frame, ImageSpec};
+use super::draw::{
+    draw_err, empty, ordered_range, present, Frame, ImageSpec, BAR_PART, DESC_PX, MARGIN, TICK_PX,
+    X_LABEL,
+};
 use super::{context_metadata, Area, Figure};
 use crate::export::ExportError;
-use crate::model::{ColumnData, FigureContext, PanelKind};
+use crate::model::{Colormap, ColumnData, FigureContext, PanelKind};
+use plotters::prelude::*;
 use std::fmt::Write as _;
 
 /// The periodogram figure.
 pub(super) struct Spectrum;
 
 const KIND: PanelKind = PanelKind::Spectrum;
+
+/// The description of the colour bar.
+const BAR_DESC: &str = "log10 P";
+
+/// Draws the periodogram image into `body`, with its colour bar when `bar`.
+fn draw_periodogram(f: &mut Frame<'_, '_>, body: &Area<'_>, bar: bool) -> Result<(), ExportError> {
+    let s = present(KIND, f.data.spectrum.as_ref())?;
+    let (lo, hi) = ordered_range(f.ctx.spectrum_range.unwrap_or(s.auto_range));
+    let m = s.image.width as f64;
+    let k0 = -((s.image.width / 2) as f64);
+    let ky0 = -((s.image.height / 2) as f64);
+    let kh = s.image.height as f64;
+    let colormap = f.ctx.spectrum_colormap;
+    f.image(
+        body,
+        KIND,
+        ImageSpec {
+            image: &s.image,
+            x: (k0 - 0.5)..(k0 + m - 0.5),
+            y: (ky0 - 0.5)..(ky0 + kh - 0.5),
+            x_desc: "kx (cycles per unit)",
+            y_desc: "ky",
+            integer_ticks: true,
+            lo,
+            hi,
+            colormap,
+            bar: bar.then_some(BAR_DESC),
+        },
+    )
+}
 
 impl Figure for Spectrum {
     fn kind(&self) -> PanelKind {
@@ -37,29 +73,7 @@ impl Figure for Spectrum {
     }
 
     fn draw(&self, f: &mut Frame<'_, '_>, body: &Area<'_>) -> Result<(), ExportError> {
-        let s = present(KIND, f.data.spectrum.as_ref())?;
-        let (lo, hi) = ordered_range(f.ctx.spectrum_range.unwrap_or(s.auto_range));
-        let m = s.image.width as f64;
-        let k0 = -((s.image.width / 2) as f64);
-        let ky0 = -((s.image.height / 2) as f64);
-        let kh = s.image.height as f64;
-        let colormap = f.ctx.spectrum_colormap;
-        f.image(
-            body,
-            KIND,
-            ImageSpec {
-                image: &s.image,
-                x: (k0 - 0.5)..(k0 + m - 0.5),
-                y: (ky0 - 0.5)..(ky0 + kh - 0.5),
-                x_desc: "kx (cycles per unit)",
-                y_desc: "ky",
-                integer_ticks: true,
-                lo,
-                hi,
-                colormap,
-                bar: Some("log10 P"),
-            },
-        )
+        draw_periodogram(f, body, true)
     }
 
     fn csv(&self, data: &ColumnData) -> Result<String, ExportError> {
@@ -94,6 +108,120 @@ impl Figure for Spectrum {
             m.push(("colour range".into(), format!("log10 P in [{lo}, {hi}]")));
         }
         m
+    }
+}
+
+/// The periodogram figure without its colour bar: [`BAR_PART`] narrower, the same square
+/// image, title, data, CSV and metadata. Composites draw it where every column shares one
+/// colour range, beside one [`SharedBar`].
+pub(super) struct SpectrumWithoutBar;
+
+impl Figure for SpectrumWithoutBar {
+    fn kind(&self) -> PanelKind {
+        KIND
+    }
+
+    fn base_size(&self) -> (u32, u32) {
+        let (w, h) = Spectrum.base_size();
+        (w - BAR_PART, h)
+    }
+
+    fn title(&self, ctx: &FigureContext, data: &ColumnData) -> String {
+        Spectrum.title(ctx, data)
+    }
+
+    fn has_data(&self, data: &ColumnData) -> bool {
+        Spectrum.has_data(data)
+    }
+
+    fn check(&self, data: &ColumnData) -> Result<(), ExportError> {
+        Spectrum.check(data)
+    }
+
+    fn draw(&self, f: &mut Frame<'_, '_>, body: &Area<'_>) -> Result<(), ExportError> {
+        draw_periodogram(f, body, false)
+    }
+
+    fn csv(&self, data: &ColumnData) -> Result<String, ExportError> {
+        Spectrum.csv(data)
+    }
+
+    fn metadata(&self, ctx: &FigureContext, data: &ColumnData) -> Vec<(String, String)> {
+        Spectrum.metadata(ctx, data)
+    }
+}
+
+/// The one colour bar of periodograms drawn with a shared range `lo..hi` through `colormap`:
+/// [`BAR_PART`] wide and as high as the periodogram figure, its bar level with their images
+/// (the same margins and label areas as the bar of [`Spectrum`]); its title band says
+/// "all columns".
+pub(super) struct SharedBar {
+    pub lo: f64,
+    pub hi: f64,
+    pub colormap: Colormap,
+}
+
+impl Figure for SharedBar {
+    fn kind(&self) -> PanelKind {
+        KIND
+    }
+
+    fn base_size(&self) -> (u32, u32) {
+        (BAR_PART, Spectrum.base_size().1)
+    }
+
+    fn title(&self, _ctx: &FigureContext, _data: &ColumnData) -> String {
+        "all columns".into()
+    }
+
+    fn has_data(&self, _data: &ColumnData) -> bool {
+        true
+    }
+
+    fn check(&self, _data: &ColumnData) -> Result<(), ExportError> {
+        Ok(())
+    }
+
+    fn draw(&self, f: &mut Frame<'_, '_>, body: &Area<'_>) -> Result<(), ExportError> {
+        let look = f.look;
+        let de = |e| draw_err(KIND, e);
+        let mut bar = ChartBuilder::on(body)
+            .margin_top(look.u(MARGIN))
+            .margin_bottom(look.u(MARGIN))
+            .margin_left(look.u(14))
+            .margin_right(look.u(4))
+            .x_label_area_size(look.u(X_LABEL))
+            .right_y_label_area_size(look.u(68))
+            .build_cartesian_2d(0.0..1.0, self.lo..self.hi)
+            .map_err(de)?;
+        // The gradient as 256 bands, lowest value at the bottom.
+        let steps = 256usize;
+        let span = self.hi - self.lo;
+        bar.draw_series((0..steps).map(|i| {
+            let (a, b) = (i as f64 / steps as f64, (i + 1) as f64 / steps as f64);
+            let [r, g, bl] = self.colormap.eval((a + b) / 2.0);
+            Rectangle::new(
+                [(0.0, self.lo + a * span), (1.0, self.lo + b * span)],
+                RGBColor(r, g, bl).filled(),
+            )
+        }))
+        .map_err(de)?;
+        bar.configure_mesh()
+            .disable_mesh()
+            .disable_x_axis()
+            .x_labels(0)
+            .y_labels(6)
+            .y_desc(BAR_DESC)
+            .label_style(look.text(TICK_PX))
+            .axis_desc_style(look.text(DESC_PX))
+            .axis_style(look.line(BLACK, 1))
+            .set_all_tick_mark_size(look.i(5))
+            .draw()
+            .map_err(de)
+    }
+
+    fn csv(&self, _data: &ColumnData) -> Result<String, ExportError> {
+        Ok(format!("lo,hi\n{},{}\n", self.lo, self.hi))
     }
 }
 

@@ -2,9 +2,10 @@
 //! maths here). A panel implements [`Panel`] and reads everything it needs from a [`PanelCx`]
 //! lent by the app for the frame.
 //!
-//! The column panels ([`pattern`], [`spectrum`], [`zoneplate`], [`filter`]) are laid out per
-//! column by [`crate::ui::columns`]; [`cost`], [`integration`] and [`theorem`] are docked below the columns by
-//! the app. A new panel is a new file here implementing [`Panel`], plus one line where it is
+//! The column panels ([`pattern`], [`sphere`], [`spectrum`], [`zoneplate`], [`filter`]) are
+//! laid out per column by [`crate::ui::columns`]; [`cost`], [`integration`] and [`theorem`] are
+//! docked below the columns by the app. A new panel is a new file here implementing [`Panel`],
+//! plus one line where it is
 //! placed (the column list in `columns.rs`, or a dock in `app.rs`).
 
 pub mod cost;
@@ -12,6 +13,7 @@ pub mod filter;
 pub mod integration;
 pub mod pattern;
 pub mod spectrum;
+pub mod sphere;
 pub mod theorem;
 pub mod zoneplate;
 

@@ -1,0 +1,114 @@
+//! The sphere panel: a column's points wrapped onto the unit sphere (the lecture's cylinder
+//! wrap and radial projection, [`crate::core::pattern::sphere`]) in an orthographic view that
+//! dragging turns; the far hemisphere's points show through dimmed.
+
+use super::{Panel, PanelCx};
+use crate::core::pattern::sphere::{square_to_sphere, OrthoView};
+use crate::model::PanelKind;
+use crate::scene::graph::{NodeKind, NodeValue};
+use crate::scene::Panels;
+use crate::ui::widgets::status::{error_label, time_label};
+use eframe::egui::{self, Color32, Pos2, Sense, Stroke, Vec2};
+
+/// At most this many points are drawn (the first ones); each is one egui circle.
+pub const MAX_SPLATS: usize = 20_000;
+/// Radians the view turns per point dragged.
+const TURN_PER_POINT: f64 = 0.01;
+
+/// The sphere panel. Its view (azimuth and elevation) is its own and the same for every
+/// column, so that the columns turn together; a double-click resets it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SpherePanel {
+    pub view: OrthoView,
+}
+
+impl Default for SpherePanel {
+    fn default() -> Self {
+        SpherePanel {
+            view: OrthoView::FRONT,
+        }
+    }
+}
+
+impl Panel for SpherePanel {
+    fn kind(&self) -> PanelKind {
+        PanelKind::Sphere
+    }
+
+    fn is_shown(&self, panels: &Panels) -> bool {
+        panels.sphere
+    }
+
+    fn ui(&mut self, ui: &mut egui::Ui, cx: &mut PanelCx<'_>) {
+        let (ci, side) = (cx.column, cx.side);
+        ui.horizontal_wrapped(|ui| {
+            ui.label("Sphere (cylinder wrap)");
+            cx.figures.panel_menu_ui(ui, ci, &[PanelKind::Sphere]);
+        });
+        let (rect, response) = ui.allocate_exact_size(Vec2::splat(side), Sense::click_and_drag());
+        response.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Image, true, "sphere view"));
+        if response.dragged() {
+            let d = response.drag_delta();
+            // The surface follows the pointer: dragging right turns the camera left.
+            self.view = self
+                .view
+                .turned(-d.x as f64 * TURN_PER_POINT, d.y as f64 * TURN_PER_POINT);
+        }
+        if response.double_clicked() {
+            self.view = OrthoView::FRONT;
+        }
+        response.on_hover_text("drag to turn · double-click to reset");
+        let painter = ui.painter_at(rect);
+        painter.rect_filled(rect, 0.0, Color32::WHITE);
+        let centre = rect.center();
+        let r = side * 0.5 - 6.0;
+        let Some(res) = cx.result(NodeKind::Points) else {
+            ui.spinner();
+            return;
+        };
+        let data = match &res.value {
+            Ok(NodeValue::Points(d)) => d.clone(),
+            Ok(_) => return,
+            Err(e) => {
+                error_label(ui, "sphere", e);
+                return;
+            }
+        };
+        let shown = cx.view.prefix.unwrap_or(usize::MAX).min(data.points.len());
+        let count = shown.min(MAX_SPLATS);
+        let n = count.max(1) as f32;
+        let rad = (0.125 * r * (4.0 * std::f32::consts::PI / n).sqrt()).clamp(0.8, 4.0);
+        let view = self.view;
+        let screen =
+            |s: glam::DVec2| Pos2::new(centre.x + s.x as f32 * r, centre.y - s.y as f32 * r);
+        let projected: Vec<(Pos2, bool)> = data.points[..count]
+            .iter()
+            .map(|&p| {
+                let (s, depth) = view.project(square_to_sphere(p));
+                (screen(s), depth >= 0.0)
+            })
+            .collect();
+        let dimmed = Color32::from_rgb(196, 200, 212);
+        for &(p, near) in &projected {
+            if !near {
+                painter.circle_filled(p, (rad * 0.7).max(0.7), dimmed);
+            }
+        }
+        painter.circle_stroke(centre, r, Stroke::new(1.0, Color32::from_gray(60)));
+        let ink = Color32::from_rgb(20, 20, 30);
+        for &(p, near) in &projected {
+            if near {
+                painter.circle_filled(p, rad, ink);
+            }
+        }
+        time_label(ui, res, cx.view.show_timings);
+        let yaw = view.yaw.to_degrees().rem_euclid(360.0).round();
+        let pitch = view.pitch.to_degrees().round();
+        ui.small(format!(
+            "azimuth {yaw}°, elevation {pitch}° · far side dimmed · drag to turn"
+        ));
+        if count < shown {
+            ui.small(format!("the first {count} of {shown} points drawn"));
+        }
+    }
+}
