@@ -30,6 +30,7 @@ fn all_panels(mut s: Scene) -> Scene {
     p.cost = true;
     p.theorem = true;
     p.integration = true;
+    p.sphere = true;
     s
 }
 
