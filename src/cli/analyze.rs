@@ -1,11 +1,12 @@
-//! `samplescope analyze`: statistics, discrepancies, t-value and spectrum of a point set, with
-//! the time and accuracy of every stage.
+//! `samplescope analyze`: statistics, discrepancies, t-value, PSA's statistics (effective
+//! Nyquist frequency, oscillations, bond-orientational order; `--rdf` its radial distribution
+//! function) and spectrum of a point set, with the time and accuracy of every stage.
 
 use super::outln;
 use super::session::{write_output, Session};
 use super::{parse_n, pattern_from_args, CliError};
 use samplescope::core::budget;
-use samplescope::core::metrics;
+use samplescope::core::metrics::{self, psa, MetricsError};
 use samplescope::core::pointset::{read_points, OutOfRange, PointsFileError};
 use samplescope::core::rng::derive_seed;
 use samplescope::core::spectrum::{
@@ -77,6 +78,10 @@ pub struct AnalyzeArgs {
     /// Write the radially averaged power spectrum as CSV `radius,power`.
     #[arg(long, value_name = "OUT.csv")]
     pub raps: Option<String>,
+    /// Write PSA's radial distribution function as CSV `r_min,r_max,r_mid_normalized,g`
+    /// (N/8 bins up to 8 hexagonal spacings; r_mid_normalized = bin centre / d_hex).
+    #[arg(long, value_name = "OUT.csv")]
+    pub rdf: Option<String>,
     /// Print one JSON object instead of text.
     #[arg(long)]
     pub json: bool,
@@ -86,6 +91,14 @@ fn io_err(path: &str) -> impl FnOnce(std::io::Error) -> CliError + '_ {
     move |source| CliError::Io {
         path: path.to_string(),
         source,
+    }
+}
+
+/// A metric's error as a usage error (bad input), cancellation as cancellation.
+fn metrics_err(e: MetricsError) -> CliError {
+    match e {
+        MetricsError::Cancelled => CliError::Cancelled,
+        e => CliError::Usage(e.to_string()),
     }
 }
 
@@ -149,6 +162,7 @@ pub fn run(args: &AnalyzeArgs, session: &Session) -> Result<(), CliError> {
     }
     let first = plan.len();
     plan.push(budget::statistics(n));
+    plan.push(budget::psa_statistics(n));
     plan.push(budget::spectrum(
         &req,
         n,
@@ -159,6 +173,11 @@ pub fn run(args: &AnalyzeArgs, session: &Session) -> Result<(), CliError> {
     }
     if args.spectrum_data.is_some() {
         plan.push(budget::text_rows("spectrum CSV", m * m));
+    }
+    let (rdf_bins, rdf_r_max) = psa::psa_rdf_range(n);
+    if args.rdf.is_some() {
+        plan.push(budget::rdf(n, rdf_bins));
+        plan.push(budget::text_rows("RDF CSV", rdf_bins));
     }
     let Some(progress) = session.admit(plan)? else {
         return Ok(());
@@ -184,6 +203,24 @@ pub fn run(args: &AnalyzeArgs, session: &Session) -> Result<(), CliError> {
     }
 
     progress.stage(first + 1);
+    let (psa_stats, psa_skipped) = if (psa::PSA_MIN_N..=psa::PSA_MAX_N).contains(&points.len()) {
+        let t0 = Instant::now();
+        let s = metrics::psa_statistics(&points, cancel).map_err(metrics_err)?;
+        timings.push(("PSA statistics".into(), t0.elapsed().as_secs_f64() * 1e3));
+        (Some(s), None)
+    } else {
+        (
+            None,
+            Some(format!(
+                "PSA statistics need {} ≤ n ≤ {} points (the RDF costs O(N²)), got n = {}",
+                psa::PSA_MIN_N,
+                psa::PSA_MAX_N,
+                points.len()
+            )),
+        )
+    };
+
+    progress.stage(first + 2);
     let first_seed = derive_seed(args.seed, 0);
     let seed = args.seed;
     let pts = points.clone();
@@ -201,7 +238,7 @@ pub fn run(args: &AnalyzeArgs, session: &Session) -> Result<(), CliError> {
     for (name, d) in &report.stages {
         timings.push((format!("spectrum {name}"), d.as_secs_f64() * 1e3));
     }
-    progress.stage(first + 2);
+    progress.stage(first + 3);
     let bins = radial_average(&spec).map_err(|e| CliError::Usage(e.to_string()))?;
 
     if let Some(path) = &args.spectrum {
@@ -249,6 +286,19 @@ pub fn run(args: &AnalyzeArgs, session: &Session) -> Result<(), CliError> {
         }
         write_output(Path::new(path), s.as_bytes(), cancel)?;
     }
+    if let Some(path) = &args.rdf {
+        let t0 = Instant::now();
+        let g = metrics::rdf(&points, rdf_bins, rdf_r_max, cancel).map_err(metrics_err)?;
+        timings.push(("RDF".into(), t0.elapsed().as_secs_f64() * 1e3));
+        let dr = g.bin_width();
+        let d_hex = metrics::hex_distance(points.len());
+        let mut s = String::from("r_min,r_max,r_mid_normalized,g\n");
+        for (i, v) in g.values().iter().enumerate() {
+            let (lo, hi) = (i as f64 * dr, (i + 1) as f64 * dr);
+            let _ = writeln!(s, "{lo:?},{hi:?},{:?},{v:?}", 0.5 * (lo + hi) / d_hex);
+        }
+        write_output(Path::new(path), s.as_bytes(), cancel)?;
+    }
     drop(progress);
 
     let md = stats.min_distance.as_ref();
@@ -265,6 +315,10 @@ pub fn run(args: &AnalyzeArgs, session: &Session) -> Result<(), CliError> {
             "star_discrepancy_box": stats.star.as_ref().map(|s| [s.worst_box.0, s.worst_box.1]),
             "l2_star_discrepancy": stats.l2_star,
             "t_value": stats.t_value.as_ref().map(|t| t.t),
+            "effective_nyquist": psa_stats.map(|p| p.effective_nyquist),
+            "oscillations": psa_stats.map(|p| p.oscillations),
+            "bond_orientational_order": psa_stats.map(|p| p.bond_orientational_order),
+            "psa_skipped": psa_skipped,
             "spectrum": {
                 "size": spec.m,
                 "realizations": spec.realizations,
@@ -307,6 +361,23 @@ pub fn run(args: &AnalyzeArgs, session: &Session) -> Result<(), CliError> {
             None => outln!(
                 "t-value (base 2)       undefined: {}",
                 stats.t_value_skipped.clone().unwrap_or_default()
+            )?,
+        }
+        match &psa_stats {
+            Some(p) => {
+                outln!(
+                    "effective Nyquist      {:.6}  (PSA: × the Nyquist frequency √N/2 of a grid)",
+                    p.effective_nyquist
+                )?;
+                outln!("oscillations           {:.6}  (PSA)", p.oscillations)?;
+                outln!(
+                    "bond-orient. order     {:.6}  (PSA: mean |ψ₆|, 1 = hexagonal)",
+                    p.bond_orientational_order
+                )?;
+            }
+            None => outln!(
+                "PSA statistics         skipped: {}",
+                psa_skipped.clone().unwrap_or_default()
             )?,
         }
         outln!(

@@ -38,6 +38,7 @@
 //! | tap | kernel taps of splatting | 2 (separable, plus 40 per 1D factor), 50 (radial) |
 //! | multiply-add | exact DFT | 2 (parallel) |
 //! | cell | star-discrepancy sweep | 0.65 |
+//! | pair | RDF pair distances (PSA statistics, `--rdf`), plus the transform's Bessel terms | [`PAIR_NS`], [`PSA_TERM_NS`] (parallel) |
 //!
 //! Touching freshly allocated memory costs about [`BYTE_NS`] per byte on that machine (page
 //! faults of a virtual machine), which the large images make visible.
@@ -72,6 +73,8 @@ pub enum Unit {
     Operations,
     /// Cells of the star-discrepancy sweep.
     Cells,
+    /// Point pairs of a radial distribution function (one toroidal distance and bin each).
+    Pairs,
     /// Pixels (one closed-form value or one encoded pixel each).
     Pixels,
     /// Point updates of an iterative sampler (points × iterations, × directions for SOT).
@@ -92,6 +95,7 @@ impl Unit {
             Unit::MultiplyAdds => "complex multiply-adds",
             Unit::Operations => "operations",
             Unit::Cells => "cells",
+            Unit::Pairs => "point pairs",
             Unit::Pixels => "pixels",
             Unit::PointUpdates => "point updates",
         }
@@ -393,6 +397,12 @@ const STAR_CELL_NS: f64 = 0.65;
 /// Per point: the minimum distance (grid search), the t-value digits per (m·log₂ m).
 const MIN_DISTANCE_NS: f64 = 400.0;
 const L2_NS: f64 = 80.0;
+/// One pair of an RDF: a toroidal distance, its square root and bin (parallel).
+pub const PAIR_NS: f64 = 2.0;
+/// One term of PSA's RDF-to-power transform: J₀, the window and a multiply-add (parallel).
+pub const PSA_TERM_NS: f64 = 10.0;
+/// Per point of the toroidal Delaunay triangulation and its neighbour rings (serial).
+const DELAUNAY_POINT_NS: f64 = 500.0;
 const TVALUE_NS: f64 = 5.0;
 /// A filter's metrics and curves (the filter panel, `samplescope filter`): fixed quadratures.
 const FILTER_METRICS_S: f64 = 0.05;
@@ -1010,6 +1020,55 @@ pub fn statistics(n: usize) -> Estimate {
             Unit::Points
         },
         cpu(ns) + touch(bytes),
+        bytes,
+    )
+}
+
+/// PSA's statistics of `n` points ([`crate::core::metrics::psa_statistics`]): the RDF over
+/// N(N−1)/2 pairs, its transform (≈ m²/2 terms for m = ⌊100√N⌋ RDF bins and frequencies),
+/// and a toroidal Delaunay triangulation of ≈ N + 16√N points. Nothing above
+/// [`crate::core::metrics::PSA_MAX_N`] points (not computed there).
+pub fn psa_statistics(n: usize) -> Estimate {
+    use crate::core::metrics::psa;
+    if !(psa::PSA_MIN_N..=psa::PSA_MAX_N).contains(&n) {
+        return Estimate::new(
+            format!("PSA statistics of {n} points (skipped)"),
+            0.0,
+            Unit::Pairs,
+            0.0,
+            0.0,
+        );
+    }
+    let nf = n as f64;
+    let pairs = nf * (nf - 1.0) / 2.0;
+    let m = psa::spectral_bins(n) as f64;
+    let terms = psa::transform_terms(n);
+    let tri = nf + 16.0 * nf.sqrt();
+    let bytes = 8.0 * m * 2.0 * (rayon_chunks() + 2.0) + 200.0 * tri;
+    Estimate::new(
+        format!("PSA statistics of {n} points ({m} RDF bins)"),
+        pairs,
+        Unit::Pairs,
+        parallel(pairs * PAIR_NS + terms * PSA_TERM_NS) + cpu(tri * DELAUNAY_POINT_NS),
+        bytes,
+    )
+}
+
+/// Per-chunk histograms of the RDF (4 per thread of the reference machine).
+fn rayon_chunks() -> f64 {
+    4.0 * REFERENCE_CORES
+}
+
+/// A radial distribution function of `n` points over `bins` bins ([`crate::core::metrics::rdf`]).
+pub fn rdf(n: usize, bins: usize) -> Estimate {
+    let nf = n as f64;
+    let pairs = nf * (nf - 1.0).max(0.0) / 2.0;
+    let bytes = 8.0 * bins as f64 * (rayon_chunks() + 1.0);
+    Estimate::new(
+        format!("RDF of {n} points ({bins} bins)"),
+        pairs,
+        Unit::Pairs,
+        parallel(pairs * PAIR_NS) + touch(bytes),
         bytes,
     )
 }

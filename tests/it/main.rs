@@ -30,6 +30,7 @@ mod params;
 mod patterns_lowdisc;
 mod patterns_poisson;
 mod patterns_stratified;
+mod psa;
 mod recon_error;
 mod recon_grid;
 mod recon_kernels;

@@ -1,4 +1,6 @@
-//! Point-set statistics: minimum distance, star and L2-star discrepancy, t-value of nets.
+//! Point-set statistics: minimum distance, star and L2-star discrepancy, t-value of nets, and
+//! PSA's spectral and spatial statistics ([`psa`]: RDF, effective Nyquist frequency,
+//! oscillations, bond-orientational order).
 //!
 //! Every function is a pure function of a slice of points and returns
 //! `Result<_, `[`MetricsError`]`>`; the long ones take a [`Cancel`] token and check it inside
@@ -41,6 +43,9 @@
 //! | star discrepancy, 1D | [`star_discrepancy_1d`]: closed form, O(N log N) | [`star_discrepancy_1d_brute_force`]: O(N²) |
 //! | L2-star discrepancy | [`l2_star_discrepancy`]: Fenwick tree, O(N log N) | [`l2_star_discrepancy_naive`]: double sum, O(N²) |
 //! | t-value | [`t_value`]: digit counting, O(N m log m) | (tests: every interval, exact integers) |
+//! | RDF | [`rdf`]: all pairs, parallel, O(N²) | [`psa::rdf_naive`]: serial double loop |
+//! | PSA radial power | [`psa::radial_power_from_rdf`]: fast J₀, window cut, parallel | [`psa::radial_power_from_rdf_naive`]: exact J₀, every sample |
+//! | bond-orientational order | [`bond_orientational_order`]: toroidal Delaunay, O(N log N) | (tests: lattices in closed form, PSA's values) |
 //!
 //! # Accuracy
 //! Star discrepancies are exact up to one rounding of `count/N − a·b` (counts are integers).
@@ -65,6 +70,7 @@
 mod dd;
 pub mod l2;
 pub mod mindist;
+pub mod psa;
 pub mod star;
 pub mod tvalue;
 
@@ -77,6 +83,10 @@ pub use crate::core::cancel::{Cancel, Cancelled};
 pub use l2::{l2_star_discrepancy, l2_star_discrepancy_naive, L2_NAIVE_MAX_N};
 pub use mindist::{
     hex_distance, min_distance, min_distance_naive, MinDistance, MIN_DISTANCE_NAIVE_MAX_N,
+};
+pub use psa::{
+    bond_orientational_order, effective_nyquist, oscillations, psa_statistics, radial_power, rdf,
+    PsaStatistics, RadialPower, Rdf, PSA_MAX_N, PSA_MIN_N,
 };
 pub use star::{
     star_discrepancy, star_discrepancy_1d, star_discrepancy_1d_brute_force,
@@ -124,6 +134,23 @@ pub enum MetricsError {
     /// The base of a net is below 2.
     #[error("base = {base}: must be an integer ≥ 2")]
     InvalidBase { base: u32 },
+    /// An RDF binning outside the accepted range.
+    #[error(
+        "RDF bins = {bins}, r_max = {r_max}: need 1 ≤ bins ≤ {max_bins} and 0 < r_max ≤ 0.5 \
+         (annuli beyond 0.5 are not whole circles on the unit torus)"
+    )]
+    InvalidRdfRange {
+        bins: usize,
+        r_max: f64,
+        max_bins: usize,
+    },
+    /// A frequency sampling outside the accepted range.
+    #[error("frequency bins = {bins}, nu_max = {nu_max}: need 1 ≤ bins ≤ {max_bins} and a positive nu_max")]
+    InvalidFrequencyRange {
+        bins: usize,
+        nu_max: f64,
+        max_bins: usize,
+    },
     /// The computation was cancelled.
     #[error("cancelled")]
     Cancelled,

@@ -1,0 +1,1081 @@
+//! PSA's statistics: radial distribution function, the radial power spectrum derived from it,
+//! effective Nyquist frequency, oscillations, and bond-orientational order.
+//!
+//! These are the measures of D. Heck, T. Schlömer, O. Deussen, *Blue noise sampling with
+//! controlled aliasing*, ACM TOG 32(3):25, 2013, as their tool `psa` computes and prints them
+//! (github.com/nodag/psa, commit b042eea7f1dde5b428a225929fb949b8403e82c1: `src/statistics.cpp`
+//! `SpectralStatistics`, `RDFtoRP`, `EffectiveNyquist`, `OscillationsMetric`;
+//! `src/point.cpp` `PointSet::RDF`; `src/delaunay.cpp` `Delaunay::GetStatistics`). Written
+//! here from those definitions; `tests/data/psa/README.md` says how PSA's own values, which
+//! the tests compare against, were obtained.
+//!
+//! Distances are toroidal (the crate convention, and PSA's); frequencies ν are in cycles per
+//! unit length (integer-frequency units, as the periodogram's k). N is the number of points.
+//!
+//! # Radial distribution function ([`rdf`])
+//!
+//! A histogram of the toroidal distances of all N(N−1)/2 pairs over `bins` bins of width
+//! Δr = r_max/bins, bin i = [iΔr, (i+1)Δr), divided by the count a uniform density would put
+//! there:
+//!
+//! g_i = count_i / ( N(N−1)/2 · π Δr² (2i+1) ),
+//!
+//! (π Δr²(2i+1) is the area of the annulus). White noise has E[g_i] = 1. r_max ≤ ½ keeps
+//! every annulus a whole circle on the torus. PSA's `--rdf` plot uses N/8 bins up to 8 d_hex
+//! ([`psa_rdf_range`], d_hex = [`hex_distance`]); its spectral statistics use ⌊100√N⌋ bins up
+//! to ½ ([`spectral_bins`]).
+//!
+//! # Radial power spectrum from the RDF ([`radial_power_from_rdf`])
+//!
+//! For an isotropic point pattern of N points on unit area the radial power spectrum is the
+//! Hankel transform of g − 1 (Heck et al. 2013):
+//!
+//! P(ν) = 1 + 2πN ∫₀^{r_max} (g(r) − 1) J₀(2πνr) r w_ν(r) dr,
+//!
+//! with PSA's taper w_ν(r) = 0.43 + 0.5 cos(πr/L) + 0.08 cos(2πr/L) for r ≤ L and 0 beyond
+//! (a Blackman window, with PSA's 0.43 for Blackman's 0.42), whose length grows with the
+//! frequency: L = r_max · clamp(4ν/√N, 0.2, 0.5). Like PSA, the integral is the trapezoid
+//! rule on the bin samples g_i taken at r_i = iΔr (the lower bin edge), and the result is
+//! |·| (P is a power, and the windowed estimate can dip below zero). The frequencies are
+//! ν_k = kΔν, k = 0 … bins − 1, Δν = ν_max/bins; PSA's spectral statistics use the same bin
+//! count as the RDF and ν_max = N/2 ([`radial_power`]). J₀ is Abramowitz & Stegun 9.4.1 and
+//! 9.4.3 (absolute error < 10⁻⁷, checked against [`bessel_j0`] in the tests);
+//! [`radial_power_from_rdf_naive`] evaluates the same sum with the exact J₀ and no shortcut.
+//!
+//! PSA derives its statistics from this transform, not from a periodogram on the integer
+//! frequency grid (`src/core/spectrum/`), because they need the spectrum on a continuous,
+//! finely sampled frequency axis up to many times the Nyquist frequency.
+//!
+//! # Effective Nyquist frequency ([`effective_nyquist`])
+//!
+//! With the mean power over the disc of radius ν_k, C_k = (2/ν_k²) Σ_{l ≤ k} P(ν_l) ν_l Δν
+//! (a rectangle rule, as PSA's), search upward from ν = √N/2 for the first ν_i with
+//! C_i > 0.5; the effective Nyquist frequency is half the largest ν_j ≤ ν_i (j ≥ 1) with
+//! C_j < 0.1 (PSA's thresholds): a sampling pattern has almost no power below ν_j, so it
+//! represents frequencies up to ν_j/2 nearly free of aliasing. It is reported, as PSA prints
+//! it, relative to the Nyquist frequency √N/2 of a √N × √N grid: **ν_eff = (ν_j/2)/(√N/2) =
+//! ν_j/√N**. 0 when no such pair exists (white noise, or Poisson disk with a small radius:
+//! their disc means never fall below 0.1). The value moves in steps of Δν/√N (0.005 for
+//! PSA's bins at N = 1024).
+//!
+//! # Oscillations ([`oscillations`])
+//!
+//! Let ν_osc be the first frequency where P reaches 0.98 (if it never does: where P is
+//! largest), ν₁ = min(ν_osc + 10·√N/2, ν_max). Oscillations = 10 · RMS of P − 1 over the
+//! annulus ν_osc ≤ |ν| ≤ ν₁ of the plane:
+//!
+//! oscillations = 10 · ( 2π ∫_{ν_osc}^{ν₁} (P(ν) − 1)² ν dν / (π(ν₁² − ν_osc²)) )^{1/2},
+//!
+//! the integral by the trapezoid rule on the samples k₀ … k₁ with k₀ = ν_osc/Δν and
+//! k₁ = ⌊ν₁/Δν⌋ + 1 (clamped to the last sample), as PSA's. (PSA's loop drops sample k₁ − 1
+//! when k₁ − k₀ is even; we do not: 3·10⁻⁴ relative on the N = 954 set of the tests.)
+//!
+//! # Bond-orientational order ([`bond_orientational_order`])
+//!
+//! For point i with Delaunay neighbours q_1 … q_m in angular order, let θ_k be the direction
+//! of the edge q_k − q_{k+1} (cyclic) between consecutive neighbours, and
+//! s_i = Σ_k exp(6iθ_k). Then
+//!
+//! BOO = Σ_i |s_i| / Σ_i m_i,
+//!
+//! which is PSA's definition: the mean of |ψ₆(i)| = |s_i|/m_i weighted by the neighbour count
+//! m_i, with the directions of the edges of the neighbour ring. (The textbook ψ₆ uses the
+//! bond directions p_i → q_k and a plain mean; both give the same value for every lattice,
+//! e.g. 1 for the hexagonal lattice and 1/3 for a square lattice with one diagonal per cell,
+//! but differ on irregular sets.) The triangulation is toroidal, as PSA's: the points and
+//! their periodic copies in a band [−w, 1 + w]² are triangulated ([`delaunator`]); w starts at
+//! PSA's 4/√N and doubles (up to 2, with copies p + (a, b), a, b ∈ −2…2) until every
+//! triangle around an original point has its circumdisc's bounding box inside the band, which
+//! makes it a Delaunay triangle of the infinite periodic set (`pattern/optimize.rs` gives the
+//! argument). A point the triangulator drops as a (near-)duplicate of another counts with that
+//! point's neighbours, as in PSA (CGAL returns the existing vertex for a duplicate).
+//!
+//! # Costs
+//!
+//! [`psa_statistics`]: the RDF over all pairs, N(N−1)/2 distances (parallel); the transform,
+//! about 0.4 · (100√N)² = 4000·N Bessel evaluations (parallel); a triangulation of about
+//! N + 16√N points. N ≤ [`PSA_MAX_N`].
+
+use glam::DVec2;
+use rayon::prelude::*;
+use serde::Serialize;
+use std::f64::consts::{FRAC_PI_4, PI, TAU};
+
+use super::{hex_distance, validate, Cancel, MetricsError, CANCEL_STRIDE};
+use crate::core::filter::special::bessel_j0;
+
+/// The fewest points the PSA statistics accept (an RDF needs a pair).
+pub const PSA_MIN_N: usize = 2;
+/// The most points the PSA statistics accept: their RDF costs N(N−1)/2 distances (≈ 2·10⁹
+/// at this N, a few seconds on two cores).
+pub const PSA_MAX_N: usize = 65_536;
+/// The most bins an RDF or radial power curve may have.
+pub const RDF_MAX_BINS: usize = 1 << 24;
+
+/// PSA's thresholds of the effective Nyquist frequency (disc mean power).
+const NYQUIST_LOW: f64 = 0.1;
+const NYQUIST_HIGH: f64 = 0.5;
+/// Where the oscillations' annulus starts: the first ν with P ≥ this.
+const OSCILLATIONS_START: f64 = 0.98;
+/// The annulus' width in units of √N/2.
+const OSCILLATIONS_WIDTH: f64 = 10.0;
+
+/// PSA's statistics of one point set, normalised as PSA prints them.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct PsaStatistics {
+    /// Effective Nyquist frequency relative to the Nyquist frequency √N/2 of a √N × √N grid
+    /// (1 = as high as the grid's; 0 when the pattern has noticeable power at all frequencies).
+    pub effective_nyquist: f64,
+    /// 10 × the RMS of P − 1 over the annulus above where P first reaches 0.98 (dimensionless;
+    /// 0 for a flat spectrum, large for lattice-like peaks).
+    pub oscillations: f64,
+    /// Bond-orientational order in [0, 1] (1 = hexagonal lattice).
+    pub bond_orientational_order: f64,
+}
+
+/// A radial distribution function: g over `bins` bins of width `r_max / bins` from r = 0.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Rdf {
+    n: usize,
+    r_max: f64,
+    values: Vec<f64>,
+}
+
+impl Rdf {
+    /// Number of points it was computed from.
+    pub fn n(&self) -> usize {
+        self.n
+    }
+    /// Upper end of the last bin (units of the unit square).
+    pub fn r_max(&self) -> f64 {
+        self.r_max
+    }
+    /// Bin width Δr.
+    pub fn bin_width(&self) -> f64 {
+        self.r_max / self.values.len() as f64
+    }
+    /// g_i of bin i = [iΔr, (i+1)Δr).
+    pub fn values(&self) -> &[f64] {
+        &self.values
+    }
+}
+
+/// A radial power spectrum P(ν_k) at ν_k = kΔν, k = 0 … len − 1 (cycles per unit length).
+#[derive(Debug, Clone, PartialEq)]
+pub struct RadialPower {
+    n: usize,
+    nu_max: f64,
+    values: Vec<f64>,
+}
+
+impl RadialPower {
+    /// Number of points it was computed from.
+    pub fn n(&self) -> usize {
+        self.n
+    }
+    /// Frequency step Δν.
+    pub fn bin_width(&self) -> f64 {
+        self.nu_max / self.values.len() as f64
+    }
+    /// Frequency of sample k.
+    pub fn frequency(&self, k: usize) -> f64 {
+        k as f64 * self.bin_width()
+    }
+    /// P(ν_k).
+    pub fn values(&self) -> &[f64] {
+        &self.values
+    }
+}
+
+/// Checks the point count and the points.
+fn validate_psa(points: &[DVec2], what: &'static str) -> Result<(), MetricsError> {
+    let n = points.len();
+    if n > PSA_MAX_N {
+        return Err(MetricsError::TooManyPoints {
+            what,
+            n,
+            max: PSA_MAX_N,
+            cost: "O(N²) pair distances",
+        });
+    }
+    if n < PSA_MIN_N {
+        return Err(MetricsError::TooFewPoints {
+            what,
+            n,
+            min: PSA_MIN_N,
+        });
+    }
+    validate(points)
+}
+
+fn validate_range(bins: usize, r_max: f64) -> Result<(), MetricsError> {
+    if bins == 0 || bins > RDF_MAX_BINS || !(r_max > 0.0 && r_max <= 0.5) {
+        return Err(MetricsError::InvalidRdfRange {
+            bins,
+            r_max,
+            max_bins: RDF_MAX_BINS,
+        });
+    }
+    Ok(())
+}
+
+/// Squared toroidal distance.
+#[inline]
+fn torus_d2(p: DVec2, q: DVec2) -> f64 {
+    let mut dx = (p.x - q.x).abs();
+    let mut dy = (p.y - q.y).abs();
+    dx = dx.min(1.0 - dx);
+    dy = dy.min(1.0 - dy);
+    dx * dx + dy * dy
+}
+
+/// The bin ⌊d/Δr⌋ of distance `d`, if below `bins` (the same arithmetic in [`rdf`] and
+/// [`rdf_naive`], so their counts agree exactly).
+#[inline]
+fn bin_of(d: f64, dr: f64, bins: usize) -> Option<usize> {
+    let t = (d / dr).floor();
+    (t < bins as f64).then_some(t as usize)
+}
+
+/// g_i from the pair counts.
+fn normalise(n: usize, r_max: f64, counts: &[u64]) -> Rdf {
+    let dr = r_max / counts.len() as f64;
+    let pairs = (n as f64) * (n as f64 - 1.0) / 2.0;
+    let values = counts
+        .iter()
+        .enumerate()
+        .map(|(i, &c)| c as f64 / (pairs * PI * dr * dr * (2 * i + 1) as f64))
+        .collect();
+    Rdf { n, r_max, values }
+}
+
+/// PSA's binning of its `--rdf` output: N/8 bins (at least 1) up to 8 d_hex(N) (at most ½,
+/// where the annuli stop being whole circles on the torus; PSA does not clamp).
+pub fn psa_rdf_range(n: usize) -> (usize, f64) {
+    ((n / 8).max(1), (8.0 * hex_distance(n.max(1))).min(0.5))
+}
+
+/// The bins of PSA's spectral statistics: ⌊100√N⌋ RDF bins up to r = ½, and as many
+/// frequency samples up to ν = N/2.
+pub fn spectral_bins(n: usize) -> usize {
+    (100.0 * (n as f64).sqrt()) as usize
+}
+
+/// The number of terms [`radial_power`] sums for N points (the budget's count): for each of
+/// the m = [`spectral_bins`] frequencies, the RDF samples 1 … ⌊L(ν)/Δr⌋ (at most m − 1).
+/// About m²/2.
+pub fn transform_terms(n: usize) -> f64 {
+    let m = spectral_bins(n);
+    if m == 0 {
+        return 0.0;
+    }
+    let dnu = 0.5 * n as f64 / m as f64;
+    let dr = 0.5 / m as f64;
+    (0..m)
+        .map(|k| last_term(window_length(k as f64 * dnu, n, 0.5), dr, m) as f64)
+        .sum()
+}
+
+/// The last RDF sample of the transform at window length `len`.
+#[inline]
+fn last_term(len: f64, dr: f64, m: usize) -> usize {
+    ((len / dr).floor() as usize).min(m - 1)
+}
+
+/// The radial distribution function of `points` (toroidal, see the module docs) over `bins`
+/// bins up to `r_max` ∈ (0, ½]. All N(N−1)/2 pairs, in parallel; the counts, hence the
+/// values, do not depend on the number of threads.
+///
+/// Errors: fewer than 2 or more than [`PSA_MAX_N`] points, an invalid point, `bins` = 0 or
+/// above [`RDF_MAX_BINS`], `r_max` outside (0, ½], cancellation.
+pub fn rdf(
+    points: &[DVec2],
+    bins: usize,
+    r_max: f64,
+    cancel: &Cancel,
+) -> Result<Rdf, MetricsError> {
+    validate_psa(points, "a radial distribution function")?;
+    validate_range(bins, r_max)?;
+    let n = points.len();
+    let dr = r_max / bins as f64;
+    // Rows interleaved over a fixed number of chunks: balanced (row i has N − 1 − i pairs),
+    // one histogram per chunk.
+    let chunks = (rayon::current_num_threads() * 4).clamp(1, n);
+    let partial: Vec<Vec<u64>> = (0..chunks)
+        .into_par_iter()
+        .map(|c| {
+            let mut h = vec![0u64; bins];
+            for i in (c..n).step_by(chunks) {
+                cancel.check()?;
+                let p = points[i];
+                for q in &points[i + 1..] {
+                    if let Some(b) = bin_of(torus_d2(p, *q).sqrt(), dr, bins) {
+                        h[b] += 1;
+                    }
+                }
+            }
+            Ok(h)
+        })
+        .collect::<Result<_, MetricsError>>()?;
+    let mut counts = vec![0u64; bins];
+    for h in &partial {
+        for (c, v) in counts.iter_mut().zip(h) {
+            *c += v;
+        }
+    }
+    Ok(normalise(n, r_max, &counts))
+}
+
+/// [`rdf`] by a plain serial double loop (the reference of the tests).
+pub fn rdf_naive(
+    points: &[DVec2],
+    bins: usize,
+    r_max: f64,
+    cancel: &Cancel,
+) -> Result<Rdf, MetricsError> {
+    validate_psa(points, "a radial distribution function")?;
+    validate_range(bins, r_max)?;
+    let n = points.len();
+    let dr = r_max / bins as f64;
+    let mut counts = vec![0u64; bins];
+    for i in 0..n {
+        if i % 64 == 0 {
+            cancel.check()?;
+        }
+        for j in i + 1..n {
+            if let Some(b) = bin_of(torus_d2(points[i], points[j]).sqrt(), dr, bins) {
+                counts[b] += 1;
+            }
+        }
+    }
+    Ok(normalise(n, r_max, &counts))
+}
+
+/// J₀(x) by Abramowitz & Stegun 9.4.1 (|x| ≤ 3, error < 5·10⁻⁸) and 9.4.3 (|x| > 3,
+/// √x·error < 2·10⁻⁸ in amplitude and 7·10⁻⁸ in phase).
+#[inline]
+fn j0_fast(x: f64) -> f64 {
+    let ax = x.abs();
+    if ax <= 3.0 {
+        let t = (ax / 3.0) * (ax / 3.0);
+        1.0 + t
+            * (-2.249_999_7
+                + t * (1.265_620_8
+                    + t * (-0.316_386_6
+                        + t * (0.044_447_9 + t * (-0.003_944_4 + t * 0.000_210_0)))))
+    } else {
+        let t = 3.0 / ax;
+        let f0 = 0.797_884_56
+            + t * (-0.000_000_77
+                + t * (-0.005_527_40
+                    + t * (-0.000_095_12
+                        + t * (0.001_372_37 + t * (-0.000_728_05 + t * 0.000_144_76)))));
+        let theta = ax - FRAC_PI_4
+            + t * (-0.041_663_97
+                + t * (-0.000_039_54
+                    + t * (0.002_625_73
+                        + t * (-0.000_541_25 + t * (-0.000_293_33 + t * 0.000_135_58)))));
+        f0 * theta.cos() / ax.sqrt()
+    }
+}
+
+/// PSA's taper (module docs) at r for window length `len`; 0 beyond.
+#[inline]
+fn window(r: f64, len: f64) -> f64 {
+    if r > len {
+        0.0
+    } else {
+        0.43 + 0.5 * (PI * r / len).cos() + 0.08 * (TAU * r / len).cos()
+    }
+}
+
+/// The window length L(ν) = r_max · clamp(4ν/√N, 0.2, 0.5).
+#[inline]
+fn window_length(nu: f64, n: usize, r_max: f64) -> f64 {
+    r_max * (4.0 * nu / (n as f64).sqrt()).clamp(0.2, 0.5)
+}
+
+fn validate_spectrum(bins: usize, nu_max: f64) -> Result<(), MetricsError> {
+    if bins == 0 || bins > RDF_MAX_BINS || !(nu_max.is_finite() && nu_max > 0.0) {
+        return Err(MetricsError::InvalidFrequencyRange {
+            bins,
+            nu_max,
+            max_bins: RDF_MAX_BINS,
+        });
+    }
+    Ok(())
+}
+
+/// The radial power spectrum P(ν_k), ν_k = k·ν_max/bins, from an RDF by PSA's windowed
+/// Hankel transform (module docs). Parallel over the frequencies; each value is a serial sum,
+/// so the result does not depend on the number of threads.
+///
+/// Errors: `bins` = 0 or above [`RDF_MAX_BINS`], `nu_max` not a positive number, cancellation.
+pub fn radial_power_from_rdf(
+    rdf: &Rdf,
+    bins: usize,
+    nu_max: f64,
+    cancel: &Cancel,
+) -> Result<RadialPower, MetricsError> {
+    validate_spectrum(bins, nu_max)?;
+    let m = rdf.values.len();
+    let dr = rdf.bin_width();
+    let dnu = nu_max / bins as f64;
+    let n = rdf.n;
+    // The window is the same for all frequencies where L(ν) is clamped (all but a few).
+    let taper = |len: f64| -> Vec<f64> { (0..m).map(|j| window(j as f64 * dr, len)).collect() };
+    let (short, long) = (0.2 * rdf.r_max, 0.5 * rdf.r_max);
+    let (w_short, w_long) = (taper(short), taper(long));
+    let values = (0..bins)
+        .into_par_iter()
+        .with_min_len(8)
+        .map(|k| {
+            cancel.check()?;
+            let nu = k as f64 * dnu;
+            let len = window_length(nu, n, rdf.r_max);
+            let u = TAU * nu;
+            // Samples beyond L have a zero window; j = 0 has r = 0.
+            let last = last_term(len, dr, m);
+            let w_at = |j: usize| {
+                if len == short {
+                    w_short[j]
+                } else if len == long {
+                    w_long[j]
+                } else {
+                    window(j as f64 * dr, len)
+                }
+            };
+            let mut sum = 0.0;
+            for j in 1..=last {
+                let r = j as f64 * dr;
+                let f = (rdf.values[j] - 1.0) * j0_fast(u * r) * r * w_at(j);
+                sum += if j == m - 1 { 0.5 * f } else { f };
+            }
+            Ok((1.0 + TAU * n as f64 * dr * sum).abs())
+        })
+        .collect::<Result<Vec<f64>, MetricsError>>()?;
+    Ok(RadialPower { n, nu_max, values })
+}
+
+/// [`radial_power_from_rdf`] by the plain trapezoid sum over all RDF samples with the exact
+/// J₀ ([`bessel_j0`]) and the window evaluated everywhere (the reference of the tests).
+pub fn radial_power_from_rdf_naive(
+    rdf: &Rdf,
+    bins: usize,
+    nu_max: f64,
+) -> Result<RadialPower, MetricsError> {
+    validate_spectrum(bins, nu_max)?;
+    let m = rdf.values.len();
+    let dr = rdf.bin_width();
+    let values = (0..bins)
+        .map(|k| {
+            let nu = k as f64 * nu_max / bins as f64;
+            let len = window_length(nu, rdf.n, rdf.r_max);
+            let f = |j: usize| {
+                let r = j as f64 * dr;
+                (rdf.values[j] - 1.0) * bessel_j0(TAU * nu * r) * r * window(r, len)
+            };
+            let mut t = 0.5 * (f(0) + f(m - 1));
+            for j in 1..m.saturating_sub(1) {
+                t += f(j);
+            }
+            (1.0 + TAU * rdf.n as f64 * dr * t).abs()
+        })
+        .collect();
+    Ok(RadialPower {
+        n: rdf.n,
+        nu_max,
+        values,
+    })
+}
+
+/// PSA's radial power spectrum of `points`: the RDF with [`spectral_bins`] bins up to ½, its
+/// transform at as many frequencies up to N/2.
+///
+/// Errors: as [`rdf`].
+pub fn radial_power(points: &[DVec2], cancel: &Cancel) -> Result<RadialPower, MetricsError> {
+    let n = points.len();
+    let bins = spectral_bins(n).max(1);
+    let g = rdf(points, bins, 0.5, cancel)?;
+    radial_power_from_rdf(&g, bins, 0.5 * n as f64, cancel)
+}
+
+/// The effective Nyquist frequency of a radial power spectrum, relative to √N/2 (module
+/// docs); 0 when the disc mean never falls below 0.1 before rising above 0.5.
+pub fn effective_nyquist(rp: &RadialPower) -> f64 {
+    let p = &rp.values;
+    let dnu = rp.bin_width();
+    let sqrt_n = (rp.n as f64).sqrt();
+    // Disc means C_k and, for each k, the last j ≤ k (j ≥ 1) with C_j < 0.1.
+    let mut cum = 0.0;
+    let mut last_low: Option<usize> = None;
+    let start = (0.5 * sqrt_n / dnu) as usize;
+    for (k, &pk) in p.iter().enumerate() {
+        let nu = k as f64 * dnu;
+        cum += pk * dnu * 2.0 * nu;
+        if k == 0 {
+            continue;
+        }
+        let mean = cum / (nu * nu);
+        if mean < NYQUIST_LOW {
+            last_low = Some(k);
+        }
+        if k >= start && mean > NYQUIST_HIGH {
+            if let Some(j) = last_low {
+                return j as f64 * dnu / sqrt_n;
+            }
+        }
+    }
+    0.0
+}
+
+/// The oscillations metric of a radial power spectrum (module docs).
+pub fn oscillations(rp: &RadialPower) -> f64 {
+    let p = &rp.values;
+    let dnu = rp.bin_width();
+    let nu_top = rp.nu_max;
+    // First sample reaching the threshold, else the (first) maximum.
+    let k0 = p
+        .iter()
+        .position(|&v| v >= OSCILLATIONS_START)
+        .unwrap_or_else(|| {
+            p.iter()
+                .enumerate()
+                .fold((0, f64::NEG_INFINITY), |(bk, bv), (k, &v)| {
+                    if v > bv {
+                        (k, v)
+                    } else {
+                        (bk, bv)
+                    }
+                })
+                .0
+        });
+    let nu0 = k0 as f64 * dnu;
+    let nu1 = (nu0 + OSCILLATIONS_WIDTH * 0.5 * (rp.n as f64).sqrt()).min(nu_top);
+    let k1 = ((nu1 / dnu) as usize + 1).min(p.len() - 1);
+    let f = |k: usize| {
+        let d = p[k] - 1.0;
+        d * d * k as f64 * dnu
+    };
+    let integral = if k1 > k0 {
+        dnu * (0.5 * (f(k0) + f(k1)) + (k0 + 1..k1).map(f).sum::<f64>())
+    } else {
+        0.0
+    };
+    let ring = PI * (nu1 * nu1 - nu0 * nu0);
+    if ring > 0.0 {
+        10.0 * (TAU * integral / ring).sqrt()
+    } else {
+        0.0
+    }
+}
+
+/// Circumcentre of (a, b, c) and its squared radius (non-finite for collinear points).
+#[inline]
+fn circumcircle(a: DVec2, b: DVec2, c: DVec2) -> (DVec2, f64) {
+    let (d, e) = (b - a, c - a);
+    let den = 2.0 * d.perp_dot(e);
+    let (dd, ee) = (d.length_squared(), e.length_squared());
+    let u = DVec2::new(e.y * dd - d.y * ee, d.x * ee - e.x * dd) / den;
+    (a + u, u.length_squared())
+}
+
+/// exp(6iθ) of the direction θ of `d`, as (cos 6θ, sin 6θ); 0 for d = 0.
+#[inline]
+fn six_fold(d: DVec2) -> DVec2 {
+    let len = d.length();
+    if len == 0.0 || !len.is_finite() {
+        return DVec2::ZERO;
+    }
+    let z = d / len;
+    let z2 = DVec2::new(z.x * z.x - z.y * z.y, 2.0 * z.x * z.y);
+    let z3 = DVec2::new(z2.x * z.x - z2.y * z.y, z2.x * z.y + z2.y * z.x);
+    DVec2::new(z3.x * z3.x - z3.y * z3.y, 2.0 * z3.x * z3.y)
+}
+
+/// Widest band of periodic copies.
+const MAX_BAND: f64 = 2.0;
+
+/// Per original point: its neighbour ring (coordinates in the plane), or `None` when the
+/// band is not shown sufficient (unless `accept`).
+fn toroidal_rings(points: &[DVec2], w: f64, accept: bool) -> Option<Vec<Vec<DVec2>>> {
+    use delaunator::{next_halfedge, EMPTY};
+    let n = points.len();
+    let reach: i32 = if w > 1.0 { 2 } else { 1 };
+    let mut all: Vec<delaunator::Point> = points
+        .iter()
+        .map(|p| delaunator::Point { x: p.x, y: p.y })
+        .collect();
+    let inside = |v: f64| v >= -w && v <= 1.0 + w;
+    for p in points {
+        for b in -reach..=reach {
+            let y = p.y + b as f64;
+            if !inside(y) {
+                continue;
+            }
+            for a in -reach..=reach {
+                let x = p.x + a as f64;
+                if (a != 0 || b != 0) && inside(x) {
+                    all.push(delaunator::Point { x, y });
+                }
+            }
+        }
+    }
+    let tri = delaunator::triangulate(&all);
+    let at = |i: usize| DVec2::new(all[i].x, all[i].y);
+    // One halfedge ending at each original point.
+    let mut inedge = vec![EMPTY; n];
+    for e in 0..tri.triangles.len() {
+        let end = tri.triangles[next_halfedge(e)];
+        if end < n && (inedge[end] == EMPTY || tri.halfedges[e] == EMPTY) {
+            inedge[end] = e;
+        }
+    }
+    let band_ok = |e: usize| {
+        let t = e - e % 3;
+        let (c, r2) = circumcircle(
+            at(tri.triangles[t]),
+            at(tri.triangles[t + 1]),
+            at(tri.triangles[t + 2]),
+        );
+        let r = r2.sqrt() * (1.0 + 1e-9) + 1e-12;
+        c.is_finite()
+            && r.is_finite()
+            && c.x - r >= -w
+            && c.x + r <= 1.0 + w
+            && c.y - r >= -w
+            && c.y + r <= 1.0 + w
+    };
+    let mut rings: Vec<Vec<DVec2>> = vec![Vec::new(); n];
+    let mut dropped = Vec::new();
+    for (i, ring) in rings.iter_mut().enumerate() {
+        let start = inedge[i];
+        if start == EMPTY {
+            dropped.push(i);
+            continue;
+        }
+        let mut e = start;
+        loop {
+            if !band_ok(e) && !accept {
+                return None;
+            }
+            ring.push(at(tri.triangles[e]));
+            let twin = tri.halfedges[next_halfedge(e)];
+            if twin == EMPTY {
+                if !accept {
+                    return None;
+                }
+                break;
+            }
+            e = twin;
+            if e == start || ring.len() > all.len() {
+                break;
+            }
+        }
+        // Neighbours relative to the point: copies of a dropped duplicate reuse them.
+        let p = points[i];
+        for q in ring.iter_mut() {
+            *q -= p;
+        }
+    }
+    // A point the triangulator dropped (a near-duplicate) takes the ring of the closest kept
+    // point (rare: a linear search each).
+    for i in dropped {
+        let p = points[i];
+        let best = (0..n)
+            .filter(|&j| inedge[j] != EMPTY)
+            .min_by(|&a, &b| torus_d2(p, points[a]).total_cmp(&torus_d2(p, points[b])));
+        if let Some(j) = best {
+            rings[i] = rings[j].clone();
+        }
+    }
+    Some(rings)
+}
+
+/// PSA's bond-orientational order of `points` on the torus (module docs), in [0, 1].
+///
+/// Errors: fewer than 2 or more than [`PSA_MAX_N`] points, an invalid point, cancellation.
+pub fn bond_orientational_order(points: &[DVec2], cancel: &Cancel) -> Result<f64, MetricsError> {
+    validate_psa(points, "a bond-orientational order")?;
+    let n = points.len();
+    let mut w = (4.0 / (n as f64).sqrt()).min(MAX_BAND);
+    let rings = loop {
+        cancel.check()?;
+        let last = w >= MAX_BAND;
+        if let Some(r) = toroidal_rings(points, w, last) {
+            break r;
+        }
+        w = (2.0 * w).min(MAX_BAND);
+    };
+    let mut acc = 0.0;
+    let mut count = 0usize;
+    for (i, ring) in rings.iter().enumerate() {
+        if i % CANCEL_STRIDE == 0 {
+            cancel.check()?;
+        }
+        let m = ring.len();
+        if m < 2 {
+            continue;
+        }
+        let mut s = DVec2::ZERO;
+        for k in 0..m {
+            s += six_fold(ring[k] - ring[(k + 1) % m]);
+        }
+        acc += s.length();
+        count += m;
+    }
+    Ok(if count > 0 { acc / count as f64 } else { 0.0 })
+}
+
+/// PSA's effective Nyquist frequency, oscillations and bond-orientational order of `points`
+/// (module docs), normalised as PSA prints them.
+///
+/// Errors: fewer than 2 or more than [`PSA_MAX_N`] points, a non-finite point or one outside
+/// [0,1)², cancellation.
+pub fn psa_statistics(points: &[DVec2], cancel: &Cancel) -> Result<PsaStatistics, MetricsError> {
+    let rp = radial_power(points, cancel)?;
+    let bond_orientational_order = bond_orientational_order(points, cancel)?;
+    Ok(PsaStatistics {
+        effective_nyquist: effective_nyquist(&rp),
+        oscillations: oscillations(&rp),
+        bond_orientational_order,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::core::rng::Rng;
+
+    fn white(n: usize, seed: u64) -> Vec<DVec2> {
+        let mut rng = Rng::new(seed);
+        (0..n)
+            .map(|_| {
+                let x = rng.next_f64();
+                DVec2::new(x, rng.next_f64())
+            })
+            .collect()
+    }
+
+    /// The lattice {i·u + j·v} mod 1, u = (1/c, 0), v = (shift/c, 1/r), i < c, j < r, where
+    /// row j is shifted by (j·shift mod 1) cells.
+    fn lattice(c: usize, r: usize, shift: f64) -> (Vec<DVec2>, DVec2, DVec2) {
+        let mut pts = Vec::with_capacity(c * r);
+        for j in 0..r {
+            let off = (j as f64 * shift).fract();
+            for i in 0..c {
+                pts.push(DVec2::new((i as f64 + off) / c as f64, j as f64 / r as f64));
+            }
+        }
+        let u = DVec2::new(1.0 / c as f64, 0.0);
+        let v = DVec2::new(shift / c as f64, 1.0 / r as f64);
+        (pts, u, v)
+    }
+
+    /// BOO of a lattice whose Delaunay triangles are (0, u, v) and (u, v, u + v) (every angle
+    /// of (0, u, v) acute): every neighbour ring is ±u, ±v, ±(v − u), so BOO =
+    /// |e^{6iθ_u} + e^{6iθ_v} + e^{6iθ_{v−u}}| / 3.
+    fn lattice_boo(u: DVec2, v: DVec2) -> f64 {
+        let w = v - u;
+        assert!(
+            u.dot(v) > 0.0 && (-u).dot(w) > 0.0 && (-v).dot(-w) > 0.0,
+            "not acute"
+        );
+        (six_fold(u) + six_fold(v) + six_fold(w)).length() / 3.0
+    }
+
+    #[test]
+    fn j0_fast_matches_the_exact_bessel_function_to_1e_7() {
+        let mut x = 0.0;
+        let mut worst: f64 = 0.0;
+        while x < 3000.0 {
+            worst = worst.max((j0_fast(x) - bessel_j0(x)).abs());
+            x += if x < 50.0 { 0.001 } else { 0.0731 };
+        }
+        assert!(worst < 1e-7, "max |J0 error| = {worst:e}");
+        // Both sides of the switch at 3.
+        assert!((j0_fast(3.0) - bessel_j0(3.0)).abs() < 1e-7);
+        assert!((j0_fast(3.0 + 1e-12) - bessel_j0(3.0)).abs() < 1e-7);
+    }
+
+    #[test]
+    fn rdf_matches_the_naive_double_loop_exactly() {
+        let pts = white(700, 3);
+        let c = Cancel::never();
+        for (bins, r_max) in [(64, 0.5), (90, 0.2), (1, 0.5), (1000, 0.013)] {
+            let fast = rdf(&pts, bins, r_max, &c).unwrap();
+            let naive = rdf_naive(&pts, bins, r_max, &c).unwrap();
+            assert_eq!(fast, naive, "bins = {bins}, r_max = {r_max}");
+        }
+    }
+
+    #[test]
+    fn rdf_of_white_noise_is_one_within_its_counting_error() {
+        let n = 2048;
+        let pts = white(n, 11);
+        let g = rdf(&pts, 20, 0.5, &Cancel::never()).unwrap();
+        let pairs = (n * (n - 1) / 2) as f64;
+        let dr = g.bin_width();
+        for (i, &v) in g.values().iter().enumerate() {
+            let expected = pairs * PI * dr * dr * (2 * i + 1) as f64;
+            let sigma = 1.0 / expected.sqrt();
+            assert!((v - 1.0).abs() < 6.0 * sigma, "g[{i}] = {v}, ±{sigma}");
+        }
+    }
+
+    #[test]
+    fn rdf_of_a_lattice_is_zero_below_its_spacing() {
+        let (pts, u, _) = lattice(32, 32, 0.5);
+        let g = rdf(&pts, 64, 0.5, &Cancel::never()).unwrap();
+        let dr = g.bin_width();
+        // Lattice spacings: |u| = 1/32 and |v| = √(1/64² + 1/32²) ≈ 0.0349.
+        for (i, &v) in g.values().iter().enumerate() {
+            if (i + 1) as f64 * dr < u.length() * (1.0 - 1e-9) {
+                assert_eq!(v, 0.0, "bin {i}");
+            }
+        }
+    }
+
+    #[test]
+    fn radial_power_matches_the_naive_transform() {
+        let c = Cancel::never();
+        for (n, seed) in [(256, 5), (1000, 6)] {
+            let pts = white(n, seed);
+            let bins = spectral_bins(n);
+            let g = rdf(&pts, bins, 0.5, &c).unwrap();
+            let fast = radial_power_from_rdf(&g, bins, 0.5 * n as f64, &c).unwrap();
+            let naive = radial_power_from_rdf_naive(&g, bins, 0.5 * n as f64).unwrap();
+            let worst = fast
+                .values()
+                .iter()
+                .zip(naive.values())
+                .map(|(a, b)| (a - b).abs())
+                .fold(0.0, f64::max);
+            // J₀'s error (< 1e-7) times 2πN Σ|g − 1| r w Δr.
+            assert!(worst < 1e-5, "n = {n}: max |ΔP| = {worst:e}");
+        }
+    }
+
+    #[test]
+    fn radial_power_of_white_noise_averages_to_one() {
+        let n = 1024;
+        let pts = white(n, 9);
+        let rp = radial_power(&pts, &Cancel::never()).unwrap();
+        // Mean over 16 ≤ ν < 256 (beyond the lowest frequencies, where the window dominates).
+        let sel: Vec<f64> = (0..rp.values().len())
+            .filter(|&k| (16.0..256.0).contains(&rp.frequency(k)))
+            .map(|k| rp.values()[k])
+            .collect();
+        let mean = sel.iter().sum::<f64>() / sel.len() as f64;
+        assert!((mean - 1.0).abs() < 0.05, "mean P = {mean}");
+    }
+
+    #[test]
+    fn effective_nyquist_of_a_step_spectrum_is_the_step() {
+        // P = 0 below ν_c and 100 above: the disc mean exceeds 0.5 one sample after ν_c and
+        // is below 0.1 up to ν_c, so ν_j is the last sample below ν_c.
+        let n = 1024;
+        let bins = 3200;
+        let nu_max = 512.0;
+        let dnu = nu_max / bins as f64;
+        for nu_c in [8.0, 20.0, 30.05] {
+            let values = (0..bins)
+                .map(|k| if (k as f64) * dnu < nu_c { 0.0 } else { 100.0 })
+                .collect();
+            let rp = RadialPower { n, nu_max, values };
+            let last = ((nu_c / dnu).ceil() - 1.0) * dnu;
+            let got = effective_nyquist(&rp);
+            assert!((got - last / 32.0).abs() < 1e-12, "ν_c = {nu_c}: {got}");
+        }
+        // A flat spectrum has no such frequency.
+        let flat = RadialPower {
+            n,
+            nu_max,
+            values: vec![1.0; bins],
+        };
+        assert_eq!(effective_nyquist(&flat), 0.0);
+    }
+
+    #[test]
+    fn oscillations_of_a_constant_offset_are_ten_times_the_offset() {
+        // P = 0 below ν_0 and 1 + a above: the RMS of P − 1 over the ring is a, up to the
+        // trapezoid's ring ν_{k1}² − ν_0² (exact for the linear integrand) over ν₁² − ν_0².
+        let n = 1024;
+        let bins = 3200;
+        let nu_max = 512.0;
+        let dnu = nu_max / bins as f64;
+        let a = 0.3;
+        let k0 = 150;
+        let values = (0..bins)
+            .map(|k| if k < k0 { 0.0 } else { 1.0 + a })
+            .collect();
+        let rp = RadialPower { n, nu_max, values };
+        let nu0 = k0 as f64 * dnu;
+        let nu1 = nu0 + 10.0 * 16.0;
+        let k1 = (nu1 / dnu) as usize + 1;
+        let nuk1 = k1 as f64 * dnu;
+        let want = 10.0 * a * ((nuk1 * nuk1 - nu0 * nu0) / (nu1 * nu1 - nu0 * nu0)).sqrt();
+        let got = oscillations(&rp);
+        assert!((got - want).abs() < 1e-12, "{got} vs {want}");
+        assert!((got - 10.0 * a).abs() < 0.01 * 10.0 * a);
+        let flat = RadialPower {
+            n,
+            nu_max,
+            values: vec![1.0; bins],
+        };
+        assert_eq!(oscillations(&flat), 0.0);
+    }
+
+    #[test]
+    fn bond_orientational_order_of_a_near_equilateral_lattice_is_one() {
+        // 26 × 30 with alternate rows offset by half a cell: 2c/r = 1.7333 ≈ √3.
+        let (pts, u, v) = lattice(26, 30, 0.5);
+        let want = lattice_boo(u, v);
+        assert!(want > 0.999_99);
+        let got = bond_orientational_order(&pts, &Cancel::never()).unwrap();
+        assert!((got - want).abs() < 1e-12, "{got} vs {want}");
+    }
+
+    #[test]
+    fn bond_orientational_order_of_lattices_matches_the_closed_form() {
+        // The stretched hex lattice of `hex` at N = 1024 (32 × 32; PSA prints 0.957333), a
+        // square grid sheared by one cell over its height (so that each cell has one Delaunay
+        // diagonal), and few points (N = 6: the widest band).
+        for (c, r, shift) in [
+            (32, 32, 0.5),
+            (32, 32, 1.0 / 32.0),
+            (3, 2, 0.5),
+            (40, 20, 0.5),
+        ] {
+            let (pts, u, v) = lattice(c, r, shift);
+            let want = lattice_boo(u, v);
+            let got = bond_orientational_order(&pts, &Cancel::never()).unwrap();
+            assert!(
+                (got - want).abs() < 1e-12,
+                "{c}×{r}, shift {shift}: {got} vs {want}"
+            );
+        }
+        // The unsheared limit: directions 0°, 90°, 135° give |1 − 1 − i|/3 = 1/3.
+        let square = six_fold(DVec2::X) + six_fold(DVec2::Y) + six_fold(DVec2::new(-1.0, 1.0));
+        assert!((square.length() / 3.0 - 1.0 / 3.0).abs() < 1e-15);
+    }
+
+    #[test]
+    fn bond_orientational_order_counts_a_duplicate_with_its_twin() {
+        let (mut pts, u, v) = lattice(26, 30, 0.5);
+        pts.push(pts[17]);
+        let got = bond_orientational_order(&pts, &Cancel::never()).unwrap();
+        assert!((got - lattice_boo(u, v)).abs() < 1e-12);
+        // Two points, the smallest set: finite, in [0, 1].
+        let two = [DVec2::new(0.1, 0.2), DVec2::new(0.6, 0.3)];
+        let b = bond_orientational_order(&two, &Cancel::never()).unwrap();
+        assert!((0.0..=1.0).contains(&b), "{b}");
+    }
+
+    #[test]
+    fn white_noise_statistics_are_in_psa_s_range() {
+        let s = psa_statistics(&white(1024, 1), &Cancel::never()).unwrap();
+        assert_eq!(s.effective_nyquist, 0.0);
+        assert!((0.2..0.4).contains(&s.oscillations), "{s:?}");
+        assert!((0.3..0.45).contains(&s.bond_orientational_order), "{s:?}");
+    }
+
+    #[test]
+    fn bad_input_is_a_typed_error() {
+        let c = Cancel::never();
+        let one = [DVec2::new(0.5, 0.5)];
+        assert!(matches!(
+            psa_statistics(&one, &c),
+            Err(MetricsError::TooFewPoints { n: 1, .. })
+        ));
+        let nan = [DVec2::new(0.5, 0.5), DVec2::new(f64::NAN, 0.1)];
+        assert!(matches!(
+            psa_statistics(&nan, &c),
+            Err(MetricsError::NonFinite { index: 1, .. })
+        ));
+        assert!(matches!(
+            bond_orientational_order(&nan, &c),
+            Err(MetricsError::NonFinite { index: 1, .. })
+        ));
+        let out = [DVec2::new(0.5, 0.5), DVec2::new(1.0, 0.1)];
+        assert!(matches!(
+            rdf(&out, 10, 0.5, &c),
+            Err(MetricsError::OutOfRange { index: 1, .. })
+        ));
+        let pts = white(10, 1);
+        for (bins, r_max) in [(0, 0.5), (10, 0.0), (10, 0.51), (10, f64::NAN)] {
+            assert!(matches!(
+                rdf(&pts, bins, r_max, &c),
+                Err(MetricsError::InvalidRdfRange { .. })
+            ));
+        }
+        let g = rdf(&pts, 10, 0.5, &c).unwrap();
+        assert!(matches!(
+            radial_power_from_rdf(&g, 10, f64::INFINITY, &c),
+            Err(MetricsError::InvalidFrequencyRange { .. })
+        ));
+        let many = vec![DVec2::new(0.5, 0.5); PSA_MAX_N + 1];
+        assert!(matches!(
+            psa_statistics(&many, &c),
+            Err(MetricsError::TooManyPoints { .. })
+        ));
+    }
+
+    #[test]
+    fn a_cancelled_token_stops_every_stage() {
+        let c = Cancel::new();
+        c.cancel();
+        let pts = white(300, 2);
+        assert_eq!(rdf(&pts, 10, 0.5, &c), Err(MetricsError::Cancelled));
+        assert_eq!(
+            bond_orientational_order(&pts, &c),
+            Err(MetricsError::Cancelled)
+        );
+        let g = rdf(&pts, 10, 0.5, &Cancel::never()).unwrap();
+        assert_eq!(
+            radial_power_from_rdf(&g, 10, 150.0, &c),
+            Err(MetricsError::Cancelled)
+        );
+        assert_eq!(psa_statistics(&pts, &c), Err(MetricsError::Cancelled));
+    }
+
+    #[test]
+    fn transform_terms_are_the_loop_count_and_about_half_m_squared() {
+        for n in [2, 100, 1024, 4096] {
+            let m = spectral_bins(n);
+            let g = Rdf {
+                n,
+                r_max: 0.5,
+                values: vec![1.0; m],
+            };
+            let dr = g.bin_width();
+            let dnu = 0.5 * n as f64 / m as f64;
+            let counted: usize = (0..m)
+                .map(|k| {
+                    (1..m)
+                        .filter(|&j| j as f64 * dr <= window_length(k as f64 * dnu, n, 0.5))
+                        .count()
+                })
+                .sum();
+            // Within one per frequency (j·Δr ≤ L and j ≤ ⌊L/Δr⌋ may differ by a rounding).
+            assert!(
+                (transform_terms(n) - counted as f64).abs() <= m as f64,
+                "n = {n}"
+            );
+            if n >= 1024 {
+                let half = (m * m) as f64 / 2.0;
+                assert!((counted as f64 / half - 1.0).abs() < 0.02, "n = {n}");
+            }
+        }
+    }
+
+    #[test]
+    fn psa_rdf_range_follows_psa_s_config() {
+        let (bins, r_max) = psa_rdf_range(1024);
+        assert_eq!(bins, 128);
+        assert!((r_max - 8.0 * hex_distance(1024)).abs() < 1e-15);
+        assert_eq!(psa_rdf_range(3), (1, 0.5));
+        assert_eq!(spectral_bins(1024), 3200);
+        assert_eq!(spectral_bins(954), 3088);
+    }
+}
