@@ -24,7 +24,13 @@ pub struct StatsData {
     pub star: Option<(f64, (f64, f64))>,
     pub l2_star: f64,
     pub t_value: Option<u32>,
+    /// PSA's effective Nyquist frequency, oscillations and bond-orientational order, for
+    /// N ≤ [`STATS_PSA_MAX_N`] (their RDF is O(N²)).
+    pub psa: Option<crate::core::metrics::PsaStatistics>,
 }
+
+/// Largest N whose statistics include PSA's measures (about 0.25 s at 4096 on 2 cores).
+pub const STATS_PSA_MAX_N: usize = 8192;
 
 /// The elementary-interval grid (columns, rows) = (2^k, 2^(m−k)) drawn under `n` = 2^m
 /// points for `k` (k above m taken as m); `None` without a k or when `n` is not a power of

@@ -115,6 +115,12 @@ pub(super) fn statistics(ctx: &JobCtx) -> Output {
     let (done, cancel) = (ctx.deps, ctx.cancel);
     let p = points_of(done)?;
     let s = crate::core::metrics::statistics(&p.points, cancel)?;
+    let n = p.points.len();
+    let psa = if (crate::core::metrics::PSA_MIN_N..=crate::model::STATS_PSA_MAX_N).contains(&n) {
+        Some(crate::core::metrics::psa_statistics(&p.points, cancel)?)
+    } else {
+        None
+    };
     let md = s.min_distance.as_ref();
     Ok((
         NodeValue::Statistics(Arc::new(StatsData {
@@ -124,6 +130,7 @@ pub(super) fn statistics(ctx: &JobCtx) -> Output {
             star: s.star.as_ref().map(|st| (st.value, st.worst_box)),
             l2_star: s.l2_star,
             t_value: s.t_value.as_ref().map(|t| t.t),
+            psa,
         })),
         None,
     ))

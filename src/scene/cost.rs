@@ -50,7 +50,13 @@ fn node_estimates(scene: &Scene, c: usize, kind: NodeKind) -> Vec<Estimate> {
             Some(_) => Vec::new(),
             None => vec![budget::pattern(&col.pattern, scene.n)],
         },
-        NodeKind::Statistics => vec![budget::statistics(n)],
+        NodeKind::Statistics => {
+            let mut v = vec![budget::statistics(n)];
+            if (crate::core::metrics::PSA_MIN_N..=crate::model::STATS_PSA_MAX_N).contains(&n) {
+                v.push(budget::psa_statistics(n));
+            }
+            v
+        }
         NodeKind::Spectrum => {
             let s = scene.spectrum;
             let req = SpectrumRequest {

@@ -285,3 +285,49 @@ fn analyze_text_shows_the_psa_lines_and_skips_them_for_one_point() {
         1
     );
 }
+
+#[test]
+fn the_app_s_statistics_carry_psa_s_measures_up_to_their_size_limit() {
+    use samplescope::core::cancel::Cancel;
+    use samplescope::engine::Evaluator;
+    use samplescope::scene::graph::NodeValue;
+    use samplescope::scene::Scene;
+    for (n, want) in [
+        (1024, true),
+        (samplescope::model::STATS_PSA_MAX_N + 1, false),
+    ] {
+        let mut s = Scene::builtin_default();
+        s.panels.spectrum = false;
+        s.panels.zoneplate = false;
+        s.panels.filter = false;
+        s.effects.statistics = true;
+        s.n = n;
+        let mut stats = None;
+        let mut points = None;
+        Evaluator::default().evaluate(
+            &s,
+            &Cancel::never(),
+            &mut |_, kind, r| match (&r.value, kind) {
+                (Ok(NodeValue::Statistics(st)), _) => stats = Some(st.clone()),
+                (Ok(NodeValue::Points(p)), _) => points = Some(p.clone()),
+                (Err(e), k) => panic!("{k:?}: {e}"),
+                _ => {}
+            },
+        );
+        let got = stats.unwrap().psa;
+        if want {
+            let direct = samplescope::core::metrics::psa_statistics(
+                &points.unwrap().points,
+                &Cancel::never(),
+            )
+            .unwrap();
+            assert_eq!(
+                got,
+                Some(direct),
+                "N = {n}: the node's numbers are the metric's"
+            );
+        } else {
+            assert_eq!(got, None, "N = {n} is over the limit");
+        }
+    }
+}

@@ -126,6 +126,17 @@ impl Panel for PatternPanel {
                 s.l2_star,
                 s.t_value.map(|t| format!(" · t = {t}")).unwrap_or_default()
             ));
+            if let Some(p) = &s.psa {
+                ui.small(format!(
+                    "PSA: eff. Nyquist {:.3} · oscillations {:.3} · BOO |ψ₆| {:.3}",
+                    p.effective_nyquist, p.oscillations, p.bond_orientational_order
+                ))
+                .on_hover_text(
+                    "Heck, Schlömer, Deussen 2013: effective Nyquist frequency (× √N/2) and \
+                     oscillations from the radial power spectrum; mean |ψ₆| over Delaunay \
+                     neighbours (1 = hexagonal)",
+                );
+            }
         }
         ui.horizontal_wrapped(|ui| {
             ui.checkbox(&mut cx.view.show_strata, "strata");
