@@ -12,3 +12,4 @@ pub mod recon;
 pub mod rng;
 pub mod signal;
 pub mod spectrum;
+pub(crate) mod torus;

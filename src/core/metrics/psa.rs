@@ -103,6 +103,8 @@ use std::f64::consts::{FRAC_PI_4, PI, TAU};
 
 use super::{hex_distance, validate, Cancel, MetricsError, CANCEL_STRIDE};
 use crate::core::filter::special::bessel_j0;
+use crate::core::pattern::poisson::torus_d2;
+use crate::core::torus::{circumcircle, circumdisc_in_band};
 
 /// The fewest points the PSA statistics accept (an RDF needs a pair).
 pub const PSA_MIN_N: usize = 2;
@@ -217,16 +219,6 @@ fn validate_range(bins: usize, r_max: f64) -> Result<(), MetricsError> {
         });
     }
     Ok(())
-}
-
-/// Squared toroidal distance.
-#[inline]
-fn torus_d2(p: DVec2, q: DVec2) -> f64 {
-    let mut dx = (p.x - q.x).abs();
-    let mut dy = (p.y - q.y).abs();
-    dx = dx.min(1.0 - dx);
-    dy = dy.min(1.0 - dy);
-    dx * dx + dy * dy
 }
 
 /// The bin ⌊d/Δr⌋ of distance `d`, if below `bins` (the same arithmetic in [`rdf`] and
@@ -570,16 +562,6 @@ pub fn oscillations(rp: &RadialPower) -> f64 {
     }
 }
 
-/// Circumcentre of (a, b, c) and its squared radius (non-finite for collinear points).
-#[inline]
-fn circumcircle(a: DVec2, b: DVec2, c: DVec2) -> (DVec2, f64) {
-    let (d, e) = (b - a, c - a);
-    let den = 2.0 * d.perp_dot(e);
-    let (dd, ee) = (d.length_squared(), e.length_squared());
-    let u = DVec2::new(e.y * dd - d.y * ee, d.x * ee - e.x * dd) / den;
-    (a + u, u.length_squared())
-}
-
 /// exp(6iθ) of the direction θ of `d`, as (cos 6θ, sin 6θ); 0 for d = 0.
 #[inline]
 fn six_fold(d: DVec2) -> DVec2 {
@@ -601,26 +583,7 @@ const MAX_BAND: f64 = 2.0;
 fn toroidal_rings(points: &[DVec2], w: f64, accept: bool) -> Option<Vec<Vec<DVec2>>> {
     use delaunator::{next_halfedge, EMPTY};
     let n = points.len();
-    let reach: i32 = if w > 1.0 { 2 } else { 1 };
-    let mut all: Vec<delaunator::Point> = points
-        .iter()
-        .map(|p| delaunator::Point { x: p.x, y: p.y })
-        .collect();
-    let inside = |v: f64| v >= -w && v <= 1.0 + w;
-    for p in points {
-        for b in -reach..=reach {
-            let y = p.y + b as f64;
-            if !inside(y) {
-                continue;
-            }
-            for a in -reach..=reach {
-                let x = p.x + a as f64;
-                if (a != 0 || b != 0) && inside(x) {
-                    all.push(delaunator::Point { x, y });
-                }
-            }
-        }
-    }
+    let all = crate::core::torus::with_periodic_copies(points, w, true);
     let tri = delaunator::triangulate(&all);
     let at = |i: usize| DVec2::new(all[i].x, all[i].y);
     // One halfedge ending at each original point.
@@ -638,13 +601,7 @@ fn toroidal_rings(points: &[DVec2], w: f64, accept: bool) -> Option<Vec<Vec<DVec
             at(tri.triangles[t + 1]),
             at(tri.triangles[t + 2]),
         );
-        let r = r2.sqrt() * (1.0 + 1e-9) + 1e-12;
-        c.is_finite()
-            && r.is_finite()
-            && c.x - r >= -w
-            && c.x + r <= 1.0 + w
-            && c.y - r >= -w
-            && c.y + r <= 1.0 + w
+        circumdisc_in_band(c, r2, w)
     };
     let mut rings: Vec<Vec<DVec2>> = vec![Vec::new(); n];
     let mut dropped = Vec::new();

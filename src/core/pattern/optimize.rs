@@ -99,6 +99,7 @@
 use super::poisson::torus_d2;
 use super::{clamp_unit, Cancel, PatternError, MAX_N};
 use crate::core::rng::Rng;
+use crate::core::torus::{circumcircle, circumdisc_in_band};
 use glam::DVec2;
 use rayon::prelude::*;
 
@@ -251,16 +252,6 @@ fn initial_band(n: usize) -> f64 {
     (4.0 / (n as f64).sqrt()).min(MAX_BAND)
 }
 
-/// Circumcentre of (a, b, c) and its squared radius, computed relative to a.
-#[inline]
-fn circumcentre(a: DVec2, b: DVec2, c: DVec2) -> (DVec2, f64) {
-    let (d, e) = (b - a, c - a);
-    let (bl, cl) = (d.length_squared(), e.length_squared());
-    let den = 2.0 * (d.x * e.y - d.y * e.x);
-    let u = DVec2::new((e.y * bl - d.y * cl) / den, (d.x * cl - e.x * bl) / den);
-    (a + u, u.length_squared())
-}
-
 /// The exact Voronoi cells of `points` (in [0,1)²) on the unit torus.
 fn torus_voronoi(points: &[DVec2]) -> Vec<CellMoments> {
     let mut w = initial_band(points.len());
@@ -278,26 +269,7 @@ fn torus_voronoi(points: &[DVec2]) -> Vec<CellMoments> {
 /// widest band, always sufficient): then points without a closed fan keep their position.
 fn voronoi_with_band(points: &[DVec2], w: f64, accept: bool) -> Option<Vec<CellMoments>> {
     let n = points.len();
-    let reach: i32 = if w > 1.0 { 2 } else { 1 };
-    let mut all: Vec<delaunator::Point> = points
-        .iter()
-        .map(|p| delaunator::Point { x: p.x, y: p.y })
-        .collect();
-    let inside = |v: f64| v >= -w && v < 1.0 + w;
-    for p in points {
-        for b in -reach..=reach {
-            let y = p.y + b as f64;
-            if !inside(y) {
-                continue;
-            }
-            for a in -reach..=reach {
-                let x = p.x + a as f64;
-                if (a != 0 || b != 0) && inside(x) {
-                    all.push(delaunator::Point { x, y });
-                }
-            }
-        }
-    }
+    let all = crate::core::torus::with_periodic_copies(points, w, false);
     let tri = delaunator::triangulate(&all);
     let at = |i: usize| DVec2::new(all[i].x, all[i].y);
     let ntri = tri.triangles.len() / 3;
@@ -314,14 +286,8 @@ fn voronoi_with_band(points: &[DVec2], w: f64, accept: bool) -> Option<Vec<CellM
             if a >= n && b >= n && c >= n {
                 return (DVec2::ZERO, true);
             }
-            let (cc, r2) = circumcentre(at(a), at(b), at(c));
-            let r = r2.sqrt() * (1.0 + 1e-9) + 1e-12;
-            let ok = cc.is_finite()
-                && cc.x - r >= -w
-                && cc.x + r <= 1.0 + w
-                && cc.y - r >= -w
-                && cc.y + r <= 1.0 + w;
-            (cc, ok)
+            let (cc, r2) = circumcircle(at(a), at(b), at(c));
+            (cc, circumdisc_in_band(cc, r2, w))
         })
         .collect();
     // Fan sums per original point: signed area, first moment and second moment about p.
