@@ -6,10 +6,16 @@
 //! only), both on one thread. The GUI calls `panel_png` on the UI thread, so its time is a
 //! frame budget question. A summary (best of 15 runs) with the ratios is printed after the
 //! criterion measurements.
+//!
+//! And the figure users save most: the comparison of the default scene's columns at scale 2
+//! (`figure::comparison_png`, 16:9 layout), against the PNG encoding alone of an image of the
+//! same size (`export::png_bytes`), the floor any raster figure of that size pays.
 
 use criterion::{criterion_group, criterion_main, Criterion};
+use samplescope::core::cancel::Cancel;
 use samplescope::core::recon::{Reconstruction, ZERO_WEIGHT_FILL};
-use samplescope::export::figure::panel_png;
+use samplescope::engine::Evaluator;
+use samplescope::export::figure::{comparison_png, comparison_size, panel_png, Aspect};
 use samplescope::export::{flip_rows, png_bytes};
 use samplescope::model::Colormap;
 use samplescope::model::{ColumnData, FigureContext, PanelKind, ReconData};
@@ -98,5 +104,54 @@ fn bench(c: &mut Criterion) {
     );
 }
 
-criterion_group!(benches, bench);
+/// The default scene evaluated (no disk cache) and prepared as `render` prepares it.
+fn default_comparison() -> (Vec<PanelKind>, Vec<(FigureContext, ColumnData)>) {
+    let scene = Scene::default();
+    let mut results = vec![std::collections::HashMap::new(); scene.columns.len()];
+    Evaluator::new(samplescope::engine::cache::DEFAULT_BUDGET, None).evaluate(
+        &scene,
+        &Cancel::new(),
+        &mut |c, kind, r| {
+            results[c].insert(kind, r);
+        },
+    );
+    let columns = figure::figure_columns(&scene, &results, "default").expect("columns exist");
+    (samplescope::scene::panels::comparison(&scene), columns)
+}
+
+fn bench_comparison(c: &mut Criterion) {
+    let (kinds, columns) = default_comparison();
+    let aspect = Aspect::default();
+    let (w, h) = comparison_size(&kinds, &columns, 2, aspect);
+    let (w, h) = (w as usize, h as usize);
+    // A smooth image of the comparison's size: what encoding alone costs.
+    let plain_values: Vec<f64> = (0..w * h)
+        .map(|i| ((i % w) as f64 / w as f64 + (i / w) as f64 / h as f64) * 0.5)
+        .collect();
+    let plain = || {
+        black_box(
+            png_bytes(&plain_values, w, h, 0.0, 1.0, Colormap::Greys, &[]).expect("valid image"),
+        );
+    };
+    let comparison = || {
+        black_box(comparison_png(&kinds, &columns, 2, aspect).expect("comparison draws"));
+    };
+    let mut g = c.benchmark_group("comparison of the default scene, scale 2");
+    g.sample_size(10);
+    g.bench_function("export::png_bytes (same size, plain)", |b| b.iter(plain));
+    g.bench_function("figure::comparison_png scale 2", |b| b.iter(comparison));
+    g.finish();
+    let p = best_of(9, plain);
+    let f = best_of(9, comparison);
+    let ms = |d: Duration| d.as_secs_f64() * 1e3;
+    println!("\nbest of 9, default scene comparison at scale 2 ({w}×{h}):");
+    println!("  export::png_bytes same size, plain    {:8.2} ms", ms(p));
+    println!(
+        "  figure::comparison_png scale 2        {:8.2} ms   {:.2}× plain",
+        ms(f),
+        ms(f) / ms(p)
+    );
+}
+
+criterion_group!(benches, bench, bench_comparison);
 criterion_main!(benches);

@@ -1,9 +1,10 @@
 //! `samplescope render`: every figure of a scene, headless (no window, no GPU).
 //!
 //! Loads the scene, evaluates its compute graph synchronously, and writes, for every column,
-//! each figure its visible panels show (PNG, SVG, CSV; the figures of
+//! each figure its visible panels show (PNG, SVG, PDF, CSV; the figures of
 //! [`samplescope::scene::panels`]' rule), the column composite, and the comparison of all
-//! columns (laid out to fill a 16:9 frame, or `--aspect W:H`), printing one line per file. The 1D sampling-theorem figures
+//! columns (laid out to fill a 16:9 frame, or `--aspect W:H`; in each picture format asked
+//! for), printing one line per file. The 1D sampling-theorem figures
 //! belong to column 0 only (the view does not depend on the column). The periodograms of all columns
 //! share one colour range (the union of their automatic ranges), as locked scales do in
 //! the GUI. Same scene → byte-identical files.
@@ -14,11 +15,10 @@ use super::CliError;
 use samplescope::core::cancel::Cancel;
 use samplescope::engine::Evaluator;
 use samplescope::export::figure::{
-    column_file_name, column_png, comparison_file_name, comparison_png, comparison_size, panel_csv,
-    panel_file_name, panel_png, panel_svg, Aspect, MAX_COMPOSITE_PIXELS, SCALES,
+    column_file, column_file_name, comparison_file, comparison_file_name, comparison_size,
+    panel_csv, panel_file, panel_file_name, Aspect, FileFormat, MAX_COMPOSITE_PIXELS, SCALES,
 };
 use samplescope::export::ExportError;
-use samplescope::model::{ColumnData, FigureContext};
 use samplescope::scene::graph::{NodeKind, NodeResult};
 use samplescope::scene::{figure, panels, Scene, SceneError};
 use std::collections::HashMap;
@@ -36,7 +36,8 @@ pub struct RenderArgs {
     /// Figure scale, 1..=4: every figure is scale × its base size (text and lines too).
     #[arg(long, default_value_t = 1)]
     pub scale: u32,
-    /// Formats to write, comma-separated: png, svg, csv (composites are PNG only).
+    /// Formats to write, comma-separated: png, svg, pdf, csv (the composites in each of png,
+    /// svg and pdf asked for).
     #[arg(long, value_delimiter = ',', default_value = "png,svg,csv", value_enum)]
     pub format: Vec<Format>,
     /// Shape of the frame the composites are laid out to fill, W:H with W and H positive
@@ -57,12 +58,26 @@ fn parse_aspect(text: &str) -> Result<Aspect, String> {
 /// An output format.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
 pub enum Format {
-    /// Bitmap figures (and the composites).
+    /// Antialiased bitmap figures.
     Png,
-    /// Vector figures.
+    /// Vector figures, the glyphs as outlines.
     Svg,
+    /// Vector figures, one page each, the font embedded.
+    Pdf,
     /// The figures' data.
     Csv,
+}
+
+impl Format {
+    /// The picture format, for all but CSV.
+    fn picture(self) -> Option<FileFormat> {
+        match self {
+            Format::Png => Some(FileFormat::Png),
+            Format::Svg => Some(FileFormat::Svg),
+            Format::Pdf => Some(FileFormat::Pdf),
+            Format::Csv => None,
+        }
+    }
 }
 
 /// The formats asked for, each once, in the order given.
@@ -173,27 +188,8 @@ pub fn run(args: &RenderArgs, session: &Session) -> Result<(), CliError> {
     let results = evaluate(&scene, &source, args.no_cache, cancel)?;
     drop(progress);
 
-    let mut columns: Vec<(FigureContext, ColumnData)> = Vec::new();
-    for (c, data) in figure::columns_data(&scene, &results)
-        .into_iter()
-        .enumerate()
-    {
-        let ctx = figure::context(&scene, c, &stem).map_err(|e| CliError::Usage(e.to_string()))?;
-        columns.push((ctx, data));
-    }
-    // One colour range for every periodogram: the union of the columns' automatic ranges.
-    let ranges: Vec<(f32, f32)> = columns
-        .iter()
-        .filter_map(|(_, d)| d.spectrum.as_ref().map(|s| s.auto_range))
-        .collect();
-    if let Some(first) = ranges.first() {
-        let shared = ranges
-            .iter()
-            .fold(*first, |(lo, hi), r| (lo.min(r.0), hi.max(r.1)));
-        for (ctx, _) in &mut columns {
-            ctx.spectrum_range = Some(shared);
-        }
-    }
+    let columns = figure::figure_columns(&scene, &results, &stem)
+        .map_err(|e| CliError::Usage(e.to_string()))?;
 
     std::fs::create_dir_all(&args.out).map_err(|source_err| CliError::Io {
         path: args.out.display().to_string(),
@@ -210,18 +206,12 @@ pub fn run(args: &RenderArgs, session: &Session) -> Result<(), CliError> {
     for (c, (ctx, data)) in columns.iter().enumerate() {
         for kind in panels::available_in(&scene, c) {
             for &f in &formats {
-                let (name, bytes) = match f {
-                    Format::Png => (
-                        panel_file_name(kind, ctx, Some(s), "png"),
-                        panel_png(kind, ctx, data, s).map_err(export_err)?,
+                let (name, bytes) = match f.picture() {
+                    Some(p) => (
+                        panel_file_name(kind, ctx, Some(s), p.ext()),
+                        panel_file(kind, ctx, data, s, p).map_err(export_err)?,
                     ),
-                    Format::Svg => (
-                        panel_file_name(kind, ctx, Some(s), "svg"),
-                        panel_svg(kind, ctx, data, s)
-                            .map_err(export_err)?
-                            .into_bytes(),
-                    ),
-                    Format::Csv => (
+                    None => (
                         panel_file_name(kind, ctx, None, "csv"),
                         panel_csv(kind, ctx, data).map_err(export_err)?.into_bytes(),
                     ),
@@ -230,25 +220,32 @@ pub fn run(args: &RenderArgs, session: &Session) -> Result<(), CliError> {
             }
         }
         let own = panels::composite_in(&scene, c);
-        if !own.is_empty() && formats.contains(&Format::Png) {
-            let bytes = column_png(&own, ctx, data, s, args.aspect).map_err(export_err)?;
-            write(&args.out.join(column_file_name(ctx, s)), &bytes, cancel)?;
+        if own.is_empty() {
+            continue;
+        }
+        for p in formats.iter().filter_map(|f| f.picture()) {
+            let bytes = column_file(&own, ctx, data, s, args.aspect, p).map_err(export_err)?;
+            write(&args.out.join(column_file_name(ctx, s, p)), &bytes, cancel)?;
         }
     }
+    let pictures: Vec<FileFormat> = formats.iter().filter_map(|f| f.picture()).collect();
     let (cw, ch) = comparison_size(&composite, &columns, s, args.aspect);
-    if !composite.is_empty() && formats.contains(&Format::Png) && cw * ch > MAX_COMPOSITE_PIXELS {
+    if !composite.is_empty() && !pictures.is_empty() && cw * ch > MAX_COMPOSITE_PIXELS {
         eprintln!(
             "warning: comparison skipped: {} columns at --scale {s} would be {cw}×{ch} pixels, \
              more than {MAX_COMPOSITE_PIXELS}; use a smaller --scale",
             columns.len()
         );
-    } else if !composite.is_empty() && formats.contains(&Format::Png) {
-        let bytes = comparison_png(&composite, &columns, s, args.aspect).map_err(export_err)?;
+    } else if !composite.is_empty() {
         let name = columns
             .first()
-            .map(|(c, _)| comparison_file_name(&c.scene_name, scene.n, s))
-            .unwrap_or_else(|| comparison_file_name(&stem, scene.n, s));
-        write(&args.out.join(name), &bytes, cancel)?;
+            .map_or(stem.as_str(), |(c, _)| c.scene_name.as_str());
+        for p in pictures {
+            let bytes =
+                comparison_file(&composite, &columns, s, args.aspect, p).map_err(export_err)?;
+            let file = comparison_file_name(name, scene.n, s, p);
+            write(&args.out.join(file), &bytes, cancel)?;
+        }
     }
     Ok(())
 }

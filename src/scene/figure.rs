@@ -122,6 +122,30 @@ pub fn columns_data<R: AsRef<NodeResult>>(
     columns
 }
 
+/// Every column's context and data as `samplescope render` draws them: [`context`] and
+/// [`columns_data`], with one colour range for every periodogram (the union of the columns'
+/// automatic ranges), so that a comparison's periodograms share one colour bar.
+pub fn figure_columns<R: AsRef<NodeResult>>(
+    scene: &Scene,
+    results: &[HashMap<NodeKind, R>],
+    scene_name: &str,
+) -> Result<Vec<(FigureContext, ColumnData)>, NoSuchColumn> {
+    let mut columns = Vec::with_capacity(scene.columns.len());
+    for (c, data) in columns_data(scene, results).into_iter().enumerate() {
+        columns.push((context(scene, c, scene_name)?, data));
+    }
+    let shared = columns
+        .iter()
+        .filter_map(|(_, d)| d.spectrum.as_ref().map(|s| s.auto_range))
+        .reduce(|(lo, hi), r| (lo.min(r.0), hi.max(r.1)));
+    if let Some(shared) = shared {
+        for (ctx, _) in &mut columns {
+            ctx.spectrum_range = Some(shared);
+        }
+    }
+    Ok(columns)
+}
+
 /// Unique file-name parts for the columns of a scene.
 fn column_slugs(scene: &Scene) -> Vec<String> {
     let base: Vec<String> = scene

@@ -7,7 +7,7 @@
 //! [`FigureRequests`]); the app renders requests on a background thread and reports each file
 //! written, or the error, in the top bar.
 
-use crate::export::figure;
+use crate::export::figure::{self, FileFormat};
 use crate::model::{Colormap, ColumnData, FigureContext, PanelKind};
 use crate::scene::{self, Scene};
 use eframe::egui;
@@ -33,6 +33,7 @@ pub enum Target {
 pub enum Output {
     Png { scale: u32 },
     Svg { scale: u32 },
+    Pdf { scale: u32 },
     Csv,
     Clipboard { scale: u32 },
 }
@@ -123,7 +124,7 @@ impl FigureRequests {
         .on_hover_text("Every column as one figure (Ctrl+Shift+S)");
     }
 
-    fn outputs_ui(&mut self, ui: &mut egui::Ui, target: Target, vector: bool) {
+    fn outputs_ui(&mut self, ui: &mut egui::Ui, target: Target, data: bool) {
         let mut pick = |ui: &mut egui::Ui, text: &str, output: Output| {
             if ui.button(text).clicked() {
                 self.request(Request { target, output });
@@ -133,8 +134,9 @@ impl FigureRequests {
         for scale in 1..=3 {
             pick(ui, &format!("PNG {scale}×"), Output::Png { scale });
         }
-        if vector {
-            pick(ui, "SVG", Output::Svg { scale: 1 });
+        pick(ui, "SVG", Output::Svg { scale: 1 });
+        pick(ui, "PDF", Output::Pdf { scale: 1 });
+        if data {
             pick(ui, "CSV (data)", Output::Csv);
         }
         pick(ui, "Copy to clipboard", Output::Clipboard { scale: 1 });
@@ -242,6 +244,12 @@ impl Snapshot {
             Image(u32, u32, Vec<u8>, String),
         }
         let err = |e: crate::export::ExportError| e.to_string();
+        let picture = |o: Output| match o {
+            Output::Png { scale } => Some((FileFormat::Png, scale)),
+            Output::Svg { scale } => Some((FileFormat::Svg, scale)),
+            Output::Pdf { scale } => Some((FileFormat::Pdf, scale)),
+            Output::Csv | Output::Clipboard { .. } => None,
+        };
         let made = match (req.target, req.output) {
             (Target::Panel { column, kind }, out) => {
                 let ctx = self.context(column)?;
@@ -253,47 +261,45 @@ impl Snapshot {
                         column + 1
                     ));
                 }
-                match out {
-                    Output::Png { scale } => Made::File(
-                        figure::panel_file_name(kind, &ctx, Some(scale), "png"),
-                        figure::panel_png(kind, &ctx, data, scale).map_err(err)?,
+                match (out, picture(out)) {
+                    (_, Some((format, scale))) => Made::File(
+                        figure::panel_file_name(kind, &ctx, Some(scale), format.ext()),
+                        figure::panel_file(kind, &ctx, data, scale, format).map_err(err)?,
                     ),
-                    Output::Svg { scale } => Made::File(
-                        figure::panel_file_name(kind, &ctx, Some(scale), "svg"),
-                        figure::panel_svg(kind, &ctx, data, scale)
-                            .map_err(err)?
-                            .into_bytes(),
-                    ),
-                    Output::Csv => Made::File(
+                    (Output::Clipboard { scale }, _) => {
+                        let (w, h, rgba) =
+                            figure::panel_rgba(kind, &ctx, data, scale).map_err(err)?;
+                        Made::Image(w, h, rgba, figure::panel_file_name(kind, &ctx, None, ""))
+                    }
+                    _ => Made::File(
                         figure::panel_file_name(kind, &ctx, None, "csv"),
                         figure::panel_csv(kind, &ctx, data)
                             .map_err(err)?
                             .into_bytes(),
                     ),
-                    Output::Clipboard { scale } => {
-                        let (w, h, rgba) =
-                            figure::panel_rgba(kind, &ctx, data, scale).map_err(err)?;
-                        Made::Image(w, h, rgba, figure::panel_file_name(kind, &ctx, None, ""))
-                    }
                 }
             }
             (Target::Column { column }, out) => {
                 let kinds = scene::panels::composite_in(&self.scene, column);
                 let ctx = self.context(column)?;
                 let data = self.data(column)?;
-                match out {
-                    Output::Clipboard { scale } => {
+                match (out, picture(out)) {
+                    (_, Some((format, scale))) => Made::File(
+                        figure::column_file_name(&ctx, scale, format),
+                        figure::column_file(&kinds, &ctx, data, scale, SLIDE, format)
+                            .map_err(err)?,
+                    ),
+                    (Output::Clipboard { scale }, _) => {
                         let (w, h, rgba) =
                             figure::column_rgba(&kinds, &ctx, data, scale, SLIDE).map_err(err)?;
-                        Made::Image(w, h, rgba, figure::column_file_name(&ctx, scale))
+                        Made::Image(
+                            w,
+                            h,
+                            rgba,
+                            figure::column_file_name(&ctx, scale, FileFormat::Png),
+                        )
                     }
-                    Output::Png { scale } => Made::File(
-                        figure::column_file_name(&ctx, scale),
-                        figure::column_png(&kinds, &ctx, data, scale, SLIDE).map_err(err)?,
-                    ),
-                    Output::Svg { .. } | Output::Csv => {
-                        return Err("SVG and CSV are written per panel".into())
-                    }
+                    _ => return Err("CSV is written per panel".into()),
                 }
             }
             (Target::Comparison, out) => {
@@ -302,28 +308,35 @@ impl Snapshot {
                 for c in 0..self.scene.columns.len() {
                     cols.push((self.context(c)?, self.data(c)?.clone()));
                 }
-                let name = |s| figure::comparison_file_name(&self.scene_name, self.scene.n, s);
-                match out {
-                    Output::Clipboard { scale } => {
+                let name =
+                    |s, f| figure::comparison_file_name(&self.scene_name, self.scene.n, s, f);
+                match (out, picture(out)) {
+                    (_, Some((format, scale))) => Made::File(
+                        name(scale, format),
+                        figure::comparison_file(&kinds, &cols, scale, SLIDE, format)
+                            .map_err(err)?,
+                    ),
+                    (Output::Clipboard { scale }, _) => {
                         let (w, h, rgba) =
                             figure::comparison_rgba(&kinds, &cols, scale, SLIDE).map_err(err)?;
-                        Made::Image(w, h, rgba, name(scale))
+                        Made::Image(w, h, rgba, name(scale, FileFormat::Png))
                     }
-                    Output::Png { scale } => Made::File(
-                        name(scale),
-                        figure::comparison_png(&kinds, &cols, scale, SLIDE).map_err(err)?,
-                    ),
-                    Output::Svg { .. } | Output::Csv => {
-                        return Err("SVG and CSV are written per panel".into())
-                    }
+                    _ => return Err("CSV is written per panel".into()),
                 }
             }
         };
         match made {
             Made::File(name, bytes) => {
                 std::fs::create_dir_all(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
-                let path = dir.join(name);
-                std::fs::write(&path, bytes).map_err(|e| format!("{}: {e}", path.display()))?;
+                let path = dir.join(&name);
+                // Written beside it and renamed: a failed write leaves no partial figure.
+                let partial = dir.join(format!(".{name}.partial"));
+                let fail = |e: std::io::Error| {
+                    let _ = std::fs::remove_file(&partial);
+                    format!("{}: {e}", path.display())
+                };
+                std::fs::write(&partial, bytes).map_err(fail)?;
+                std::fs::rename(&partial, &path).map_err(fail)?;
                 Ok(Done::Written(path))
             }
             Made::Image(w, h, rgba, what) => Ok(Done::Clipboard(

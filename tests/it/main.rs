@@ -43,6 +43,7 @@ mod scene_graph;
 mod scenes_all;
 mod signal_shapes;
 mod signal_zone_plate;
+mod slide_figures;
 mod spectrum_average;
 mod spectrum_exact;
 mod spectrum_nufft;

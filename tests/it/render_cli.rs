@@ -127,8 +127,9 @@ fn render_twice_gives_byte_identical_files() {
         ],
     );
     // 2 columns × 8 figures (pattern, spectrum, raps, reconstruction, reference, error,
-    // kernel, response) × (png, svg, csv) + 2 column composites + 1 comparison.
-    assert_eq!(names.len(), 2 * 8 * 3 + 2 + 1, "{names:#?}");
+    // kernel, response) × (png, svg, csv) + (2 column composites + 1 comparison) × (png, svg).
+    assert_eq!(names.len(), 2 * 8 * 3 + (2 + 1) * 2, "{names:#?}");
+    assert!(names.contains(&"small_n256_comparison@1x.svg".to_string()));
 }
 
 #[test]
@@ -166,6 +167,29 @@ fn scale_two_doubles_the_figures_and_format_selects_files() {
         .read_info()
         .unwrap();
     assert_eq!((reader.info().width, reader.info().height), (960, 1020));
+
+    // PDF: every figure, both column composites and the comparison, one page each.
+    let pdf_out = dir.join("pdf");
+    let o = render(&[
+        scene.to_str().unwrap(),
+        "--out",
+        pdf_out.to_str().unwrap(),
+        "--format",
+        "pdf",
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let names = files(&pdf_out);
+    assert_eq!(names.len(), 2 * 8 + 2 + 1, "{names:#?}");
+    for n in &names {
+        assert!(n.ends_with(".pdf"), "{n}");
+        let bytes = std::fs::read(pdf_out.join(n)).unwrap();
+        assert!(
+            bytes.starts_with(b"%PDF-1.") && bytes.trim_ascii_end().ends_with(b"%%EOF"),
+            "{n}"
+        );
+        let doc = lopdf::Document::load_mem(&bytes).unwrap();
+        assert_eq!(doc.get_pages().len(), 1, "{n}");
+    }
 }
 
 #[test]
@@ -258,7 +282,7 @@ fn scale_out_of_range_exits_2_naming_scale_and_range() {
     assert_eq!(o.status.code(), Some(2));
     let e = stderr(&o);
     assert!(
-        e.contains("'jpeg'") && e.contains("--format") && e.contains("png, svg, csv"),
+        e.contains("'jpeg'") && e.contains("--format") && e.contains("png, svg, pdf, csv"),
         "{e}"
     );
 }
@@ -367,8 +391,9 @@ fn theorem_scene_writes_the_theorem_figures_byte_identically() {
             "theory_n64_comparison@1x.png",
         ],
     );
-    // 4 theorem figures × (png, svg, csv) + the column composite + the comparison.
-    assert_eq!(names.len(), 4 * 3 + 2, "{names:#?}");
+    // 4 theorem figures × (png, svg, csv) + (the column composite + the comparison) × (png,
+    // svg).
+    assert_eq!(names.len(), 4 * 3 + 2 * 2, "{names:#?}");
     // The spectrum figure: its base size (wider by the legend) and the aliasing numbers.
     let png = std::fs::read(a.join("theory_theorem-spectrum@1x.png")).unwrap();
     let reader = png::Decoder::new(std::io::Cursor::new(png))

@@ -31,20 +31,18 @@
 //! **Titles never cut.** The scene's title wraps onto a second line when it is wider than the
 //! figure (less a margin each side), and the second line ends in "…" if the rest does not fit;
 //! a column's caption is one line, shortened with "…" to its block's width. Widths are
-//! measured with the figures' own text code (the bitmap backend's `estimate_text_size`).
+//! measured with the figures' own text layout (the one every picture of a figure draws).
 
-use super::canvas::{crisp_bitmap, ensure_font};
-use super::draw::render_bitmap;
+use super::canvas::ensure_font;
+use super::draw::render_drawing;
+use super::drawing::{font, Drawing, Op, Rgba};
 use super::spectrum::{SharedBar, SpectrumWithoutBar};
 use super::{
-    check_scale, context_metadata, encode_png, figure, rgb_to_rgba, ColumnData, Figure,
-    FigureContext, PanelKind, Rgb, MAX_COMPOSITE_PIXELS,
+    check_scale, context_metadata, encode, figure, rgb_to_rgba, ColumnData, Figure, FigureContext,
+    FileFormat, PanelKind, MAX_COMPOSITE_PIXELS,
 };
 use crate::export::ExportError;
 use crate::model::Colormap;
-use plotters::prelude::*;
-use plotters::style::text_anchor::{HPos, Pos, VPos};
-use plotters_backend::DrawingBackend;
 use std::fmt;
 use std::str::FromStr;
 
@@ -323,19 +321,13 @@ pub fn fill(w: u64, h: u64, aspect: Aspect) -> f64 {
     (a / f).min(f / a)
 }
 
-/// Width in pixels of `text` in the figures' font at `px` pixels (what the bitmap figures
-/// measure text with).
+/// Width in pixels of `text` in the figures' font at `px` pixels (what the figures measure
+/// text with).
 pub fn text_width(text: &str, px: f64) -> u32 {
-    let mut buf = [255u8; 3];
-    let style = ("sans-serif", px).into_font().color(&BLACK);
-    let width = match crisp_bitmap(&mut buf, (1, 1)) {
-        Ok(b) => b
-            .estimate_text_size(text, &style)
-            .map(|s| s.0)
-            .unwrap_or(u32::MAX),
+    match font() {
+        Ok(f) => f.layout(text, px as f32).width.ceil() as u32,
         Err(_) => u32::MAX,
-    };
-    width
+    }
 }
 
 /// `text` shortened to fit `room` pixels at `px`, ending in "…" when shortened ("" when not
@@ -513,53 +505,39 @@ fn check_size((width, height): (u64, u64)) -> Result<(u32, u32), ExportError> {
 
 /// Draws the line `text` left-aligned at (x0 + padding, centre of the band y0..y0 + h).
 fn text_line(
-    buf: &mut [u8],
-    size: (u32, u32),
+    d: &mut Drawing,
     text: &str,
     (x0, y0): (u32, u32),
     h: u32,
     px: f64,
 ) -> Result<(), ExportError> {
-    let err = |e: &dyn std::fmt::Display| ExportError::Draw {
-        figure: "composite",
-        message: e.to_string(),
-    };
     if text.is_empty() {
         return Ok(());
     }
-    let root = crisp_bitmap(buf, size)?.into_drawing_area();
-    let style = ("sans-serif", px)
-        .into_font()
-        .color(&BLACK)
-        .pos(Pos::new(HPos::Left, VPos::Center));
-    root.draw_text(
-        text,
-        &style,
-        ((x0 + padding(px)) as i32, (y0 + h / 2) as i32),
-    )
-    .map_err(|e| err(&e))?;
-    root.present().map_err(|e| err(&e))
-}
-
-/// Copies `img` into the RGB buffer `width` wide at (x0, y0).
-fn blit(buf: &mut [u8], width: u32, img: &Rgb, x0: u32, y0: u32) {
-    let row = img.width as usize * 3;
-    for y in 0..img.height as usize {
-        let dst = ((y0 as usize + y) * width as usize + x0 as usize) * 3;
-        buf[dst..dst + row].copy_from_slice(&img.data[y * row..(y + 1) * row]);
-    }
+    let line = font()?.layout(text, px as f32);
+    d.ops.push(Op::Text {
+        text: text.to_string(),
+        glyphs: line.glyphs,
+        origin: [
+            (x0 + padding(px)) as f32,
+            (y0 + h / 2) as f32 - line.height / 2.0,
+        ],
+        rot: [1.0, 0.0, 0.0, 1.0],
+        scale: line.scale,
+        color: Rgba::BLACK,
+    });
+    Ok(())
 }
 
 impl Plan {
-    /// Draws block `i` (column `ctx`, `data`) into `buf`.
+    /// Draws block `i` (column `ctx`, `data`) onto `d`.
     fn draw_block(
         &self,
-        buf: &mut [u8],
+        d: &mut Drawing,
         i: usize,
         ctx: &FigureContext,
         data: &ColumnData,
     ) -> Result<(), ExportError> {
-        let size = (self.size.0 as u32, self.size.1 as u32);
         let l = self.layout;
         let (bw, _) = self.block;
         let x0 = ((i % l.block_cols) as u64 * bw) as u32;
@@ -567,29 +545,23 @@ impl Plan {
         let cap_h = CAPTION_H * self.scale;
         let px = CAPTION_PX * self.scale as f64;
         let caption = format!("{} · N = {} · seed {}", ctx.column_title, ctx.n, ctx.seed);
-        text_line(
-            buf,
-            size,
-            &shorten(&caption, room(bw, px), px),
-            (x0, y0),
-            cap_h,
-            px,
-        )?;
+        text_line(d, &shorten(&caption, room(bw, px), px), (x0, y0), cap_h, px)?;
         let mut y = y0 + cap_h;
         let rows = panel_rows(&self.panels, l.panel_cols);
         for (r, kinds) in self.kinds.chunks(l.panel_cols).enumerate() {
             let (rw, rh) = rows[r];
             let mut x = x0 + ((bw - rw) / 2) as u32;
             for &k in kinds {
-                let img = match (k, self.bar) {
+                check_scale(self.scale)?;
+                let panel = match (k, self.bar) {
                     (PanelKind::Spectrum, Some(_)) => {
-                        check_scale(self.scale)?;
-                        render_bitmap(&SpectrumWithoutBar, ctx, data, self.scale)?
+                        render_drawing(&SpectrumWithoutBar, ctx, data, self.scale)?
                     }
-                    _ => super::panel_rgb(k, ctx, data, self.scale)?,
+                    _ => render_drawing(figure(k), ctx, data, self.scale)?,
                 };
-                blit(buf, size.0, &img, x, y + (rh as u32 - img.height) / 2);
-                x += img.width;
+                let (pw, ph) = (panel.width, panel.height);
+                d.place(panel, x as f32, (y + (rh as u32 - ph) / 2) as f32);
+                x += pw;
             }
             y += rh as u32;
         }
@@ -598,7 +570,7 @@ impl Plan {
 
     /// Draws the shared colour bar right of the first row of blocks, level with the
     /// periodograms' images.
-    fn draw_bar(&self, buf: &mut [u8], ctx: &FigureContext) -> Result<(), ExportError> {
+    fn draw_bar(&self, d: &mut Drawing, ctx: &FigureContext) -> Result<(), ExportError> {
         let Some(((lo, hi), colormap)) = self.bar else {
             return Ok(());
         };
@@ -610,7 +582,7 @@ impl Plan {
         let r = p / l.panel_cols;
         let row_y: u64 = rows[..r].iter().map(|r| r.1).sum();
         let (lo, hi) = super::draw::ordered_range((lo, hi));
-        let img = render_bitmap(
+        let img = render_drawing(
             &SharedBar { lo, hi, colormap },
             ctx,
             &ColumnData::default(),
@@ -620,13 +592,18 @@ impl Plan {
         let y = (self.head + (CAPTION_H * self.scale) as u64 + row_y) as u32
             + (rows[r].1 as u32 - img.height) / 2;
         debug_assert_eq!(img.width as u64, self.bar_w);
-        blit(buf, self.size.0 as u32, &img, x, y);
+        d.place(img, x as f32, y as f32);
         Ok(())
     }
 
-    fn draw(&self, columns: &[(FigureContext, ColumnData)]) -> Result<Rgb, ExportError> {
+    fn draw(&self, columns: &[(FigureContext, ColumnData)]) -> Result<Drawing, ExportError> {
         let (w, h) = check_size(self.size)?;
-        let mut buf = vec![255u8; w as usize * h as usize * 3];
+        let mut d = Drawing::new(w, h);
+        let (fw, fh) = (w as f32, h as f32);
+        d.ops.push(Op::Fill {
+            points: vec![[0.0, 0.0], [fw, 0.0], [fw, fh], [0.0, fh]],
+            color: Rgba::WHITE,
+        });
         let px = HEADING_PX * self.scale as f64;
         // One line is centred in the title band; two lines share it, a line apart.
         let (line_h, top) = if self.heading.len() > 1 {
@@ -636,19 +613,15 @@ impl Plan {
         };
         for (i, line) in self.heading.iter().enumerate() {
             let y0 = (top + i as u32 * line_h) * self.scale;
-            text_line(&mut buf, (w, h), line, (0, y0), line_h * self.scale, px)?;
+            text_line(&mut d, line, (0, y0), line_h * self.scale, px)?;
         }
         for (i, (ctx, data)) in columns.iter().enumerate() {
-            self.draw_block(&mut buf, i, ctx, data)?;
+            self.draw_block(&mut d, i, ctx, data)?;
         }
         if let Some((ctx, _)) = columns.first() {
-            self.draw_bar(&mut buf, ctx)?;
+            self.draw_bar(&mut d, ctx)?;
         }
-        Ok(Rgb {
-            width: w,
-            height: h,
-            data: buf,
-        })
+        Ok(d)
     }
 }
 
@@ -722,13 +695,13 @@ pub fn comparison_size(
     comparison_plan(kinds, columns, scale, aspect).size
 }
 
-fn column_rgb(
+fn column_drawing(
     kinds: &[PanelKind],
     ctx: &FigureContext,
     data: &ColumnData,
     scale: u32,
     aspect: Aspect,
-) -> Result<(Rgb, Layout), ExportError> {
+) -> Result<(Drawing, Layout), ExportError> {
     check_scale(scale)?;
     ensure_font()?;
     if kinds.is_empty() {
@@ -763,7 +736,21 @@ fn column_meta(
 }
 
 /// A column's figures `kinds` under a caption (label, N, seed), in the grid that best fills
-/// a frame of `aspect` (the module docs give the rule), as PNG with the column's metadata.
+/// a frame of `aspect` (the module docs give the rule), as a file in `format` with the
+/// column's metadata.
+pub fn column_file(
+    kinds: &[PanelKind],
+    ctx: &FigureContext,
+    data: &ColumnData,
+    scale: u32,
+    aspect: Aspect,
+    format: FileFormat,
+) -> Result<Vec<u8>, ExportError> {
+    let (d, layout) = column_drawing(kinds, ctx, data, scale, aspect)?;
+    encode(&d, format, &column_meta(kinds, ctx, scale, aspect, layout))
+}
+
+/// [`column_file`] as PNG.
 pub fn column_png(
     kinds: &[PanelKind],
     ctx: &FigureContext,
@@ -771,11 +758,10 @@ pub fn column_png(
     scale: u32,
     aspect: Aspect,
 ) -> Result<Vec<u8>, ExportError> {
-    let (img, layout) = column_rgb(kinds, ctx, data, scale, aspect)?;
-    encode_png(&img, &column_meta(kinds, ctx, scale, aspect, layout))
+    column_file(kinds, ctx, data, scale, aspect, FileFormat::Png)
 }
 
-/// [`column_png`] as (width, height, RGBA8), for the clipboard.
+/// [`column_file`]'s picture as (width, height, RGBA8), for the clipboard.
 pub fn column_rgba(
     kinds: &[PanelKind],
     ctx: &FigureContext,
@@ -783,16 +769,18 @@ pub fn column_rgba(
     scale: u32,
     aspect: Aspect,
 ) -> Result<(u32, u32, Vec<u8>), ExportError> {
-    let (img, _) = column_rgb(kinds, ctx, data, scale, aspect)?;
+    let img = column_drawing(kinds, ctx, data, scale, aspect)?
+        .0
+        .raster()?;
     Ok((img.width, img.height, rgb_to_rgba(&img.data)))
 }
 
-fn comparison_rgb(
+fn comparison_drawing(
     kinds: &[PanelKind],
     columns: &[(FigureContext, ColumnData)],
     scale: u32,
     aspect: Aspect,
-) -> Result<(Rgb, Layout), ExportError> {
+) -> Result<(Drawing, Layout), ExportError> {
     check_scale(scale)?;
     ensure_font()?;
     if kinds.is_empty() {
@@ -848,30 +836,45 @@ fn comparison_meta(
 
 /// Every column of a comparison (its caption over its figures `kinds`), side by side in the
 /// grid that best fills a frame of `aspect` (the module docs give the rule), under the
-/// scene's title, as PNG with the scene's metadata and every column's pattern, parameters and
-/// seed. Locked periodogram scales share one colour bar. Refused with
-/// [`ExportError::TooLarge`] beyond [`MAX_COMPOSITE_PIXELS`].
+/// scene's title, as a file in `format` with the scene's metadata and every column's
+/// pattern, parameters and seed. Locked periodogram scales share one colour bar. Refused with
+/// [`ExportError::TooLarge`] beyond [`MAX_COMPOSITE_PIXELS`] (in every format: a vector
+/// figure that large would not be readable either).
+pub fn comparison_file(
+    kinds: &[PanelKind],
+    columns: &[(FigureContext, ColumnData)],
+    scale: u32,
+    aspect: Aspect,
+    format: FileFormat,
+) -> Result<Vec<u8>, ExportError> {
+    let (d, layout) = comparison_drawing(kinds, columns, scale, aspect)?;
+    encode(
+        &d,
+        format,
+        &comparison_meta(kinds, columns, scale, aspect, layout),
+    )
+}
+
+/// [`comparison_file`] as PNG.
 pub fn comparison_png(
     kinds: &[PanelKind],
     columns: &[(FigureContext, ColumnData)],
     scale: u32,
     aspect: Aspect,
 ) -> Result<Vec<u8>, ExportError> {
-    let (img, layout) = comparison_rgb(kinds, columns, scale, aspect)?;
-    encode_png(
-        &img,
-        &comparison_meta(kinds, columns, scale, aspect, layout),
-    )
+    comparison_file(kinds, columns, scale, aspect, FileFormat::Png)
 }
 
-/// [`comparison_png`] as (width, height, RGBA8), for the clipboard.
+/// [`comparison_file`]'s picture as (width, height, RGBA8), for the clipboard.
 pub fn comparison_rgba(
     kinds: &[PanelKind],
     columns: &[(FigureContext, ColumnData)],
     scale: u32,
     aspect: Aspect,
 ) -> Result<(u32, u32, Vec<u8>), ExportError> {
-    let (img, _) = comparison_rgb(kinds, columns, scale, aspect)?;
+    let img = comparison_drawing(kinds, columns, scale, aspect)?
+        .0
+        .raster()?;
     Ok((img.width, img.height, rgb_to_rgba(&img.data)))
 }
 

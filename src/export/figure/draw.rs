@@ -1,5 +1,5 @@
 //! What every figure is drawn with: the layout, the frame around a figure's own drawing (white
-//! page, title band; bitmap or SVG), and the shared helpers (charts, axes, text, legends,
+//! page, title band, into the figure's vector drawing), and the shared helpers (charts, axes, text, legends,
 //! images with colour bars, stems, Nyquist lines, ticks and ranges).
 //!
 //! Layout at scale 1 (every length is multiplied by the scale): a title band of
@@ -9,13 +9,15 @@
 //! that of the line plots 560 × 400. The theorem figures keep a [`CAPTION_LINE`] band under the
 //! chart for the aliasing numbers.
 
-use super::canvas::{crisp_bitmap, ensure_font, Area, Canvas, Chart, FONT};
+use super::canvas::{ensure_font, Area, Canvas, Chart, PlacedImage, FONT};
+use super::drawing::Drawing;
 use super::{Figure, Rgb};
 use crate::export::ExportError;
 use crate::model::{palette, Colormap, ColumnData, FigureContext, ImageData, PanelKind};
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 use std::ops::Range;
+use std::sync::Arc;
 
 /// Height of the title band.
 const TITLE_H: u32 = 40;
@@ -65,21 +67,6 @@ pub(super) fn replica_colour(k: i64) -> RGBColor {
     }
 }
 
-/// An image placed in an SVG figure: `image` shown over the pixel rectangle (x, y, w, h).
-pub(crate) struct SvgImage {
-    pub x: i32,
-    pub y: i32,
-    pub width: u32,
-    pub height: u32,
-    pub image: Rgb,
-}
-
-/// Where images go: blitted into the bitmap, or collected for embedding in the SVG.
-pub enum Sink {
-    Bitmap,
-    Svg(Vec<SvgImage>),
-}
-
 /// Scaled lengths and styles.
 #[derive(Clone, Copy)]
 pub struct Look {
@@ -102,13 +89,12 @@ impl Look {
 }
 
 /// What a figure draws with: the whole page (images are placed in its pixels), the context
-/// and data, the scale, and where images go.
+/// and data, and the scale.
 pub struct Frame<'a, 'b> {
     pub(super) root: &'a Area<'b>,
     pub(super) ctx: &'a FigureContext,
     pub(super) data: &'a ColumnData,
     pub(super) look: Look,
-    pub(super) sink: &'a mut Sink,
 }
 
 pub(super) fn draw_err(kind: PanelKind, e: impl std::fmt::Display) -> ExportError {
@@ -139,63 +125,25 @@ pub(super) fn empty(kind: PanelKind, what: &str) -> ExportError {
     }
 }
 
-/// Draws `figure` into an RGB bitmap of base size × `scale`.
-pub(super) fn render_bitmap(
+/// Lays `figure` out at base size × `scale` into its vector drawing (which the PNG, SVG and
+/// PDF writers read).
+pub(super) fn render_drawing(
     figure: &dyn Figure,
     ctx: &FigureContext,
     data: &ColumnData,
     scale: u32,
-) -> Result<Rgb, ExportError> {
+) -> Result<Drawing, ExportError> {
     ensure_font()?;
     figure.check(data)?;
     let kind = figure.kind();
     let (bw, bh) = figure.base_size();
-    let (w, h) = (bw * scale, bh * scale);
-    let mut buf = vec![255u8; (w as usize) * (h as usize) * 3];
+    let mut drawing = Drawing::new(bw * scale, bh * scale);
     {
-        let root = Canvas::Bitmap(Box::new(crisp_bitmap(&mut buf, (w, h))?)).into_drawing_area();
-        page(
-            &root,
-            figure,
-            ctx,
-            data,
-            Look { s: scale },
-            &mut Sink::Bitmap,
-        )?;
+        let root = Canvas::new(&mut drawing).into_drawing_area();
+        page(&root, figure, ctx, data, Look { s: scale })?;
         root.present().map_err(|e| draw_err(kind, e))?;
     }
-    Ok(Rgb {
-        width: w,
-        height: h,
-        data: buf,
-    })
-}
-
-/// Draws `figure` as SVG text of base size × `scale`; the images to embed come back
-/// separately.
-pub(super) fn render_svg(
-    figure: &dyn Figure,
-    ctx: &FigureContext,
-    data: &ColumnData,
-    scale: u32,
-) -> Result<(String, Vec<SvgImage>), ExportError> {
-    ensure_font()?;
-    figure.check(data)?;
-    let kind = figure.kind();
-    let (bw, bh) = figure.base_size();
-    let mut text = String::new();
-    let mut sink = Sink::Svg(Vec::new());
-    {
-        let root = Canvas::Svg(SVGBackend::with_string(&mut text, (bw * scale, bh * scale)))
-            .into_drawing_area();
-        page(&root, figure, ctx, data, Look { s: scale }, &mut sink)?;
-        root.present().map_err(|e| draw_err(kind, e))?;
-    }
-    let images = match sink {
-        Sink::Svg(v) => v,
-        Sink::Bitmap => Vec::new(),
-    };
-    Ok((text, images))
+    Ok(drawing)
 }
 
 /// The white page, the title in its band, and the figure's own drawing under it.
@@ -205,7 +153,6 @@ fn page(
     ctx: &FigureContext,
     data: &ColumnData,
     look: Look,
-    sink: &mut Sink,
 ) -> Result<(), ExportError> {
     let kind = figure.kind();
     root.fill(&WHITE).map_err(|e| draw_err(kind, e))?;
@@ -216,7 +163,6 @@ fn page(
         ctx,
         data,
         look,
-        sink,
     };
     figure.draw(&mut frame, &body)
 }
@@ -495,25 +441,9 @@ pub(super) fn ordered_range((lo, hi): (f32, f32)) -> (f64, f64) {
     }
 }
 
-/// Nearest-neighbour resampling of `img` to `w`×`h` (pixel centres map to pixel centres).
-fn resample(img: &Rgb, w: u32, h: u32) -> Vec<u8> {
-    let (sw, sh) = (img.width as u64, img.height as u64);
-    let cols: Vec<usize> = (0..w as u64)
-        .map(|x| (((2 * x + 1) * sw) / (2 * w as u64)) as usize)
-        .collect();
-    let mut out = Vec::with_capacity(w as usize * h as usize * 3);
-    for y in 0..h as u64 {
-        let sy = (((2 * y + 1) * sh) / (2 * h as u64)) as usize;
-        let row = &img.data[sy * sw as usize * 3..(sy + 1) * sw as usize * 3];
-        for &sx in &cols {
-            out.extend_from_slice(&row[sx * 3..sx * 3 + 3]);
-        }
-    }
-    out
-}
-
 impl Frame<'_, '_> {
-    /// Puts `img` over the pixel rectangle `range` (absolute pixels of the page).
+    /// Puts `img` over the pixel rectangle `range` (absolute pixels of the page), at the
+    /// image's own resolution.
     fn paint(
         &mut self,
         range: (Range<i32>, Range<i32>),
@@ -523,24 +453,12 @@ impl Frame<'_, '_> {
         let (xr, yr) = range;
         let w = (xr.end - xr.start).max(1) as u32;
         let h = (yr.end - yr.start).max(1) as u32;
-        match self.sink {
-            Sink::Bitmap => {
-                let buf = resample(&img, w, h);
-                let elem = BitMapElement::with_owned_buffer((xr.start, yr.start), (w, h), buf)
-                    .ok_or_else(|| draw_err(kind, "image buffer size"))?;
-                self.root.draw(&elem).map_err(|e| draw_err(kind, e))
-            }
-            Sink::Svg(images) => {
-                images.push(SvgImage {
-                    x: xr.start,
-                    y: yr.start,
-                    width: w,
-                    height: h,
-                    image: img,
-                });
-                Ok(())
-            }
-        }
+        let placed = PlacedImage {
+            at: (xr.start, yr.start),
+            size: (w, h),
+            image: Arc::new(img),
+        };
+        self.root.draw(&placed).map_err(|e| draw_err(kind, e))
     }
 
     /// An image through its colour map on axes, with a colour bar right of it when
@@ -621,19 +539,6 @@ impl Frame<'_, '_> {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn resample_maps_pixel_centres() {
-        let img = Rgb {
-            width: 2,
-            height: 1,
-            data: vec![0, 0, 0, 255, 255, 255],
-        };
-        let out = resample(&img, 4, 2);
-        assert_eq!(out.len(), 4 * 2 * 3);
-        let firsts: Vec<u8> = out.chunks(3).map(|p| p[0]).collect();
-        assert_eq!(firsts, vec![0, 0, 255, 255, 0, 0, 255, 255]);
-    }
 
     #[test]
     fn padded_range_covers_data_and_guides() {

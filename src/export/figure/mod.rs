@@ -1,7 +1,9 @@
-//! Figures for slides: every panel of a column as a PNG, SVG or CSV, drawn on the CPU.
+//! Figures for slides: every panel of a column as a PNG, SVG, PDF or CSV, drawn on the CPU.
 //!
-//! The figures are drawn with the `plotters` crate (axes, ticks, labels, colour bars) on a
-//! bitmap or into SVG text; nothing here computes: every function takes the plain data the
+//! Each figure is laid out once, with the `plotters` crate (axes, ticks, labels, colour bars),
+//! into a vector drawing (`canvas.rs` records it, `drawing.rs` holds it); the PNG is that
+//! drawing rasterised antialiased by tiny-skia, the SVG and the PDF (`pdf.rs`) are written from
+//! the same shapes, so the three are one picture. Nothing here computes: every function takes the plain data the
 //! compute graph already produced ([`ColumnData`], filled from a column's node results by
 //! `scene::figure::column_data`) and a [`FigureContext`] naming the scene, pattern, N, seed,
 //! signal and filter for titles, metadata and file names (`scene::figure::context`). This
@@ -12,19 +14,23 @@
 //! - **One figure per file.** Each [`PanelKind`] has one [`Figure`] (`pattern.rs`,
 //!   `spectrum.rs`, … `theorem_pair.rs`): its base size, title, data check, drawing, CSV and
 //!   metadata. [`figure`] is the one registration list. The frame around every figure (white
-//!   page, title band, bitmap or SVG) and the shared helpers (axes, text, legends, images with
+//!   page, title band) and the shared helpers (axes, text, legends, images with
 //!   colour bars) are in `draw.rs`; the shared CSV writers in `csv.rs`.
 //! - **Sizes.** Each figure has a base size ([`Figure::base_size`]); a figure at `scale` s is
 //!   exactly s × base (text, lines, margins and markers scale too). `scale` must lie in
 //!   [`SCALES`] (1..=4). Every figure is 510 pixels high so that figures sit side by side in
 //!   a composite; image and pattern plots are square.
-//! - **Text.** One font, Ubuntu Light (the font egui ships), registered with plotters from
-//!   bytes: the same glyphs on every machine, no system font lookup.
-//! - **Metadata.** PNGs carry tEXt chunks (iTXt for values that are not Latin-1) and SVGs a
-//!   `<title>` and `<desc>`: the figure's title, scene, pattern and its parameters, N, seed,
-//!   signal, filter, scale and `Software: samplescope <version>`. Never timings.
-//! - **Determinism.** The same inputs give byte-identical PNG and SVG: no clocks, no hash
-//!   ordering, nothing random.
+//! - **Antialiasing.** Curves, stems, markers and text are antialiased; one-pixel axis lines
+//!   and ticks lie on pixel centres and stay crisp (see `canvas.rs`).
+//! - **Text.** One font, Ubuntu Light (the font egui ships), from bytes: the same glyphs on
+//!   every machine, no system font lookup. The PNG fills the glyph outlines, the SVG carries
+//!   the same outlines (no viewer needs the font), the PDF embeds the font (searchable text).
+//! - **Metadata.** PNGs carry tEXt chunks (iTXt for values that are not Latin-1), SVGs a
+//!   `<title>` and `<desc>`, PDFs their document information (Title, Subject): the figure's
+//!   title, scene, pattern and its parameters, N, seed, signal, filter, scale and
+//!   `Software: samplescope <version>`. Never timings.
+//! - **Determinism.** The same inputs give byte-identical PNG, SVG and PDF: no clocks, no
+//!   hash ordering, nothing random.
 //! - **The 1D sampling theorem.** The `theorem-*` kinds draw the column-independent
 //!   [`TheoremView`](crate::model::TheoremView) (computed for column 0 only, when the scene
 //!   shows the theorem panel): the signal with its samples and reconstruction, the spectrum
@@ -33,9 +39,10 @@
 //!   post-aliasing terms, and their metadata holds the 1D signal, rate, filter and every error
 //!   term instead of the 2D pattern, N and seed (which do not apply to them; nor do their file
 //!   names carry them).
-//! - **Images.** Periodograms and zone-plate images are drawn nearest-neighbour into the
-//!   plotting area of the bitmap; in SVG they are embedded as PNG (`<image>` with a data URI,
-//!   pixelated rendering), at the data's own resolution.
+//! - **Images.** Periodograms and zone-plate images are kept at the data's own resolution and
+//!   shown nearest-neighbour over the plotting area: resampled into the PNG's pixels, embedded
+//!   in the SVG as PNG (`<image>` with a data URI, pixelated rendering) and in the PDF as an
+//!   uninterpolated image.
 //!
 //! **Adding a figure** for data a column already has: a [`PanelKind`] variant (with its name,
 //! in `model/panel.rs`), a file here implementing [`Figure`], its line in [`figure`] (and the
@@ -47,18 +54,18 @@ mod composite;
 mod convergence;
 mod csv;
 mod draw;
+mod drawing;
 mod error;
 mod integration;
 mod kernel;
 mod pattern;
+mod pdf;
 mod raps;
 mod reconstruction;
 mod reference;
 mod response;
 mod spectrum;
 mod sphere;
-mod svg;
-mod text;
 mod theorem;
 mod theorem_pair;
 mod theorem_reconstructed;
@@ -70,12 +77,13 @@ use crate::model::{sanitize, ColumnData, FigureContext, PanelKind};
 
 pub use canvas::{Area, Canvas, CanvasError};
 pub use composite::{
-    column_layout, column_png, column_rgba, column_size, comparison_layout, comparison_png,
-    comparison_rgba, comparison_size, comparison_title_lines, fill, text_width, wrap, Aspect,
-    AspectError, Layout,
+    column_file, column_layout, column_png, column_rgba, column_size, comparison_file,
+    comparison_layout, comparison_png, comparison_rgba, comparison_size, comparison_title_lines,
+    fill, text_width, wrap, Aspect, AspectError, Layout,
 };
 pub use draw::Frame;
 pub use integration::legend_label as integration_legend;
+pub use pdf::PT_PER_PX;
 pub use theorem::theorem_caption;
 
 /// The allowed figure scales (a figure at scale s is s × its base size).
@@ -205,15 +213,63 @@ fn context_metadata(ctx: &FigureContext) -> Vec<(String, String)> {
     ]
 }
 
-/// Draws `kind` into an RGB bitmap of exactly its base size × `scale`.
-pub(crate) fn panel_rgb(
+/// A file format of the figures.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum FileFormat {
+    /// 8-bit RGB PNG with text chunks.
+    Png,
+    /// SVG 1.1 text, glyphs as outlines, images as embedded PNG.
+    Svg,
+    /// PDF 1.7, one page, the font embedded.
+    Pdf,
+}
+
+impl FileFormat {
+    /// The file name extension (also the format's name on the command line).
+    pub fn ext(self) -> &'static str {
+        match self {
+            FileFormat::Png => "png",
+            FileFormat::Svg => "svg",
+            FileFormat::Pdf => "pdf",
+        }
+    }
+}
+
+/// Lays out `kind` at its base size × `scale` into its vector drawing.
+fn panel_drawing(
     kind: PanelKind,
     ctx: &FigureContext,
     data: &ColumnData,
     scale: u32,
-) -> Result<Rgb, ExportError> {
+) -> Result<drawing::Drawing, ExportError> {
     check_scale(scale)?;
-    draw::render_bitmap(figure(kind), ctx, data, scale)
+    draw::render_drawing(figure(kind), ctx, data, scale)
+}
+
+/// A drawing in `format`, with `meta` as its metadata.
+fn encode(
+    d: &drawing::Drawing,
+    format: FileFormat,
+    meta: &[(String, String)],
+) -> Result<Vec<u8>, ExportError> {
+    match format {
+        FileFormat::Png => encode_png(&d.raster()?, meta),
+        FileFormat::Svg => Ok(d.svg(meta)?.into_bytes()),
+        FileFormat::Pdf => pdf::write(d, meta),
+    }
+}
+
+/// The figure `kind` (its base size × `scale`) as a file in `format`, with the [`metadata`]:
+/// PNG text chunks, SVG `<title>` and `<desc>`, PDF document information.
+pub fn panel_file(
+    kind: PanelKind,
+    ctx: &FigureContext,
+    data: &ColumnData,
+    scale: u32,
+    format: FileFormat,
+) -> Result<Vec<u8>, ExportError> {
+    let d = panel_drawing(kind, ctx, data, scale)?;
+    encode(&d, format, &metadata(kind, ctx, data, scale))
 }
 
 /// The figure `kind` as PNG bytes (8-bit RGB, its base size × `scale`), with the
@@ -224,19 +280,7 @@ pub fn panel_png(
     data: &ColumnData,
     scale: u32,
 ) -> Result<Vec<u8>, ExportError> {
-    let img = panel_rgb(kind, ctx, data, scale)?;
-    encode_png(&img, &metadata(kind, ctx, data, scale))
-}
-
-/// The figure `kind` as (width, height, RGBA8 bytes, row 0 at the top), for the clipboard.
-pub fn panel_rgba(
-    kind: PanelKind,
-    ctx: &FigureContext,
-    data: &ColumnData,
-    scale: u32,
-) -> Result<(u32, u32, Vec<u8>), ExportError> {
-    let img = panel_rgb(kind, ctx, data, scale)?;
-    Ok((img.width, img.height, rgb_to_rgba(&img.data)))
+    panel_file(kind, ctx, data, scale, FileFormat::Png)
 }
 
 /// The figure `kind` as SVG text (its base size × `scale` user units), with the [`metadata`]
@@ -247,9 +291,30 @@ pub fn panel_svg(
     data: &ColumnData,
     scale: u32,
 ) -> Result<String, ExportError> {
-    check_scale(scale)?;
-    let (text, images) = draw::render_svg(figure(kind), ctx, data, scale)?;
-    svg::finish(text, &images, &metadata(kind, ctx, data, scale))
+    let d = panel_drawing(kind, ctx, data, scale)?;
+    d.svg(&metadata(kind, ctx, data, scale))
+}
+
+/// The figure `kind` as a one-page PDF (its base size × `scale` pixels at [`PT_PER_PX`]),
+/// with the [`metadata`] as document information.
+pub fn panel_pdf(
+    kind: PanelKind,
+    ctx: &FigureContext,
+    data: &ColumnData,
+    scale: u32,
+) -> Result<Vec<u8>, ExportError> {
+    panel_file(kind, ctx, data, scale, FileFormat::Pdf)
+}
+
+/// The figure `kind` as (width, height, RGBA8 bytes, row 0 at the top), for the clipboard.
+pub fn panel_rgba(
+    kind: PanelKind,
+    ctx: &FigureContext,
+    data: &ColumnData,
+    scale: u32,
+) -> Result<(u32, u32, Vec<u8>), ExportError> {
+    let img = panel_drawing(kind, ctx, data, scale)?.raster()?;
+    Ok((img.width, img.height, rgb_to_rgba(&img.data)))
 }
 
 /// The data drawn by figure `kind` as CSV (round-trip precision):
@@ -278,7 +343,7 @@ pub fn panel_csv(
 
 /// The file name of figure `kind` of a column:
 /// `{scene}_{column}_n{N}_seed{S}_{kind}[@{scale}x][.{ext}]`, every part sanitised
-/// (`scale` is given for PNG and SVG, `None` for CSV; an empty `ext` gives no extension).
+/// (`scale` is given for PNG, SVG and PDF, `None` for CSV; an empty `ext` gives no extension).
 /// The theorem figures, which depend on no column, are `{scene}_{kind}[@{scale}x][.{ext}]`.
 pub fn panel_file_name(
     kind: PanelKind,
@@ -305,17 +370,27 @@ pub fn panel_file_name(
     )
 }
 
-/// The file name of a column composite: `{scene}_{column}_n{N}_seed{S}_column@{scale}x.png`.
-pub fn column_file_name(ctx: &FigureContext, scale: u32) -> String {
+/// The file name of a column composite:
+/// `{scene}_{column}_n{N}_seed{S}_column@{scale}x.{ext}`.
+pub fn column_file_name(ctx: &FigureContext, scale: u32, format: FileFormat) -> String {
     format!(
-        "{}_{}_n{}_seed{}_column@{scale}x.png",
-        ctx.scene_name, ctx.column_slug, ctx.n, ctx.seed
+        "{}_{}_n{}_seed{}_column@{scale}x.{}",
+        ctx.scene_name,
+        ctx.column_slug,
+        ctx.n,
+        ctx.seed,
+        format.ext()
     )
 }
 
-/// The file name of the comparison of every column: `{scene}_n{N}_comparison@{scale}x.png`.
-pub fn comparison_file_name(scene_name: &str, n: usize, scale: u32) -> String {
-    format!("{}_n{n}_comparison@{scale}x.png", sanitize(scene_name))
+/// The file name of the comparison of every column:
+/// `{scene}_n{N}_comparison@{scale}x.{ext}`.
+pub fn comparison_file_name(scene_name: &str, n: usize, scale: u32, format: FileFormat) -> String {
+    format!(
+        "{}_n{n}_comparison@{scale}x.{}",
+        sanitize(scene_name),
+        format.ext()
+    )
 }
 
 fn rgb_to_rgba(rgb: &[u8]) -> Vec<u8> {

@@ -1,7 +1,11 @@
 //! The points in the unit square, over the elementary intervals when the column asks.
+//!
+//! The axes are padded by one marker radius (and a pixel) on every side, so that points on
+//! the square's border (0 and 1 are common coordinates: grids, Hammersley, lattices) are drawn
+//! whole; the unit square is outlined in a light line, the padded area framed.
 
 use super::csv::curve;
-use super::draw::{axes, chart, draw_err, empty, present, Frame, INK, INTERVALS};
+use super::draw::{axes, chart, draw_err, empty, present, Frame, GUIDE, INK, INTERVALS};
 use super::{context_metadata, Area, Figure};
 use crate::export::ExportError;
 use crate::model::{elementary_grid, ColumnData, FigureContext, PanelKind};
@@ -11,6 +15,14 @@ use plotters::prelude::*;
 pub(super) struct Pattern;
 
 const KIND: PanelKind = PanelKind::Pattern;
+
+/// The radius in pixels of the markers of `n` points on a plotting area `side` pixels wide at
+/// `scale`: about a fifth of the mean spacing, 1 to 4 × scale pixels.
+fn marker_radius(side: f64, n: usize, scale: u32) -> u32 {
+    (side / (n.max(1) as f64).sqrt() * 0.18)
+        .clamp(1.0, 4.0 * scale as f64)
+        .round() as u32
+}
 
 impl Figure for Pattern {
     fn kind(&self) -> PanelKind {
@@ -41,7 +53,16 @@ impl Figure for Pattern {
         let de = |e| draw_err(KIND, e);
         let look = f.look;
         let pts = &present(KIND, f.data.points.as_ref())?.points;
-        let mut ch = chart(body, 0.0..1.0, 0.0..1.0, look, KIND)?;
+        // The marker radius follows the plotting area's side, which the padding barely
+        // changes: measured on the unpadded chart (building a chart draws nothing).
+        let side = {
+            let unpadded = chart(body, 0.0..1.0, 0.0..1.0, look, KIND)?;
+            let (xr, _) = unpadded.plotting_area().get_pixel_range();
+            (xr.end - xr.start).max(1) as f64
+        };
+        let radius = marker_radius(side, pts.len(), look.s);
+        let pad = (radius as f64 + 1.0) / side;
+        let mut ch = chart(body, -pad..1.0 + pad, -pad..1.0 + pad, look, KIND)?;
         axes(&mut ch, "x", "y", false, false, look, KIND)?;
         if let Some((cols, rows)) = elementary_grid(f.ctx.elementary_k, pts.len()) {
             let thin = look.line(INTERVALS, 1);
@@ -55,11 +76,14 @@ impl Figure for Pattern {
             });
             ch.draw_series(verticals.chain(horizontals)).map_err(de)?;
         }
-        let (xr, _) = ch.plotting_area().get_pixel_range();
-        let side = (xr.end - xr.start) as f64;
-        let radius = (side / (pts.len() as f64).sqrt() * 0.18)
-            .clamp(1.0, 4.0 * look.s as f64)
-            .round() as u32;
+        // The unit square in a light line under the points, and a closed frame around the
+        // padded plotting area (its left and bottom sides are the axes).
+        ch.plotting_area()
+            .draw(&Rectangle::new(
+                [(0.0, 0.0), (1.0, 1.0)],
+                look.line(GUIDE, 1),
+            ))
+            .map_err(de)?;
         ch.draw_series(
             pts.iter()
                 .map(|p| Circle::new((p.x, p.y), radius, INK.filled())),
@@ -67,7 +91,7 @@ impl Figure for Pattern {
         .map_err(de)?;
         ch.plotting_area()
             .draw(&Rectangle::new(
-                [(0.0, 0.0), (1.0, 1.0)],
+                [(-pad, -pad), (1.0 + pad, 1.0 + pad)],
                 look.line(BLACK, 1),
             ))
             .map_err(de)?;

@@ -1,0 +1,918 @@
+//! The figures' one vector drawing, and its two pictures: an antialiased raster (tiny-skia)
+//! and SVG text. The PDF writer (`pdf.rs`) reads the same drawing.
+//!
+//! A figure is laid out once (by plotters, onto [`super::Canvas`], which records what it is
+//! asked to draw) into a [`Drawing`]: a list of strokes, fills, circles, text runs and images
+//! in page pixels, y down, in continuous coordinates (pixel `i` of a bitmap spans `[i, i + 1)`;
+//! the canvas maps plotters' integer pixel coordinates to pixel centres, so that a one-pixel
+//! axis line covers exactly one row of pixels in every picture). Text is kept as positioned
+//! glyphs of the figures' one font (Ubuntu Light, from egui's fonts): the raster fills their
+//! outlines, the SVG draws the same outlines (defined once in `<defs>` and placed with
+//! `<use>`, so no viewer needs the font), the PDF shows them with the font embedded. So the
+//! PNG is the SVG's picture, and the same inputs give the same bytes.
+
+use super::Rgb;
+use crate::export::ExportError;
+use ab_glyph::{Font, FontRef, GlyphId, OutlineCurve, PxScale, ScaleFont};
+use std::collections::{BTreeMap, BTreeSet};
+use std::fmt::Write as _;
+use std::sync::{Arc, OnceLock};
+
+/// A colour with opacity in `0.0..=1.0`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Rgba {
+    pub rgb: [u8; 3],
+    pub alpha: f32,
+}
+
+impl Rgba {
+    pub const WHITE: Rgba = Rgba {
+        rgb: [255, 255, 255],
+        alpha: 1.0,
+    };
+    pub const BLACK: Rgba = Rgba {
+        rgb: [0, 0, 0],
+        alpha: 1.0,
+    };
+
+    fn hex(self) -> String {
+        format!("#{:02x}{:02x}{:02x}", self.rgb[0], self.rgb[1], self.rgb[2])
+    }
+
+    fn skia(self) -> tiny_skia::Color {
+        tiny_skia::Color::from_rgba8(
+            self.rgb[0],
+            self.rgb[1],
+            self.rgb[2],
+            (self.alpha.clamp(0.0, 1.0) * 255.0).round() as u8,
+        )
+    }
+}
+
+/// A glyph of a text run: its font glyph id and its pen position (on the baseline) in the
+/// run's own frame (x right, y down, the run's box starting at (0, 0)).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct PlacedGlyph {
+    pub id: u16,
+    pub x: f32,
+    pub y: f32,
+}
+
+/// One shape of a drawing. Lengths are page pixels.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) enum Op {
+    /// A polyline (closed: a polygon outline), square caps, round joins.
+    Stroke {
+        points: Vec<[f32; 2]>,
+        closed: bool,
+        width: f32,
+        color: Rgba,
+    },
+    /// A filled polygon (non-zero winding).
+    Fill { points: Vec<[f32; 2]>, color: Rgba },
+    /// A circle, filled or stroked.
+    Circle {
+        centre: [f32; 2],
+        radius: f32,
+        fill: bool,
+        width: f32,
+        color: Rgba,
+    },
+    /// A run of glyphs: page point = `origin` + R · (frame point), R = `rot` as
+    /// (a, b, c, d): (x, y) ↦ (a x + c y, b x + d y); `scale` maps font units to pixels.
+    Text {
+        text: String,
+        glyphs: Vec<PlacedGlyph>,
+        origin: [f32; 2],
+        rot: [f32; 4],
+        scale: f32,
+        color: Rgba,
+    },
+    /// An image shown nearest-neighbour over the rectangle (x, y, width, height).
+    Image {
+        x: f32,
+        y: f32,
+        width: f32,
+        height: f32,
+        image: Arc<Rgb>,
+    },
+}
+
+impl Op {
+    fn translate(&mut self, dx: f32, dy: f32) {
+        let shift = |p: &mut [f32; 2]| {
+            p[0] += dx;
+            p[1] += dy;
+        };
+        match self {
+            Op::Stroke { points, .. } | Op::Fill { points, .. } => {
+                points.iter_mut().for_each(shift)
+            }
+            Op::Circle { centre, .. } => shift(centre),
+            Op::Text { origin, .. } => shift(origin),
+            Op::Image { x, y, .. } => {
+                *x += dx;
+                *y += dy;
+            }
+        }
+    }
+}
+
+/// A page of `width` × `height` pixels and what is drawn on it, in order.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub(crate) struct Drawing {
+    pub width: u32,
+    pub height: u32,
+    pub ops: Vec<Op>,
+}
+
+/// The figures' font.
+pub(crate) struct FigureFont {
+    pub font: FontRef<'static>,
+    pub bytes: &'static [u8],
+}
+
+/// The figures' one font (Ubuntu Light, the font egui ships), parsed once.
+pub(crate) fn font() -> Result<&'static FigureFont, ExportError> {
+    static FONT: OnceLock<Option<FigureFont>> = OnceLock::new();
+    FONT.get_or_init(|| {
+        let bytes = epaint_default_fonts::UBUNTU_LIGHT;
+        FontRef::try_from_slice(bytes)
+            .ok()
+            .map(|font| FigureFont { font, bytes })
+    })
+    .as_ref()
+    .ok_or_else(|| ExportError::Draw {
+        figure: "font",
+        message: "the built-in font could not be parsed".into(),
+    })
+}
+
+/// A laid-out line of text at `px` pixels per line height (ab_glyph's scale): its glyphs on
+/// a baseline at the ascent, the pixels per font unit, and the box (width, height).
+pub(crate) struct Line {
+    pub glyphs: Vec<PlacedGlyph>,
+    pub scale: f32,
+    pub width: f32,
+    pub height: f32,
+}
+
+impl FigureFont {
+    /// Lays out `text` on one line: advances and kerning at sub-pixel positions.
+    pub(crate) fn layout(&self, text: &str, px: f32) -> Line {
+        let sf = self.font.as_scaled(PxScale::from(px));
+        let ascent = sf.ascent();
+        let mut x = 0.0f32;
+        let mut prev: Option<GlyphId> = None;
+        let mut glyphs = Vec::with_capacity(text.len());
+        for c in text.chars() {
+            let id = sf.glyph_id(c);
+            if let Some(p) = prev {
+                x += sf.kern(p, id);
+            }
+            glyphs.push(PlacedGlyph {
+                id: id.0,
+                x,
+                y: ascent,
+            });
+            x += sf.h_advance(id);
+            prev = Some(id);
+        }
+        Line {
+            glyphs,
+            scale: sf.h_scale_factor(),
+            width: x,
+            height: ascent - sf.descent(),
+        }
+    }
+
+    /// The outline of glyph `id` in font units (y up), as path commands.
+    pub(crate) fn outline(&self, id: u16) -> Vec<Seg> {
+        let mut segs = Vec::new();
+        let Some(outline) = self.font.outline(GlyphId(id)) else {
+            return segs;
+        };
+        let mut at: Option<[f32; 2]> = None;
+        for c in &outline.curves {
+            let (start, seg) = match *c {
+                OutlineCurve::Line(a, b) => ([a.x, a.y], Seg::Line([b.x, b.y])),
+                OutlineCurve::Quad(a, b, c) => ([a.x, a.y], Seg::Quad([b.x, b.y], [c.x, c.y])),
+                OutlineCurve::Cubic(a, b, c, d) => {
+                    ([a.x, a.y], Seg::Cubic([b.x, b.y], [c.x, c.y], [d.x, d.y]))
+                }
+            };
+            if at != Some(start) {
+                if at.is_some() {
+                    segs.push(Seg::Close);
+                }
+                segs.push(Seg::Move(start));
+            }
+            at = Some(seg.end());
+            segs.push(seg);
+        }
+        if at.is_some() {
+            segs.push(Seg::Close);
+        }
+        segs
+    }
+}
+
+/// A path command of a glyph outline.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) enum Seg {
+    Move([f32; 2]),
+    Line([f32; 2]),
+    Quad([f32; 2], [f32; 2]),
+    Cubic([f32; 2], [f32; 2], [f32; 2]),
+    Close,
+}
+
+impl Seg {
+    fn end(self) -> [f32; 2] {
+        match self {
+            Seg::Move(p) | Seg::Line(p) | Seg::Quad(_, p) | Seg::Cubic(_, _, p) => p,
+            Seg::Close => [0.0, 0.0],
+        }
+    }
+}
+
+/// The affine map (a, b, c, d, e, f): (u, v) ↦ (a u + c v + e, b u + d v + f) from a glyph's
+/// font units (y up) to the page, for glyph `g` of a text run.
+pub(crate) fn glyph_matrix(
+    origin: [f32; 2],
+    rot: [f32; 4],
+    scale: f32,
+    g: PlacedGlyph,
+) -> [f32; 6] {
+    let [a, b, c, d] = rot;
+    [
+        a * scale,
+        b * scale,
+        -c * scale,
+        -d * scale,
+        origin[0] + a * g.x + c * g.y,
+        origin[1] + b * g.x + d * g.y,
+    ]
+}
+
+impl Drawing {
+    /// An empty page.
+    pub(crate) fn new(width: u32, height: u32) -> Drawing {
+        Drawing {
+            width,
+            height,
+            ops: Vec::new(),
+        }
+    }
+
+    /// Draws `other` over this drawing with its top-left corner at (dx, dy).
+    pub(crate) fn place(&mut self, other: Drawing, dx: f32, dy: f32) {
+        self.ops.extend(other.ops.into_iter().map(|mut op| {
+            op.translate(dx, dy);
+            op
+        }));
+    }
+
+    /// The glyphs the drawing's text uses, with a character each shows (for the PDF's
+    /// ToUnicode map), in glyph order.
+    pub(crate) fn glyphs_used(&self) -> BTreeMap<u16, char> {
+        let mut used = BTreeMap::new();
+        for op in &self.ops {
+            if let Op::Text { text, glyphs, .. } = op {
+                for (g, ch) in glyphs.iter().zip(text.chars()) {
+                    used.entry(g.id).or_insert(ch);
+                }
+            }
+        }
+        used
+    }
+
+    /// The drawing rasterised, antialiased, on white: 8-bit RGB, row 0 at the top.
+    pub(crate) fn raster(&self) -> Result<Rgb, ExportError> {
+        use tiny_skia::{
+            FillRule, LineCap, LineJoin, Paint, PathBuilder, Pixmap, Stroke, Transform,
+        };
+        let font = font()?;
+        let fail = |what: &str| ExportError::Draw {
+            figure: "raster",
+            message: what.to_string(),
+        };
+        let mut pm =
+            Pixmap::new(self.width, self.height).ok_or_else(|| fail("the page has no pixels"))?;
+        pm.fill(tiny_skia::Color::WHITE);
+        let paint = |c: Rgba| {
+            let mut p = Paint::default();
+            p.set_color(c.skia());
+            p.anti_alias = true;
+            p
+        };
+        let poly = |points: &[[f32; 2]], closed: bool| {
+            let mut pb = PathBuilder::new();
+            for (i, p) in points.iter().enumerate() {
+                if i == 0 {
+                    pb.move_to(p[0], p[1]);
+                } else {
+                    pb.line_to(p[0], p[1]);
+                }
+            }
+            if closed {
+                pb.close();
+            }
+            pb.finish()
+        };
+        let mut glyph_paths: BTreeMap<u16, Option<tiny_skia::Path>> = BTreeMap::new();
+        for op in &self.ops {
+            match op {
+                Op::Stroke {
+                    points,
+                    closed,
+                    width,
+                    color,
+                } => {
+                    if let Some(path) = poly(points, *closed) {
+                        let stroke = Stroke {
+                            width: *width,
+                            line_cap: LineCap::Square,
+                            line_join: LineJoin::Round,
+                            ..Stroke::default()
+                        };
+                        pm.stroke_path(&path, &paint(*color), &stroke, Transform::identity(), None);
+                    }
+                }
+                Op::Fill { points, color } => {
+                    if let Some(path) = poly(points, true) {
+                        pm.fill_path(
+                            &path,
+                            &paint(*color),
+                            FillRule::Winding,
+                            Transform::identity(),
+                            None,
+                        );
+                    }
+                }
+                Op::Circle {
+                    centre,
+                    radius,
+                    fill,
+                    width,
+                    color,
+                } => {
+                    if let Some(path) = PathBuilder::from_circle(centre[0], centre[1], *radius) {
+                        if *fill {
+                            pm.fill_path(
+                                &path,
+                                &paint(*color),
+                                FillRule::Winding,
+                                Transform::identity(),
+                                None,
+                            );
+                        } else {
+                            let stroke = Stroke {
+                                width: *width,
+                                ..Stroke::default()
+                            };
+                            pm.stroke_path(
+                                &path,
+                                &paint(*color),
+                                &stroke,
+                                Transform::identity(),
+                                None,
+                            );
+                        }
+                    }
+                }
+                Op::Text {
+                    glyphs,
+                    origin,
+                    rot,
+                    scale,
+                    color,
+                    ..
+                } => {
+                    let p = paint(*color);
+                    for g in glyphs {
+                        let path = glyph_paths
+                            .entry(g.id)
+                            .or_insert_with(|| skia_path(&font.outline(g.id)));
+                        if let Some(path) = path {
+                            let [a, b, c, d, e, f] = glyph_matrix(*origin, *rot, *scale, *g);
+                            pm.fill_path(
+                                path,
+                                &p,
+                                FillRule::Winding,
+                                Transform::from_row(a, b, c, d, e, f),
+                                None,
+                            );
+                        }
+                    }
+                }
+                Op::Image {
+                    x,
+                    y,
+                    width,
+                    height,
+                    image,
+                } => blit_nearest(&mut pm, image, [*x, *y, *width, *height]),
+            }
+        }
+        let mut data = Vec::with_capacity(self.width as usize * self.height as usize * 3);
+        // Every pixel is opaque (the page is white), so premultiplied RGBA is plain RGB.
+        for px in pm.data().chunks_exact(4) {
+            data.extend_from_slice(&px[..3]);
+        }
+        Ok(Rgb {
+            width: self.width,
+            height: self.height,
+            data,
+        })
+    }
+
+    /// The drawing as an SVG document of `width` × `height` user units, with `title` and the
+    /// metadata lines (`key: value`) as `<title>` and `<desc>`.
+    pub(crate) fn svg(&self, meta: &[(String, String)]) -> Result<String, ExportError> {
+        let font = font()?;
+        let (w, h) = (self.width, self.height);
+        let mut out = String::with_capacity(16 * 1024);
+        let _ = writeln!(
+            out,
+            "<svg xmlns=\"http://www.w3.org/2000/svg\" xmlns:xlink=\"http://www.w3.org/1999/xlink\" \
+             width=\"{w}\" height=\"{h}\" viewBox=\"0 0 {w} {h}\">"
+        );
+        let title = meta
+            .iter()
+            .find(|(k, _)| k == "Title")
+            .map(|(_, v)| v.as_str())
+            .unwrap_or("");
+        let desc = meta
+            .iter()
+            .map(|(k, v)| format!("{}: {}", escape(k), escape(v)))
+            .collect::<Vec<_>>()
+            .join("\n");
+        let _ = writeln!(out, "<title>{}</title>\n<desc>{desc}</desc>", escape(title));
+        let used: BTreeSet<u16> = self.glyphs_used().into_keys().collect();
+        if !used.is_empty() {
+            out.push_str("<defs>\n");
+            for id in used {
+                let d = svg_path(&font.outline(id));
+                if !d.is_empty() {
+                    let _ = writeln!(out, "<path id=\"g{id}\" d=\"{d}\"/>");
+                }
+            }
+            out.push_str("</defs>\n");
+        }
+        for op in &self.ops {
+            match op {
+                Op::Stroke {
+                    points,
+                    closed,
+                    width,
+                    color,
+                } => {
+                    let tag = if *closed { "polygon" } else { "polyline" };
+                    let _ = writeln!(
+                        out,
+                        "<{tag} points=\"{}\" fill=\"none\" stroke=\"{}\"{} stroke-width=\"{}\" \
+                         stroke-linecap=\"square\" stroke-linejoin=\"round\"/>",
+                        svg_points(points),
+                        color.hex(),
+                        opacity("stroke-opacity", color.alpha),
+                        num(*width)
+                    );
+                }
+                Op::Fill { points, color } => {
+                    let _ = writeln!(
+                        out,
+                        "<polygon points=\"{}\" fill=\"{}\"{}/>",
+                        svg_points(points),
+                        color.hex(),
+                        opacity("fill-opacity", color.alpha)
+                    );
+                }
+                Op::Circle {
+                    centre,
+                    radius,
+                    fill,
+                    width,
+                    color,
+                } => {
+                    let paint = if *fill {
+                        format!(
+                            "fill=\"{}\"{}",
+                            color.hex(),
+                            opacity("fill-opacity", color.alpha)
+                        )
+                    } else {
+                        format!(
+                            "fill=\"none\" stroke=\"{}\"{} stroke-width=\"{}\"",
+                            color.hex(),
+                            opacity("stroke-opacity", color.alpha),
+                            num(*width)
+                        )
+                    };
+                    let _ = writeln!(
+                        out,
+                        "<circle cx=\"{}\" cy=\"{}\" r=\"{}\" {paint}/>",
+                        num(centre[0]),
+                        num(centre[1]),
+                        num(*radius)
+                    );
+                }
+                Op::Text {
+                    text,
+                    glyphs,
+                    origin,
+                    rot,
+                    scale,
+                    color,
+                } => {
+                    let _ = writeln!(
+                        out,
+                        "<g role=\"img\" aria-label=\"{}\" fill=\"{}\"{}>",
+                        escape(text),
+                        color.hex(),
+                        opacity("fill-opacity", color.alpha)
+                    );
+                    for g in glyphs {
+                        if font.outline(g.id).is_empty() {
+                            continue;
+                        }
+                        let m = glyph_matrix(*origin, *rot, *scale, *g);
+                        let _ = writeln!(
+                            out,
+                            "<use xlink:href=\"#g{}\" transform=\"matrix({})\"/>",
+                            g.id,
+                            m.iter().map(|v| fine(*v)).collect::<Vec<_>>().join(" ")
+                        );
+                    }
+                    out.push_str("</g>\n");
+                }
+                Op::Image {
+                    x,
+                    y,
+                    width,
+                    height,
+                    image,
+                } => {
+                    let png = super::encode_png(image, &[])?;
+                    let _ = writeln!(
+                        out,
+                        "<image x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" \
+                         preserveAspectRatio=\"none\" image-rendering=\"optimizeSpeed\" \
+                         style=\"image-rendering:pixelated\" \
+                         xlink:href=\"data:image/png;base64,{}\"/>",
+                        num(*x),
+                        num(*y),
+                        num(*width),
+                        num(*height),
+                        base64(&png)
+                    );
+                }
+            }
+        }
+        out.push_str("</svg>\n");
+        Ok(out)
+    }
+}
+
+/// Copies `img` nearest-neighbour over `rect` (pixel centres map to pixel centres), clipped
+/// to the page.
+fn blit_nearest(pm: &mut tiny_skia::Pixmap, img: &Rgb, rect: [f32; 4]) {
+    let (pw, ph) = (pm.width() as i64, pm.height() as i64);
+    let [x, y, w, h] = rect;
+    if img.width == 0 || img.height == 0 || w <= 0.0 || h <= 0.0 {
+        return;
+    }
+    let x0 = (x.round() as i64).clamp(0, pw);
+    let x1 = ((x + w).round() as i64).clamp(0, pw);
+    let y0 = (y.round() as i64).clamp(0, ph);
+    let y1 = ((y + h).round() as i64).clamp(0, ph);
+    let (sw, sh) = (img.width as f32, img.height as f32);
+    let cols: Vec<usize> = (x0..x1)
+        .map(|px| {
+            (((px as f32 + 0.5 - x) / w * sw).floor().max(0.0) as usize).min(img.width as usize - 1)
+        })
+        .collect();
+    let data = pm.data_mut();
+    for py in y0..y1 {
+        let sy = (((py as f32 + 0.5 - y) / h * sh).floor().max(0.0) as usize)
+            .min(img.height as usize - 1);
+        let src = &img.data[sy * img.width as usize * 3..(sy + 1) * img.width as usize * 3];
+        let row = (py * pw) as usize * 4;
+        for (i, &sx) in cols.iter().enumerate() {
+            let d = row + (x0 as usize + i) * 4;
+            data[d..d + 3].copy_from_slice(&src[sx * 3..sx * 3 + 3]);
+            data[d + 3] = 255;
+        }
+    }
+}
+
+fn skia_path(segs: &[Seg]) -> Option<tiny_skia::Path> {
+    let mut pb = tiny_skia::PathBuilder::new();
+    for s in segs {
+        match *s {
+            Seg::Move(p) => pb.move_to(p[0], p[1]),
+            Seg::Line(p) => pb.line_to(p[0], p[1]),
+            Seg::Quad(c, p) => pb.quad_to(c[0], c[1], p[0], p[1]),
+            Seg::Cubic(c1, c2, p) => pb.cubic_to(c1[0], c1[1], c2[0], c2[1], p[0], p[1]),
+            Seg::Close => pb.close(),
+        }
+    }
+    pb.finish()
+}
+
+fn svg_path(segs: &[Seg]) -> String {
+    let mut d = String::new();
+    let pt = |p: [f32; 2]| format!("{} {}", num(p[0]), num(p[1]));
+    for s in segs {
+        let _ = match *s {
+            Seg::Move(p) => write!(d, "M{}", pt(p)),
+            Seg::Line(p) => write!(d, "L{}", pt(p)),
+            Seg::Quad(c, p) => write!(d, "Q{} {}", pt(c), pt(p)),
+            Seg::Cubic(a, b, p) => write!(d, "C{} {} {}", pt(a), pt(b), pt(p)),
+            Seg::Close => write!(d, "Z"),
+        };
+    }
+    d
+}
+
+fn svg_points(points: &[[f32; 2]]) -> String {
+    points
+        .iter()
+        .map(|p| format!("{},{}", num(p[0]), num(p[1])))
+        .collect::<Vec<_>>()
+        .join(" ")
+}
+
+fn opacity(attr: &str, alpha: f32) -> String {
+    if alpha >= 1.0 {
+        String::new()
+    } else {
+        format!(" {attr}=\"{}\"", fine(alpha.max(0.0)))
+    }
+}
+
+/// A length with at most two decimals, trailing zeros dropped ("12", "12.5", "-0.25").
+pub(crate) fn num(v: f32) -> String {
+    trim(format!("{:.2}", v))
+}
+
+/// A coefficient with at most five decimals.
+fn fine(v: f32) -> String {
+    trim(format!("{:.5}", v))
+}
+
+fn trim(s: String) -> String {
+    let t = if s.contains('.') {
+        s.trim_end_matches('0').trim_end_matches('.')
+    } else {
+        &s
+    };
+    if t == "-0" {
+        "0".into()
+    } else {
+        t.into()
+    }
+}
+
+/// Standard base64 (RFC 4648, with padding).
+pub(crate) fn base64(bytes: &[u8]) -> String {
+    const ALPHABET: &[u8; 64] = b"ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    let mut out = String::with_capacity(bytes.len().div_ceil(3) * 4);
+    for chunk in bytes.chunks(3) {
+        let b = [
+            chunk[0],
+            chunk.get(1).copied().unwrap_or(0),
+            chunk.get(2).copied().unwrap_or(0),
+        ];
+        let n = (u32::from(b[0]) << 16) | (u32::from(b[1]) << 8) | u32::from(b[2]);
+        for i in 0..4 {
+            if i <= chunk.len() {
+                out.push(ALPHABET[((n >> (18 - 6 * i)) & 63) as usize] as char);
+            } else {
+                out.push('=');
+            }
+        }
+    }
+    out
+}
+
+/// XML-escapes `text` for element content and attribute values.
+pub(crate) fn escape(text: &str) -> String {
+    let mut out = String::with_capacity(text.len());
+    for c in text.chars() {
+        match c {
+            '<' => out.push_str("&lt;"),
+            '>' => out.push_str("&gt;"),
+            '&' => out.push_str("&amp;"),
+            '"' => out.push_str("&quot;"),
+            '\'' => out.push_str("&apos;"),
+            '\n' => out.push_str("&#10;"),
+            other => out.push(other),
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn ink(img: &Rgb) -> usize {
+        img.data.chunks_exact(3).filter(|p| p[0] < 250).count()
+    }
+
+    #[test]
+    fn base64_matches_rfc4648_vectors() {
+        assert_eq!(base64(b""), "");
+        assert_eq!(base64(b"f"), "Zg==");
+        assert_eq!(base64(b"fo"), "Zm8=");
+        assert_eq!(base64(b"foo"), "Zm9v");
+        assert_eq!(base64(b"foob"), "Zm9vYg==");
+        assert_eq!(base64(b"fooba"), "Zm9vYmE=");
+        assert_eq!(base64(b"foobar"), "Zm9vYmFy");
+        assert_eq!(base64(&[0xff, 0xfe, 0xfd]), "//79");
+    }
+
+    #[test]
+    fn numbers_are_short_and_signless_at_zero() {
+        assert_eq!(num(12.0), "12");
+        assert_eq!(num(12.5), "12.5");
+        assert_eq!(num(-0.001), "0");
+        assert_eq!(num(0.125), "0.13");
+        assert_eq!(fine(0.123456), "0.12346");
+    }
+
+    #[test]
+    fn a_one_pixel_line_on_pixel_centres_covers_one_row_exactly() {
+        let mut d = Drawing::new(20, 10);
+        d.ops.push(Op::Stroke {
+            points: vec![[2.5, 4.5], [17.5, 4.5]],
+            closed: false,
+            width: 1.0,
+            color: Rgba::BLACK,
+        });
+        let img = d.raster().unwrap();
+        for y in 0..10usize {
+            for x in 0..20usize {
+                let v = img.data[(y * 20 + x) * 3];
+                let want = if y == 4 && (2..=17).contains(&x) {
+                    0
+                } else {
+                    255
+                };
+                assert_eq!(v, want, "pixel ({x}, {y})");
+            }
+        }
+    }
+
+    #[test]
+    fn a_diagonal_line_is_antialiased() {
+        let mut d = Drawing::new(40, 40);
+        d.ops.push(Op::Stroke {
+            points: vec![[2.0, 3.0], [38.0, 30.0]],
+            closed: false,
+            width: 1.5,
+            color: Rgba::BLACK,
+        });
+        let img = d.raster().unwrap();
+        let partial = img
+            .data
+            .chunks_exact(3)
+            .filter(|p| p[0] > 10 && p[0] < 245)
+            .count();
+        let full = img.data.chunks_exact(3).filter(|p| p[0] <= 10).count();
+        assert!(partial > full / 2, "blended {partial}, solid {full}");
+    }
+
+    #[test]
+    fn text_is_drawn_where_its_layout_says_and_rotated_runs_are_vertical() {
+        let f = font().unwrap();
+        let line = f.layout("periodogram", 26.0);
+        assert!(line.width > 100.0 && line.width < 160.0, "{}", line.width);
+        let mut d = Drawing::new(200, 200);
+        d.ops.push(Op::Text {
+            text: "periodogram".into(),
+            glyphs: line.glyphs.clone(),
+            origin: [20.0, 20.0],
+            rot: [1.0, 0.0, 0.0, 1.0],
+            scale: line.scale,
+            color: Rgba::BLACK,
+        });
+        let img = d.raster().unwrap();
+        let (mut x0, mut x1, mut y0, mut y1) = (usize::MAX, 0, usize::MAX, 0);
+        for (i, p) in img.data.chunks_exact(3).enumerate() {
+            if p[0] < 128 {
+                let (x, y) = (i % 200, i / 200);
+                x0 = x0.min(x);
+                x1 = x1.max(x);
+                y0 = y0.min(y);
+                y1 = y1.max(y);
+            }
+        }
+        assert!(
+            x0 >= 20 && (x1 as f32) <= 20.0 + line.width + 1.0,
+            "{x0}..{x1}"
+        );
+        assert!(
+            y0 >= 20 && (y1 as f32) <= 20.0 + line.height + 1.0,
+            "{y0}..{y1}"
+        );
+        assert!(x1 - x0 > 3 * (y1 - y0), "a horizontal run");
+        // The same run turned by R = Rotate270, as plotters' y-axis labels.
+        let mut v = Drawing::new(200, 200);
+        v.ops.push(Op::Text {
+            text: "periodogram".into(),
+            glyphs: line.glyphs,
+            origin: [20.0, 180.0],
+            rot: [0.0, -1.0, 1.0, 0.0],
+            scale: line.scale,
+            color: Rgba::BLACK,
+        });
+        let img = v.raster().unwrap();
+        let rows: BTreeSet<usize> = img
+            .data
+            .chunks_exact(3)
+            .enumerate()
+            .filter(|(_, p)| p[0] < 128)
+            .map(|(i, _)| i / 200)
+            .collect();
+        let cols: BTreeSet<usize> = img
+            .data
+            .chunks_exact(3)
+            .enumerate()
+            .filter(|(_, p)| p[0] < 128)
+            .map(|(i, _)| i % 200)
+            .collect();
+        assert!(
+            rows.len() > 3 * cols.len(),
+            "{} rows, {} cols",
+            rows.len(),
+            cols.len()
+        );
+        assert!(ink(&img) > 100);
+    }
+
+    #[test]
+    fn placing_a_drawing_translates_every_shape() {
+        let mut a = Drawing::new(10, 10);
+        a.ops.push(Op::Circle {
+            centre: [1.0, 2.0],
+            radius: 1.0,
+            fill: true,
+            width: 0.0,
+            color: Rgba::BLACK,
+        });
+        a.ops.push(Op::Image {
+            x: 0.0,
+            y: 0.0,
+            width: 2.0,
+            height: 2.0,
+            image: Arc::new(Rgb {
+                width: 1,
+                height: 1,
+                data: vec![0, 0, 0],
+            }),
+        });
+        let mut page = Drawing::new(100, 100);
+        page.place(a, 10.0, 20.0);
+        assert!(matches!(
+            page.ops[0],
+            Op::Circle {
+                centre: [11.0, 22.0],
+                ..
+            }
+        ));
+        assert!(matches!(
+            page.ops[1],
+            Op::Image {
+                x: 10.0,
+                y: 20.0,
+                ..
+            }
+        ));
+    }
+
+    #[test]
+    fn images_are_nearest_neighbour_over_their_rectangle() {
+        let mut d = Drawing::new(8, 4);
+        d.ops.push(Op::Image {
+            x: 2.0,
+            y: 0.0,
+            width: 4.0,
+            height: 4.0,
+            // 2×2: black, white / white, black.
+            image: Arc::new(Rgb {
+                width: 2,
+                height: 2,
+                data: vec![0, 0, 0, 255, 255, 255, 255, 255, 255, 0, 0, 0],
+            }),
+        });
+        let img = d.raster().unwrap();
+        let at = |x: usize, y: usize| img.data[(y * 8 + x) * 3];
+        assert_eq!(
+            [at(1, 0), at(2, 0), at(3, 1), at(4, 0), at(6, 0)],
+            [255, 0, 0, 255, 255]
+        );
+        assert_eq!([at(2, 2), at(4, 3), at(5, 2)], [255, 0, 0]);
+    }
+}
