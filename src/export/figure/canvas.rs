@@ -2,10 +2,13 @@
 //! to draw into a [`Drawing`] (see `drawing.rs`), so that each figure is laid out once and
 //! its PNG, SVG and PDF are pictures of the same shapes.
 //!
-//! plotters speaks integer pixel coordinates, pixel `i` being the `i`-th row or column of a
-//! bitmap; the canvas records them at pixel centres (`i + 0.5`) and a filled rectangle of
-//! pixels `a..=b` as the area `[a, b + 1)`, so that one-pixel axis lines and ticks stay
-//! crisp in every picture while curves, markers and text are antialiased.
+//! plotters speaks integer pixel coordinates. The canvas tells it the page is [`SUB`] times
+//! larger than it is (the figures lay out with every length × `SUB`) and records every
+//! coordinate divided by `SUB`: curves, markers and text get quarter-pixel positions (and
+//! markers fractional radii), so the antialiased raster shows smooth curves instead of
+//! stair-steps of whole pixels. Axis-aligned lines and rectangles (axes, ticks, grids,
+//! frames, stems) are snapped to whole pixels (a line of odd width onto pixel centres), so
+//! they stay crisp in every picture.
 
 use super::drawing::{font, Drawing, Op, Rgba};
 use super::Rgb;
@@ -22,6 +25,10 @@ use std::sync::Arc;
 
 /// The font family every text names (the canvas draws every text in the figures' one font).
 pub(super) const FONT: &str = "sans-serif";
+
+/// plotters' pixels per page pixel.
+pub(super) const SUB: u32 = 4;
+const K: f32 = SUB as f32;
 
 /// A figure being drawn: it appends to the drawing it borrows.
 pub struct Canvas<'a> {
@@ -65,12 +72,37 @@ fn colour(c: BackendColor) -> Rgba {
     }
 }
 
+/// The page point of plotters' pixel `p` (its centre).
 fn centre(p: BackendCoord) -> [f32; 2] {
-    [p.0 as f32 + 0.5, p.1 as f32 + 0.5]
+    [(p.0 as f32 + 0.5) / K, (p.1 as f32 + 0.5) / K]
 }
 
+/// A page line width of a plotters stroke width (at least a quarter pixel).
 fn width<S: BackendStyle>(style: &S) -> f32 {
-    style.stroke_width().max(1) as f32
+    style.stroke_width().max(1) as f32 / K
+}
+
+/// `v` snapped so that a line `w` wide across it covers whole pixels: onto a pixel centre
+/// for odd widths, onto a pixel edge for even ones.
+fn snap(v: f32, w: f32) -> f32 {
+    if (w.round() as i64) % 2 == 1 {
+        v.floor() + 0.5
+    } else {
+        v.round()
+    }
+}
+
+/// A two-point stroke, snapped when horizontal or vertical.
+fn segment(a: [f32; 2], b: [f32; 2], w: f32) -> Vec<[f32; 2]> {
+    if a[1] == b[1] {
+        let y = snap(a[1], w);
+        vec![[a[0], y], [b[0], y]]
+    } else if a[0] == b[0] {
+        let x = snap(a[0], w);
+        vec![[x, a[1]], [x, b[1]]]
+    } else {
+        vec![a, b]
+    }
 }
 
 /// The rotation (a, b, c, d), (x, y) ↦ (a x + c y, b x + d y), of a plotters text transform.
@@ -93,7 +125,7 @@ impl DrawingBackend for Canvas<'_> {
     type ErrorType = CanvasError;
 
     fn get_size(&self) -> (u32, u32) {
-        (self.drawing.width, self.drawing.height)
+        (self.drawing.width * SUB, self.drawing.height * SUB)
     }
 
     fn ensure_prepared(&mut self) -> Result<()> {
@@ -106,9 +138,9 @@ impl DrawingBackend for Canvas<'_> {
 
     fn draw_pixel(&mut self, p: BackendCoord, color: BackendColor) -> Result<()> {
         if color.alpha > 0.0 {
-            let (x, y) = (p.0 as f32, p.1 as f32);
+            let (x, y, d) = (p.0 as f32 / K, p.1 as f32 / K, 1.0 / K);
             self.push(Op::Fill {
-                points: vec![[x, y], [x + 1.0, y], [x + 1.0, y + 1.0], [x, y + 1.0]],
+                points: vec![[x, y], [x + d, y], [x + d, y + d], [x, y + d]],
                 color: colour(color),
             });
         }
@@ -122,10 +154,11 @@ impl DrawingBackend for Canvas<'_> {
         style: &S,
     ) -> Result<()> {
         if style.color().alpha > 0.0 {
+            let w = width(style);
             self.push(Op::Stroke {
-                points: vec![centre(from), centre(to)],
+                points: segment(centre(from), centre(to), w),
                 closed: false,
-                width: width(style),
+                width: w,
                 color: colour(style.color()),
             });
         }
@@ -145,17 +178,21 @@ impl DrawingBackend for Canvas<'_> {
         let (x0, x1) = (ul.0.min(br.0), ul.0.max(br.0));
         let (y0, y1) = (ul.1.min(br.1), ul.1.max(br.1));
         if fill {
-            let (x0, y0, x1, y1) = (x0 as f32, y0 as f32, x1 as f32 + 1.0, y1 as f32 + 1.0);
+            // Whole page pixels: plotters' pixels a..=b are [a, b + 1) / SUB, rounded.
+            let edge = |v: i32| (v as f32 / K).round();
+            let (x0, y0, x1, y1) = (edge(x0), edge(y0), edge(x1 + 1), edge(y1 + 1));
             self.push(Op::Fill {
                 points: vec![[x0, y0], [x1, y0], [x1, y1], [x0, y1]],
                 color: colour(style.color()),
             });
         } else {
+            let w = width(style);
             let (a, b) = (centre((x0, y0)), centre((x1, y1)));
+            let (l, t, r, b) = (snap(a[0], w), snap(a[1], w), snap(b[0], w), snap(b[1], w));
             self.push(Op::Stroke {
-                points: vec![a, [b[0], a[1]], b, [a[0], b[1]]],
+                points: vec![[l, t], [r, t], [r, b], [l, b]],
                 closed: true,
-                width: width(style),
+                width: w,
                 color: colour(style.color()),
             });
         }
@@ -167,8 +204,11 @@ impl DrawingBackend for Canvas<'_> {
         path: I,
         style: &S,
     ) -> Result<()> {
-        let points: Vec<[f32; 2]> = path.into_iter().map(centre).collect();
+        let mut points: Vec<[f32; 2]> = path.into_iter().map(centre).collect();
         if style.color().alpha > 0.0 && points.len() >= 2 {
+            if points.len() == 2 {
+                points = segment(points[0], points[1], width(style));
+            }
             self.push(Op::Stroke {
                 points,
                 closed: false,
@@ -189,7 +229,7 @@ impl DrawingBackend for Canvas<'_> {
         if style.color().alpha > 0.0 {
             self.push(Op::Circle {
                 centre: centre(c),
-                radius: radius.max(1) as f32,
+                radius: radius.max(1) as f32 / K,
                 fill,
                 width: width(style),
                 color: colour(style.color()),
@@ -223,7 +263,9 @@ impl DrawingBackend for Canvas<'_> {
         if color.alpha <= 0.0 || text.is_empty() {
             return Ok(());
         }
-        let line = font().map_err(font_err)?.layout(text, style.size() as f32);
+        let line = font()
+            .map_err(font_err)?
+            .layout(text, style.size() as f32 / K);
         // Anchor offsets in the text's own (unrotated) frame, as plotters' backends do.
         let dx = match style.anchor().h_pos {
             HPos::Left => 0.0,
@@ -241,8 +283,8 @@ impl DrawingBackend for Canvas<'_> {
             text: text.to_string(),
             glyphs: line.glyphs,
             origin: [
-                pos.0 as f32 + a * dx + c * dy,
-                pos.1 as f32 + b * dx + d * dy,
+                pos.0 as f32 / K + a * dx + c * dy,
+                pos.1 as f32 / K + b * dx + d * dy,
             ],
             rot,
             scale: line.scale,
@@ -256,8 +298,13 @@ impl DrawingBackend for Canvas<'_> {
         text: &str,
         style: &TStyle,
     ) -> Result<(u32, u32)> {
-        let line = font().map_err(font_err)?.layout(text, style.size() as f32);
-        Ok((line.width.ceil() as u32, line.height.ceil() as u32))
+        let line = font()
+            .map_err(font_err)?
+            .layout(text, style.size() as f32 / K);
+        Ok((
+            (line.width * K).ceil() as u32,
+            (line.height * K).ceil() as u32,
+        ))
     }
 
     fn blit_bitmap(&mut self, pos: BackendCoord, size: (u32, u32), src: &[u8]) -> Result<()> {
@@ -268,10 +315,10 @@ impl DrawingBackend for Canvas<'_> {
             )));
         }
         self.push(Op::Image {
-            x: pos.0 as f32,
-            y: pos.1 as f32,
-            width: w as f32,
-            height: h as f32,
+            x: pos.0 as f32 / K,
+            y: pos.1 as f32 / K,
+            width: w as f32 / K,
+            height: h as f32 / K,
             image: Arc::new(Rgb {
                 width: w,
                 height: h,
@@ -286,9 +333,9 @@ impl DrawingBackend for Canvas<'_> {
 /// in the raster, pixelated in SVG, uninterpolated in PDF): plotters' bitmap element would
 /// resample it to the rectangle's pixels first.
 pub(super) struct PlacedImage {
-    /// The rectangle's top-left pixel (in the coordinates of the area it is drawn on).
+    /// The rectangle's top-left pixel (plotters' pixels of the area it is drawn on).
     pub at: BackendCoord,
-    /// The rectangle's size in pixels.
+    /// The rectangle's size in plotters' pixels.
     pub size: (u32, u32),
     pub image: Arc<Rgb>,
 }
@@ -310,10 +357,10 @@ impl<'a> Drawable<Canvas<'a>> for PlacedImage {
     ) -> Result<()> {
         if let Some((x, y)) = pos.next() {
             backend.push(Op::Image {
-                x: x as f32,
-                y: y as f32,
-                width: self.size.0 as f32,
-                height: self.size.1 as f32,
+                x: x as f32 / K,
+                y: y as f32 / K,
+                width: self.size.0 as f32 / K,
+                height: self.size.1 as f32 / K,
                 image: self.image.clone(),
             });
         }

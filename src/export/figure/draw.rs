@@ -9,7 +9,7 @@
 //! that of the line plots 560 × 400. The theorem figures keep a [`CAPTION_LINE`] band under the
 //! chart for the aliasing numbers.
 
-use super::canvas::{ensure_font, Area, Canvas, Chart, PlacedImage, FONT};
+use super::canvas::{ensure_font, Area, Canvas, Chart, PlacedImage, FONT, SUB};
 use super::drawing::Drawing;
 use super::{Figure, Rgb};
 use crate::export::ExportError;
@@ -67,9 +67,10 @@ pub(super) fn replica_colour(k: i64) -> RGBColor {
     }
 }
 
-/// Scaled lengths and styles.
+/// Scaled lengths and styles, in plotters' pixels: [`SUB`] per page pixel at scale 1.
 #[derive(Clone, Copy)]
 pub struct Look {
+    /// plotters' pixels per base-size pixel: the figure scale × [`SUB`].
     pub(super) s: u32,
 }
 
@@ -140,7 +141,7 @@ pub(super) fn render_drawing(
     let mut drawing = Drawing::new(bw * scale, bh * scale);
     {
         let root = Canvas::new(&mut drawing).into_drawing_area();
-        page(&root, figure, ctx, data, Look { s: scale })?;
+        page(&root, figure, ctx, data, Look { s: scale * SUB })?;
         root.present().map_err(|e| draw_err(kind, e))?;
     }
     Ok(drawing)

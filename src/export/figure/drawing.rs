@@ -98,7 +98,49 @@ pub(crate) enum Op {
     },
 }
 
+/// Rows per band of the parallel rasteriser.
+const BAND: u32 = 64;
+
 impl Op {
+    /// The rows `[top, bottom]` the shape can touch (a conservative bound: strokes widened by
+    /// their width, text by its line height and width).
+    fn rows(&self, font: &FigureFont) -> [f32; 2] {
+        let span = |points: &[[f32; 2]], pad: f32| {
+            let (lo, hi) = points
+                .iter()
+                .fold((f32::INFINITY, f32::NEG_INFINITY), |(lo, hi), p| {
+                    (lo.min(p[1]), hi.max(p[1]))
+                });
+            [lo - pad, hi + pad]
+        };
+        match self {
+            Op::Stroke { points, width, .. } => span(points, *width + 1.0),
+            Op::Fill { points, .. } => span(points, 1.0),
+            Op::Circle {
+                centre,
+                radius,
+                width,
+                ..
+            } => [
+                centre[1] - radius - width - 1.0,
+                centre[1] + radius + width + 1.0,
+            ],
+            Op::Text {
+                glyphs,
+                origin,
+                scale,
+                ..
+            } => {
+                // Any glyph lies within its advance and the font's line height of the origin,
+                // whatever the rotation.
+                let em = (font.font.ascent_unscaled() - font.font.descent_unscaled()).abs() * scale;
+                let reach = glyphs.last().map_or(0.0, |g| g.x.abs() + g.y.abs()) + 2.0 * em;
+                [origin[1] - reach, origin[1] + reach]
+            }
+            Op::Image { y, height, .. } => [*y - 1.0, *y + height + 1.0],
+        }
+    }
+
     fn translate(&mut self, dx: f32, dy: f32) {
         let shift = |p: &mut [f32; 2]| {
             p[0] += dx;
@@ -288,18 +330,65 @@ impl Drawing {
     }
 
     /// The drawing rasterised, antialiased, on white: 8-bit RGB, row 0 at the top.
+    ///
+    /// The page is drawn in bands of [`BAND`] rows, in parallel, each band drawing the
+    /// shapes that reach it with the page shifted up by a whole number of rows (so a band's
+    /// pixels are those of the whole page); the bands do not depend on the number of threads,
+    /// so neither do the bytes.
     pub(crate) fn raster(&self) -> Result<Rgb, ExportError> {
+        use rayon::prelude::*;
+        let font = font()?;
+        if self.width == 0 || self.height == 0 {
+            return Err(ExportError::Draw {
+                figure: "raster",
+                message: "the page has no pixels".into(),
+            });
+        }
+        // Each glyph outline once, shared by the bands.
+        let glyphs: BTreeMap<u16, tiny_skia::Path> = self
+            .glyphs_used()
+            .into_keys()
+            .filter_map(|id| Some((id, skia_path(&font.outline(id))?)))
+            .collect();
+        let boxes: Vec<[f32; 2]> = self.ops.iter().map(|op| op.rows(font)).collect();
+        let bands = self.height.div_ceil(BAND);
+        let parts: Vec<Result<Vec<u8>, ExportError>> = (0..bands)
+            .into_par_iter()
+            .map(|b| {
+                let y0 = b * BAND;
+                let rows = BAND.min(self.height - y0);
+                self.raster_band(y0, rows, &glyphs, &boxes)
+            })
+            .collect();
+        let mut data = Vec::with_capacity(self.width as usize * self.height as usize * 3);
+        for part in parts {
+            data.extend_from_slice(&part?);
+        }
+        Ok(Rgb {
+            width: self.width,
+            height: self.height,
+            data,
+        })
+    }
+
+    /// Rows `y0 .. y0 + rows` of the page as RGB.
+    fn raster_band(
+        &self,
+        y0: u32,
+        rows: u32,
+        glyphs: &BTreeMap<u16, tiny_skia::Path>,
+        boxes: &[[f32; 2]],
+    ) -> Result<Vec<u8>, ExportError> {
         use tiny_skia::{
             FillRule, LineCap, LineJoin, Paint, PathBuilder, Pixmap, Stroke, Transform,
         };
-        let font = font()?;
-        let fail = |what: &str| ExportError::Draw {
+        let mut pm = Pixmap::new(self.width, rows).ok_or_else(|| ExportError::Draw {
             figure: "raster",
-            message: what.to_string(),
-        };
-        let mut pm =
-            Pixmap::new(self.width, self.height).ok_or_else(|| fail("the page has no pixels"))?;
+            message: "the page has no pixels".into(),
+        })?;
         pm.fill(tiny_skia::Color::WHITE);
+        let shift = Transform::from_translate(0.0, -(y0 as f32));
+        let (top, bottom) = (y0 as f32, (y0 + rows) as f32);
         let paint = |c: Rgba| {
             let mut p = Paint::default();
             p.set_color(c.skia());
@@ -320,8 +409,10 @@ impl Drawing {
             }
             pb.finish()
         };
-        let mut glyph_paths: BTreeMap<u16, Option<tiny_skia::Path>> = BTreeMap::new();
-        for op in &self.ops {
+        for (op, &[lo, hi]) in self.ops.iter().zip(boxes) {
+            if hi < top || lo > bottom {
+                continue;
+            }
             match op {
                 Op::Stroke {
                     points,
@@ -336,18 +427,12 @@ impl Drawing {
                             line_join: LineJoin::Round,
                             ..Stroke::default()
                         };
-                        pm.stroke_path(&path, &paint(*color), &stroke, Transform::identity(), None);
+                        pm.stroke_path(&path, &paint(*color), &stroke, shift, None);
                     }
                 }
                 Op::Fill { points, color } => {
                     if let Some(path) = poly(points, true) {
-                        pm.fill_path(
-                            &path,
-                            &paint(*color),
-                            FillRule::Winding,
-                            Transform::identity(),
-                            None,
-                        );
+                        pm.fill_path(&path, &paint(*color), FillRule::Winding, shift, None);
                     }
                 }
                 Op::Circle {
@@ -359,30 +444,18 @@ impl Drawing {
                 } => {
                     if let Some(path) = PathBuilder::from_circle(centre[0], centre[1], *radius) {
                         if *fill {
-                            pm.fill_path(
-                                &path,
-                                &paint(*color),
-                                FillRule::Winding,
-                                Transform::identity(),
-                                None,
-                            );
+                            pm.fill_path(&path, &paint(*color), FillRule::Winding, shift, None);
                         } else {
                             let stroke = Stroke {
                                 width: *width,
                                 ..Stroke::default()
                             };
-                            pm.stroke_path(
-                                &path,
-                                &paint(*color),
-                                &stroke,
-                                Transform::identity(),
-                                None,
-                            );
+                            pm.stroke_path(&path, &paint(*color), &stroke, shift, None);
                         }
                     }
                 }
                 Op::Text {
-                    glyphs,
+                    glyphs: run,
                     origin,
                     rot,
                     scale,
@@ -390,17 +463,14 @@ impl Drawing {
                     ..
                 } => {
                     let p = paint(*color);
-                    for g in glyphs {
-                        let path = glyph_paths
-                            .entry(g.id)
-                            .or_insert_with(|| skia_path(&font.outline(g.id)));
-                        if let Some(path) = path {
+                    for g in run {
+                        if let Some(path) = glyphs.get(&g.id) {
                             let [a, b, c, d, e, f] = glyph_matrix(*origin, *rot, *scale, *g);
                             pm.fill_path(
                                 path,
                                 &p,
                                 FillRule::Winding,
-                                Transform::from_row(a, b, c, d, e, f),
+                                Transform::from_row(a, b, c, d, e, f - y0 as f32),
                                 None,
                             );
                         }
@@ -412,19 +482,15 @@ impl Drawing {
                     width,
                     height,
                     image,
-                } => blit_nearest(&mut pm, image, [*x, *y, *width, *height]),
+                } => blit_nearest(&mut pm, image, [*x, *y - y0 as f32, *width, *height]),
             }
         }
-        let mut data = Vec::with_capacity(self.width as usize * self.height as usize * 3);
+        let mut data = Vec::with_capacity(self.width as usize * rows as usize * 3);
         // Every pixel is opaque (the page is white), so premultiplied RGBA is plain RGB.
         for px in pm.data().chunks_exact(4) {
             data.extend_from_slice(&px[..3]);
         }
-        Ok(Rgb {
-            width: self.width,
-            height: self.height,
-            data,
-        })
+        Ok(data)
     }
 
     /// The drawing as an SVG document of `width` × `height` user units, with `title` and the
@@ -738,7 +804,7 @@ mod tests {
         assert_eq!(num(12.0), "12");
         assert_eq!(num(12.5), "12.5");
         assert_eq!(num(-0.001), "0");
-        assert_eq!(num(0.125), "0.13");
+        assert_eq!(num(0.126), "0.13");
         assert_eq!(fine(0.123456), "0.12346");
     }
 

@@ -4,6 +4,7 @@
 //! the square's border (0 and 1 are common coordinates: grids, Hammersley, lattices) are drawn
 //! whole; the unit square is outlined in a light line, the padded area framed.
 
+use super::canvas::SUB;
 use super::csv::curve;
 use super::draw::{axes, chart, draw_err, empty, present, Frame, GUIDE, INK, INTERVALS};
 use super::{context_metadata, Area, Figure};
@@ -16,11 +17,12 @@ pub(super) struct Pattern;
 
 const KIND: PanelKind = PanelKind::Pattern;
 
-/// The radius in pixels of the markers of `n` points on a plotting area `side` pixels wide at
-/// `scale`: about a fifth of the mean spacing, 1 to 4 × scale pixels.
-fn marker_radius(side: f64, n: usize, scale: u32) -> u32 {
+/// The radius of the markers of `n` points on a plotting area `side` wide, in plotters'
+/// pixels (`s` of them per base pixel): about a fifth of the mean spacing, from one page
+/// pixel to 4 base pixels.
+fn marker_radius(side: f64, n: usize, s: u32) -> u32 {
     (side / (n.max(1) as f64).sqrt() * 0.18)
-        .clamp(1.0, 4.0 * scale as f64)
+        .clamp(SUB as f64, 4.0 * s as f64)
         .round() as u32
 }
 
@@ -61,7 +63,7 @@ impl Figure for Pattern {
             (xr.end - xr.start).max(1) as f64
         };
         let radius = marker_radius(side, pts.len(), look.s);
-        let pad = (radius as f64 + 1.0) / side;
+        let pad = (radius as f64 + SUB as f64) / side;
         let mut ch = chart(body, -pad..1.0 + pad, -pad..1.0 + pad, look, KIND)?;
         axes(&mut ch, "x", "y", false, false, look, KIND)?;
         if let Some((cols, rows)) = elementary_grid(f.ctx.elementary_k, pts.len()) {
@@ -77,7 +79,7 @@ impl Figure for Pattern {
             ch.draw_series(verticals.chain(horizontals)).map_err(de)?;
         }
         // The unit square in a light line under the points, and a closed frame around the
-        // padded plotting area (its left and bottom sides are the axes).
+        // padded plotting area: the axes, and a top and a right side.
         ch.plotting_area()
             .draw(&Rectangle::new(
                 [(0.0, 0.0), (1.0, 1.0)],
@@ -89,12 +91,12 @@ impl Figure for Pattern {
                 .map(|p| Circle::new((p.x, p.y), radius, INK.filled())),
         )
         .map_err(de)?;
-        ch.plotting_area()
-            .draw(&Rectangle::new(
-                [(-pad, -pad), (1.0 + pad, 1.0 + pad)],
-                look.line(BLACK, 1),
-            ))
-            .map_err(de)?;
+        let (lo, hi) = (-pad, 1.0 + pad);
+        ch.draw_series([
+            PathElement::new(vec![(lo, hi), (hi, hi)], look.line(BLACK, 1)),
+            PathElement::new(vec![(hi, lo), (hi, hi)], look.line(BLACK, 1)),
+        ])
+        .map_err(de)?;
         Ok(())
     }
 

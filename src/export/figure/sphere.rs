@@ -34,11 +34,11 @@ fn view_label(name: &str, v: OrthoView) -> String {
     format!("{name}: from azimuth {a}°, elevation {e}°")
 }
 
-/// Radius in pixels of a point's disc on a sphere of radius `r` pixels with `n` points:
-/// an eighth of the mean spacing √(4π/n)·r, at least 1 and at most 4 × scale.
-fn disc_radius(r: f64, n: usize, scale: u32) -> u32 {
+/// Radius of a point's disc on a sphere of radius `r` (plotters' pixels) with `n` points:
+/// an eighth of the mean spacing √(4π/n)·r, from one page pixel to 4 base pixels.
+fn disc_radius(r: f64, n: usize, s: u32) -> u32 {
     (0.125 * r * (4.0 * std::f64::consts::PI / n.max(1) as f64).sqrt())
-        .clamp(1.0, 4.0 * scale as f64)
+        .clamp(super::canvas::SUB as f64, 4.0 * s as f64)
         .round() as u32
 }
 
