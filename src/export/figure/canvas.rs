@@ -117,6 +117,15 @@ fn rotation(t: FontTransform) -> [f32; 4] {
 
 type Result<T> = std::result::Result<T, DrawingErrorKind<CanvasError>>;
 
+/// A label as it should read: a number that is a negative zero ("-0.0", the default tick
+/// formatting of a tiny negative value) loses its sign.
+fn tidy(text: &str) -> std::borrow::Cow<'_, str> {
+    match text.strip_prefix('-').or_else(|| text.strip_prefix('−')) {
+        Some(rest) if rest.parse::<f64>().is_ok_and(|v| v == 0.0) => rest.to_string().into(),
+        _ => text.into(),
+    }
+}
+
 fn font_err(e: crate::export::ExportError) -> DrawingErrorKind<CanvasError> {
     DrawingErrorKind::DrawingError(CanvasError(e.to_string()))
 }
@@ -263,6 +272,7 @@ impl DrawingBackend for Canvas<'_> {
         if color.alpha <= 0.0 || text.is_empty() {
             return Ok(());
         }
+        let text = &*tidy(text);
         let line = font()
             .map_err(font_err)?
             .layout(text, style.size() as f32 / K);
@@ -384,5 +394,20 @@ pub(super) fn ensure_font() -> std::result::Result<(), crate::export::ExportErro
             figure: "font",
             message: "the built-in font could not be parsed".into(),
         })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::tidy;
+
+    #[test]
+    fn negative_zero_labels_lose_their_sign_and_nothing_else_changes() {
+        assert_eq!(tidy("-0.0"), "0.0");
+        assert_eq!(tidy("-0"), "0");
+        assert_eq!(tidy("−0.00"), "0.00");
+        assert_eq!(tidy("-0.5"), "-0.5");
+        assert_eq!(tidy("-x"), "-x");
+        assert_eq!(tidy("0.0"), "0.0");
     }
 }

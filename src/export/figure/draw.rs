@@ -279,6 +279,54 @@ pub(super) fn legend_box<'a, 'b: 'a>(
         .map_err(|e| draw_err(kind, e))
 }
 
+/// The corner of the plot whose legend-sized box (the outer 45 % of the width and 30 % of the
+/// height) holds the fewest of `pts` (the points of the curves and guides drawn), `prefer`
+/// first among equals, so that a legend does not cover the data it explains.
+pub(super) fn emptiest_corner(
+    pts: &[(f64, f64)],
+    x: &Range<f64>,
+    y: &Range<f64>,
+    prefer: SeriesLabelPosition,
+) -> SeriesLabelPosition {
+    use SeriesLabelPosition::{LowerLeft, LowerRight, UpperLeft, UpperRight};
+    let (w, h) = (x.end - x.start, y.end - y.start);
+    let inside = |corner: &SeriesLabelPosition| {
+        let (right, upper) = match corner {
+            UpperRight => (true, true),
+            UpperLeft => (false, true),
+            LowerRight => (true, false),
+            _ => (false, false),
+        };
+        let xs = if right {
+            (x.end - 0.45 * w)..=x.end
+        } else {
+            x.start..=(x.start + 0.45 * w)
+        };
+        let ys = if upper {
+            (y.end - 0.3 * h)..=y.end
+        } else {
+            y.start..=(y.start + 0.3 * h)
+        };
+        pts.iter()
+            .filter(|p| xs.contains(&p.0) && ys.contains(&p.1))
+            .count()
+    };
+    let mut order = vec![prefer];
+    for c in [UpperRight, UpperLeft, LowerRight, LowerLeft] {
+        if !order
+            .iter()
+            .any(|o| std::mem::discriminant(o) == std::mem::discriminant(&c))
+        {
+            order.push(c);
+        }
+    }
+    let best = order.iter().map(inside).min().unwrap_or(0);
+    order
+        .into_iter()
+        .find(|c| inside(c) == best)
+        .unwrap_or(UpperRight)
+}
+
 /// A legend entry's sample: a short line in `style`.
 pub(super) fn line_sample(
     style: ShapeStyle,
@@ -540,6 +588,34 @@ impl Frame<'_, '_> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_legend_goes_to_the_corner_the_curve_leaves_empty() {
+        use SeriesLabelPosition::*;
+        let (x, y) = (0.0..1.0, 0.0..1.0);
+        // A curve falling from the top left: the upper right is free.
+        let falling: Vec<(f64, f64)> = (0..=100)
+            .map(|i| (i as f64 / 100.0, 1.0 - i as f64 / 100.0))
+            .collect();
+        assert!(matches!(
+            emptiest_corner(&falling, &x, &y, UpperRight),
+            UpperRight
+        ));
+        // A curve rising to the top right: the preferred corner is taken, the upper left is free.
+        let rising: Vec<(f64, f64)> = (0..=100)
+            .map(|i| (i as f64 / 100.0, i as f64 / 100.0))
+            .collect();
+        assert!(matches!(
+            emptiest_corner(&rising, &x, &y, UpperRight),
+            UpperLeft
+        ));
+        // A curve along the bottom: the preference among the free upper corners stands.
+        let flat: Vec<(f64, f64)> = (0..=100).map(|i| (i as f64 / 100.0, 0.05)).collect();
+        assert!(matches!(
+            emptiest_corner(&flat, &x, &y, LowerRight),
+            UpperRight
+        ));
+    }
 
     #[test]
     fn padded_range_covers_data_and_guides() {

@@ -2,8 +2,8 @@
 
 use super::csv::curve;
 use super::draw::{
-    any_finite, axes, chart, draw_err, empty, finite, legend_box, line_sample, padded, present,
-    Frame, DATA, GUIDE,
+    any_finite, axes, chart, draw_err, emptiest_corner, empty, finite, legend_box, line_sample,
+    padded, present, Frame, DATA, GUIDE,
 };
 use super::{Area, Figure};
 use crate::export::ExportError;
@@ -66,6 +66,7 @@ impl Figure for Kernel {
             (x0 - 1.0)..(x0 + 1.0)
         };
         let y = padded(pts.iter().map(|p| p.1), &[0.0]);
+        let corner = emptiest_corner(&pts, &x, &y, SeriesLabelPosition::UpperRight);
         let mut ch = chart(body, x.clone(), y, look, KIND)?;
         axes(
             &mut ch,
@@ -86,7 +87,7 @@ impl Figure for Kernel {
             .map_err(de)?
             .label(filter_name(f.ctx))
             .legend(line_sample(line, look));
-        legend_box(&mut ch, SeriesLabelPosition::UpperRight, look, KIND)
+        legend_box(&mut ch, corner, look, KIND)
     }
 
     fn csv(&self, data: &ColumnData) -> Result<String, ExportError> {

@@ -2,8 +2,8 @@
 
 use super::csv::curve;
 use super::draw::{
-    any_finite, axes, chart, draw_err, empty, finite, legend_box, line_sample, padded, present,
-    Frame, DATA, GUIDE,
+    any_finite, axes, chart, draw_err, emptiest_corner, empty, finite, legend_box, line_sample,
+    padded, present, Frame, DATA, GUIDE,
 };
 use super::{Area, Figure};
 use crate::export::ExportError;
@@ -46,11 +46,20 @@ impl Figure for Raps {
         let pts = finite(&present(KIND, f.data.spectrum.as_ref())?.raps);
         let x_hi = pts.iter().map(|p| p.0).fold(0.0f64, f64::max).max(1.0);
         let y = padded(pts.iter().map(|p| p.1), &[0.0, 1.0]);
-        let mut ch = chart(body, 0.0..x_hi, y.start.max(0.0)..y.end, look, KIND)?;
+        let y = y.start.max(0.0)..y.end;
+        let mut guide_pts = pts.clone();
+        guide_pts.extend((0..=20).map(|i| (x_hi * i as f64 / 20.0, 1.0)));
+        let corner = emptiest_corner(
+            &guide_pts,
+            &(0.0..x_hi),
+            &y,
+            SeriesLabelPosition::LowerRight,
+        );
+        let mut ch = chart(body, 0.0..x_hi, y, look, KIND)?;
         axes(
             &mut ch,
             "|k| (cycles per unit)",
-            "RAPS  P",
+            "radially averaged power P",
             true,
             false,
             look,
@@ -66,7 +75,7 @@ impl Figure for Raps {
             .map_err(de)?
             .label("RAPS")
             .legend(line_sample(line, look));
-        legend_box(&mut ch, SeriesLabelPosition::LowerRight, look, KIND)
+        legend_box(&mut ch, corner, look, KIND)
     }
 
     fn csv(&self, data: &ColumnData) -> Result<String, ExportError> {

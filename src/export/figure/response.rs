@@ -3,8 +3,8 @@
 
 use super::csv::curve;
 use super::draw::{
-    axes, chart, draw_err, finite, legend_box, line_sample, padded, present, Frame, DATA, GUIDE,
-    NYQUIST,
+    axes, chart, draw_err, emptiest_corner, finite, legend_box, line_sample, padded, present,
+    Frame, DATA, GUIDE, NYQUIST,
 };
 use super::kernel::{check_curve, filter_name};
 use super::{Area, Figure};
@@ -55,6 +55,11 @@ impl Figure for Response {
         };
         let (one, zero) = if db { (0.0, DB_FLOOR) } else { (1.0, 0.0) };
         let y = padded(pts.iter().map(|p| p.1), &[one, zero]);
+        // The legend takes the corner the curve and the ideal low-pass leave free.
+        let mut drawn = pts.clone();
+        drawn.extend((0..=10).map(|i| (0.05 * i as f64, one)));
+        drawn.extend((0..=20).map(|i| (0.5 + (w_hi - 0.5) * i as f64 / 20.0, zero)));
+        let corner = emptiest_corner(&drawn, &(0.0..w_hi), &y, SeriesLabelPosition::UpperRight);
         let mut ch = chart(body, 0.0..w_hi, y.clone(), look, KIND)?;
         axes(
             &mut ch,
@@ -87,7 +92,7 @@ impl Figure for Response {
             .map_err(de)?
             .label(format!("{}, |H(ω)|", filter_name(f.ctx)))
             .legend(line_sample(line, look));
-        legend_box(&mut ch, SeriesLabelPosition::UpperRight, look, KIND)
+        legend_box(&mut ch, corner, look, KIND)
     }
 
     fn csv(&self, data: &ColumnData) -> Result<String, ExportError> {
