@@ -128,14 +128,21 @@ impl Op {
             Op::Text {
                 glyphs,
                 origin,
+                rot,
                 scale,
                 ..
             } => {
-                // Any glyph lies within its advance and the font's line height of the origin,
-                // whatever the rotation.
+                // Each glyph lies within a line height of its pen position, whatever the
+                // rotation.
                 let em = (font.font.ascent_unscaled() - font.font.descent_unscaled()).abs() * scale;
-                let reach = glyphs.last().map_or(0.0, |g| g.x.abs() + g.y.abs()) + 2.0 * em;
-                [origin[1] - reach, origin[1] + reach]
+                let (lo, hi) =
+                    glyphs
+                        .iter()
+                        .fold((f32::INFINITY, f32::NEG_INFINITY), |(lo, hi), g| {
+                            let y = origin[1] + rot[1] * g.x + rot[3] * g.y;
+                            (lo.min(y), hi.max(y))
+                        });
+                [lo - 1.5 * em, hi + 1.5 * em]
             }
             Op::Image { y, height, .. } => [*y - 1.0, *y + height + 1.0],
         }
@@ -307,12 +314,27 @@ impl Drawing {
         }
     }
 
-    /// Draws `other` over this drawing with its top-left corner at (dx, dy).
+    /// Whether `op` paints this whole page opaque white (a figure's background: the raster
+    /// starts white, and a placed figure lies on a white page already).
+    fn is_page_fill(&self, op: &Op) -> bool {
+        let (w, h) = (self.width as f32, self.height as f32);
+        matches!(op, Op::Fill { points, color }
+            if *color == Rgba::WHITE
+                && points.len() == 4
+                && points.iter().all(|p| (p[0] == 0.0 || p[0] == w) && (p[1] == 0.0 || p[1] == h))
+                && points.iter().any(|p| p[0] == w && p[1] == h))
+    }
+
+    /// Draws `other` over this drawing with its top-left corner at (dx, dy); its white
+    /// background is left out when this drawing starts with one (the page is white there).
     pub(crate) fn place(&mut self, other: Drawing, dx: f32, dy: f32) {
-        self.ops.extend(other.ops.into_iter().map(|mut op| {
-            op.translate(dx, dy);
-            op
-        }));
+        let skip = self.ops.first().is_some_and(|op| self.is_page_fill(op))
+            && other.ops.first().is_some_and(|op| other.is_page_fill(op));
+        self.ops
+            .extend(other.ops.into_iter().skip(usize::from(skip)).map(|mut op| {
+                op.translate(dx, dy);
+                op
+            }));
     }
 
     /// The glyphs the drawing's text uses, with a character each shows (for the PDF's
@@ -351,19 +373,14 @@ impl Drawing {
             .filter_map(|id| Some((id, skia_path(&font.outline(id))?)))
             .collect();
         let boxes: Vec<[f32; 2]> = self.ops.iter().map(|op| op.rows(font)).collect();
-        let bands = self.height.div_ceil(BAND);
-        let parts: Vec<Result<Vec<u8>, ExportError>> = (0..bands)
-            .into_par_iter()
-            .map(|b| {
-                let y0 = b * BAND;
-                let rows = BAND.min(self.height - y0);
-                self.raster_band(y0, rows, &glyphs, &boxes)
-            })
-            .collect();
-        let mut data = Vec::with_capacity(self.width as usize * self.height as usize * 3);
-        for part in parts {
-            data.extend_from_slice(&part?);
-        }
+        let row_bytes = self.width as usize * 3;
+        let mut data = vec![0u8; row_bytes * self.height as usize];
+        data.par_chunks_mut(row_bytes * BAND as usize)
+            .enumerate()
+            .try_for_each(|(b, out)| {
+                let y0 = b as u32 * BAND;
+                self.raster_band(y0, (out.len() / row_bytes) as u32, &glyphs, &boxes, out)
+            })?;
         Ok(Rgb {
             width: self.width,
             height: self.height,
@@ -371,22 +388,29 @@ impl Drawing {
         })
     }
 
-    /// Rows `y0 .. y0 + rows` of the page as RGB.
+    /// Rows `y0 .. y0 + rows` of the page as RGB into `out`.
     fn raster_band(
         &self,
         y0: u32,
         rows: u32,
         glyphs: &BTreeMap<u16, tiny_skia::Path>,
         boxes: &[[f32; 2]],
-    ) -> Result<Vec<u8>, ExportError> {
+        out: &mut [u8],
+    ) -> Result<(), ExportError> {
         use tiny_skia::{
             FillRule, LineCap, LineJoin, Paint, PathBuilder, Pixmap, Stroke, Transform,
         };
-        let mut pm = Pixmap::new(self.width, rows).ok_or_else(|| ExportError::Draw {
+        // White, opaque: written once.
+        let size =
+            tiny_skia::IntSize::from_wh(self.width, rows).ok_or_else(|| ExportError::Draw {
+                figure: "raster",
+                message: "the page has no pixels".into(),
+            })?;
+        let white = vec![255u8; self.width as usize * rows as usize * 4];
+        let mut pm = Pixmap::from_vec(white, size).ok_or_else(|| ExportError::Draw {
             figure: "raster",
             message: "the page has no pixels".into(),
         })?;
-        pm.fill(tiny_skia::Color::WHITE);
         let shift = Transform::from_translate(0.0, -(y0 as f32));
         let (top, bottom) = (y0 as f32, (y0 + rows) as f32);
         let paint = |c: Rgba| {
@@ -409,8 +433,8 @@ impl Drawing {
             }
             pb.finish()
         };
-        for (op, &[lo, hi]) in self.ops.iter().zip(boxes) {
-            if hi < top || lo > bottom {
+        for (i, (op, &[lo, hi])) in self.ops.iter().zip(boxes).enumerate() {
+            if hi < top || lo > bottom || (i == 0 && self.is_page_fill(op)) {
                 continue;
             }
             match op {
@@ -485,12 +509,11 @@ impl Drawing {
                 } => blit_nearest(&mut pm, image, [*x, *y - y0 as f32, *width, *height]),
             }
         }
-        let mut data = Vec::with_capacity(self.width as usize * rows as usize * 3);
         // Every pixel is opaque (the page is white), so premultiplied RGBA is plain RGB.
-        for px in pm.data().chunks_exact(4) {
-            data.extend_from_slice(&px[..3]);
+        for (dst, src) in out.chunks_exact_mut(3).zip(pm.data().chunks_exact(4)) {
+            dst.copy_from_slice(&src[..3]);
         }
-        Ok(data)
+        Ok(())
     }
 
     /// The drawing as an SVG document of `width` × `height` user units, with `title` and the
