@@ -3,9 +3,10 @@
 //!
 //! A figure is laid out once (by plotters, onto [`super::Canvas`], which records what it is
 //! asked to draw) into a [`Drawing`]: a list of strokes, fills, circles, text runs and images
-//! in page pixels, y down, in continuous coordinates (pixel `i` of a bitmap spans `[i, i + 1)`;
-//! the canvas maps plotters' integer pixel coordinates to pixel centres, so that a one-pixel
-//! axis line covers exactly one row of pixels in every picture). Text is kept as positioned
+//! in page pixels, y down, in continuous coordinates (pixel `i` of the raster spans
+//! `[i, i + 1)`; the canvas records plotters' coordinates at quarter-pixel precision and
+//! snaps axis-aligned lines to whole pixels, so that a one-pixel axis line covers exactly one
+//! row of pixels in every picture). Text is kept as positioned
 //! glyphs of the figures' one font (Ubuntu Light, from egui's fonts): the raster fills their
 //! outlines, the SVG draws the same outlines (defined once in `<defs>` and placed with
 //! `<use>`, so no viewer needs the font), the PDF shows them with the font embedded. So the

@@ -94,7 +94,7 @@ pub const SCALES: std::ops::RangeInclusive<u32> = 1..=4;
 pub const MAX_COMPOSITE_PIXELS: u64 = 64 * 1024 * 1024;
 
 /// One figure: everything that differs between the panels' figures. The frame around it
-/// (page, title band, scale, bitmap or SVG, metadata header, file names) is common.
+/// (page, title band, scale, the PNG/SVG/PDF writers, metadata header, file names) is common.
 pub trait Figure: Sync {
     /// The panel it draws.
     fn kind(&self) -> PanelKind;
