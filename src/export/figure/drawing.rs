@@ -15,7 +15,7 @@
 use super::Rgb;
 use crate::export::ExportError;
 use ab_glyph::{Font, FontRef, GlyphId, OutlineCurve, PxScale, ScaleFont};
-use std::collections::{BTreeMap, BTreeSet};
+use std::collections::BTreeMap;
 use std::fmt::Write as _;
 use std::sync::{Arc, OnceLock};
 
@@ -103,6 +103,17 @@ pub(crate) enum Op {
 const BAND: u32 = 64;
 
 impl Op {
+    /// The colour a shape is painted in (images carry their own).
+    pub(crate) fn color(&self) -> Option<Rgba> {
+        match self {
+            Op::Stroke { color, .. }
+            | Op::Fill { color, .. }
+            | Op::Circle { color, .. }
+            | Op::Text { color, .. } => Some(*color),
+            Op::Image { .. } => None,
+        }
+    }
+
     /// The rows `[top, bottom]` the shape can touch (a conservative bound: strokes widened by
     /// their width, text by its line height and width).
     fn rows(&self, font: &FigureFont) -> [f32; 2] {
@@ -539,14 +550,17 @@ impl Drawing {
             .collect::<Vec<_>>()
             .join("\n");
         let _ = writeln!(out, "<title>{}</title>\n<desc>{desc}</desc>", escape(title));
-        let used: BTreeSet<u16> = self.glyphs_used().into_keys().collect();
-        if !used.is_empty() {
+        // Each glyph's outline once; glyphs without one (spaces) are not placed.
+        let outlined: BTreeMap<u16, String> = self
+            .glyphs_used()
+            .into_keys()
+            .map(|id| (id, svg_path(&font.outline(id))))
+            .filter(|(_, d)| !d.is_empty())
+            .collect();
+        if !outlined.is_empty() {
             out.push_str("<defs>\n");
-            for id in used {
-                let d = svg_path(&font.outline(id));
-                if !d.is_empty() {
-                    let _ = writeln!(out, "<path id=\"g{id}\" d=\"{d}\"/>");
-                }
+            for (id, d) in &outlined {
+                let _ = writeln!(out, "<path id=\"g{id}\" d=\"{d}\"/>");
             }
             out.push_str("</defs>\n");
         }
@@ -622,10 +636,7 @@ impl Drawing {
                         color.hex(),
                         opacity("fill-opacity", color.alpha)
                     );
-                    for g in glyphs {
-                        if font.outline(g.id).is_empty() {
-                            continue;
-                        }
+                    for g in glyphs.iter().filter(|g| outlined.contains_key(&g.id)) {
                         let m = glyph_matrix(*origin, *rot, *scale, *g);
                         let _ = writeln!(
                             out,
@@ -806,6 +817,7 @@ pub(crate) fn escape(text: &str) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use std::collections::BTreeSet;
 
     fn ink(img: &Rgb) -> usize {
         img.data.chunks_exact(3).filter(|p| p[0] < 250).count()

@@ -132,14 +132,7 @@ pub(crate) fn write(drawing: &Drawing, meta: &[(String, String)]) -> Result<Vec<
     // Opacity states, one per alpha value used (fill and stroke alike).
     let mut alphas: BTreeMap<u8, Ref> = BTreeMap::new();
     let alpha_key = |a: f32| (a.clamp(0.0, 1.0) * 255.0).round() as u8;
-    for op in &drawing.ops {
-        let color = match op {
-            Op::Stroke { color, .. }
-            | Op::Fill { color, .. }
-            | Op::Circle { color, .. }
-            | Op::Text { color, .. } => *color,
-            Op::Image { .. } => continue,
-        };
+    for color in drawing.ops.iter().filter_map(Op::color) {
         let k = alpha_key(color.alpha);
         if k < 255 && !alphas.contains_key(&k) {
             alphas.insert(k, ids.next());
@@ -153,13 +146,7 @@ pub(crate) fn write(drawing: &Drawing, meta: &[(String, String)]) -> Result<Vec<
     c.set_line_join(LineJoinStyle::RoundJoin);
     let mut images: Vec<(Ref, String, &super::Rgb)> = Vec::new();
     for op in &drawing.ops {
-        let alpha = match op {
-            Op::Stroke { color, .. }
-            | Op::Fill { color, .. }
-            | Op::Circle { color, .. }
-            | Op::Text { color, .. } => alpha_key(color.alpha),
-            Op::Image { .. } => 255,
-        };
+        let alpha = op.color().map_or(255, |c| alpha_key(c.alpha));
         c.save_state();
         if alpha < 255 {
             c.set_parameters(Name(gs_name(alpha).as_bytes()));
