@@ -7,8 +7,11 @@ use super::ImageData;
 #[derive(Debug, Clone)]
 pub struct ResponseData {
     pub kernel: Vec<[f64; 2]>,
-    /// (ω, |H(ω)|/|H(0)|) for ω ∈ [0, omega_max].
+    /// (ω, |H(ω)|/|H(0)|) for ω ∈ [0, omega_max]; (ω, |H(ω)|) when `normalised` is false.
     pub magnitude: Vec<[f64; 2]>,
+    /// Whether `magnitude` was divided by |H(0)|: false for filters that block DC by design
+    /// (band-pass, high-pass, the derivative cosc), whose H(0) is zero.
+    pub normalised: bool,
     pub omega_max: f64,
     /// |H(ωx, ωy)| over [−omega_max, omega_max]².
     pub image: ImageData,

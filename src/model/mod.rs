@@ -34,7 +34,7 @@ pub use integration::{
 pub use panel::PanelKind;
 pub use points::{elementary_grid, PointsData, StatsData, STATS_PSA_MAX_N};
 pub use recon::{ConvergencePoint, ErrorData, ReconData, ReferenceData};
-pub use spectrum::SpectrumData;
+pub use spectrum::{shared_spectrum_range, SpectrumData, SHARED_DECADES};
 
 /// The 1D sampling-theorem view: plain data computed by [`crate::core::signal::theorem`].
 pub use crate::core::signal::theorem::TheoremView;

@@ -359,6 +359,7 @@ pub(super) fn response(ctx: &JobCtx) -> Output {
         })
         .collect();
     let curve = f.response_curve(RESPONSE_OMEGA_MAX, 300)?;
+    let normalised = curve.normalised_by.is_some();
     let magnitude = curve
         .samples
         .iter()
@@ -378,6 +379,7 @@ pub(super) fn response(ctx: &JobCtx) -> Output {
         NodeValue::Response(Arc::new(ResponseData {
             kernel,
             magnitude,
+            normalised,
             omega_max: RESPONSE_OMEGA_MAX,
             image,
             metrics: ResponseMetrics {

@@ -123,8 +123,9 @@ pub fn columns_data<R: AsRef<NodeResult>>(
 }
 
 /// Every column's context and data as `samplescope render` draws them: [`context`] and
-/// [`columns_data`], with one colour range for every periodogram (the union of the columns'
-/// automatic ranges), so that a comparison's periodograms share one colour bar.
+/// [`columns_data`], with one colour range for every periodogram
+/// ([`crate::model::shared_spectrum_range`] of the columns' automatic ranges), so that a
+/// comparison's periodograms share one colour bar.
 pub fn figure_columns<R: AsRef<NodeResult>>(
     scene: &Scene,
     results: &[HashMap<NodeKind, R>],
@@ -134,11 +135,11 @@ pub fn figure_columns<R: AsRef<NodeResult>>(
     for (c, data) in columns_data(scene, results).into_iter().enumerate() {
         columns.push((context(scene, c, scene_name)?, data));
     }
-    let shared = columns
+    let ranges: Vec<(f32, f32)> = columns
         .iter()
         .filter_map(|(_, d)| d.spectrum.as_ref().map(|s| s.auto_range))
-        .reduce(|(lo, hi), r| (lo.min(r.0), hi.max(r.1)));
-    if let Some(shared) = shared {
+        .collect();
+    if let Some(shared) = crate::model::shared_spectrum_range(&ranges) {
         for (ctx, _) in &mut columns {
             ctx.spectrum_range = Some(shared);
         }

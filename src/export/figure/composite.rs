@@ -5,7 +5,10 @@
 //! (the *panels*). A composite arranges the C blocks (C = 1 for a column composite) in a grid
 //! of `block_cols` × `block_rows` (reading order, the last row left-aligned), and the K panels
 //! of every block alike in a grid of `panel_cols` per row (row-major, as the GUI's column
-//! grid; each row centred in its block). Columns stand side by side as in the app.
+//! grid; each row centred in its block). Columns stand side by side as in the app. Under a
+//! block caption the panels' titles say only what they plot ("points", "periodogram"), not
+//! the column again; a block of sampling-theorem panels is captioned with the theorem's
+//! setup and error terms, once, instead of a column and three repeated caption lines.
 //!
 //! **The layout rule.** Every arrangement without an empty row or column of blocks (or
 //! panels) is measured at scale 1 — blocks as wide as their widest panel row, rows as high as
@@ -21,6 +24,11 @@
 //! does not depend on it. The figure is not padded to the frame: it has the chosen grid's
 //! own size.
 //!
+//! **The scene's own figure.** A figure of the whole scene rather than of a column — the
+//! integration study's MSE plot, with every column's curve — stands right of the blocks,
+//! centred on their height, in a comparison whose column 0 carries it; the layout rule counts
+//! it as panel area, so the blocks rearrange around it.
+//!
 //! **Locked scales.** When every column of a comparison draws its periodogram with the same
 //! colour range and map (the GUI's "Lock scales"; `samplescope render` always shares one
 //! range), the periodograms are drawn without their bars and one shared bar stands at the
@@ -34,7 +42,7 @@
 //! measured with the figures' own text layout (the one every picture of a figure draws).
 
 use super::canvas::ensure_font;
-use super::draw::render_drawing;
+use super::draw::{render_drawing, Role};
 use super::drawing::{font, Drawing, Op, Rgba};
 use super::spectrum::{SharedBar, SpectrumWithoutBar};
 use super::{
@@ -198,6 +206,9 @@ struct Shape<'a> {
     blocks: usize,
     /// Height of the band above the blocks (the title).
     head: u64,
+    /// A figure of the whole scene right of the blocks (the integration study's plot, which
+    /// has every column's curve), at its size.
+    side: Option<(u32, u32)>,
 }
 
 impl Shape<'_> {
@@ -232,13 +243,20 @@ impl Shape<'_> {
         (w, h)
     }
 
-    /// (width, height) of the figure of `layout`.
-    fn size(&self, layout: Layout) -> (u64, u64) {
+    /// (width, height) of the blocks of `layout` with the shared bar (no title, no side figure).
+    fn grid(&self, layout: Layout) -> (u64, u64) {
         let (bw, bh) = self.block(layout);
         (
             bw * layout.block_cols as u64 + self.bar(layout),
-            self.head + bh * layout.block_rows as u64,
+            bh * layout.block_rows as u64,
         )
+    }
+
+    /// (width, height) of the figure of `layout`.
+    fn size(&self, layout: Layout) -> (u64, u64) {
+        let (gw, gh) = self.grid(layout);
+        let (sw, sh) = self.side.map_or((0, 0), |(w, h)| (w as u64, h as u64));
+        (gw + sw, self.head + gh.max(sh))
     }
 
     /// Every layout with no empty row or column of blocks or panels.
@@ -280,7 +298,8 @@ impl Shape<'_> {
                 .panels(layout)
                 .iter()
                 .map(|&(w, h)| w as f64 * h as f64)
-                .sum::<f64>();
+                .sum::<f64>()
+            + self.side.map_or(0.0, |(w, h)| w as f64 * h as f64);
         let k = (f / w as f64).min(1.0 / h as f64);
         area * k * k / f
     }
@@ -419,16 +438,20 @@ struct Plan {
     bar: Option<((f32, f32), Colormap)>,
     bar_w: u64,
     block: (u64, u64),
+    /// The scene's own figure right of the blocks, and its top-left corner (scaled).
+    side: Option<(PanelKind, (u64, u64))>,
     size: (u64, u64),
 }
 
-/// Works out a composite of `blocks` blocks of `kinds`, with the shared bar `bar` and the
-/// title `title` (none for a column composite).
+/// Works out a composite of `blocks` blocks of `kinds`, with the shared bar `bar`, the
+/// title `title` (none for a column composite) and the scene's figure `side` right of the
+/// blocks.
 fn plan(
     kinds: &[PanelKind],
     blocks: usize,
     bar: Option<((f32, f32), Colormap)>,
     title: Option<&str>,
+    side: Option<PanelKind>,
     scale: u32,
     aspect: Aspect,
 ) -> Plan {
@@ -457,6 +480,7 @@ fn plan(
         shared,
         blocks: blocks.max(1),
         head: head1,
+        side: side.map(|k| figure(k).base_size()),
     };
     let layout = shape.choose(aspect);
     let s = scale as u64;
@@ -474,6 +498,12 @@ fn plan(
     let (w, h) = shape.size(layout);
     let (bw, bh) = shape.block(layout);
     let uses_bar = shape.uses_bar(layout);
+    let (gw, gh) = shape.grid(layout);
+    // The side figure is centred on the blocks' height, right of them.
+    let side = side.map(|k| {
+        let sh = figure(k).base_size().1 as u64;
+        (k, (gw * s, (head + gh.saturating_sub(sh) / 2) * s))
+    });
     Plan {
         kinds: kinds.to_vec(),
         layout,
@@ -488,6 +518,7 @@ fn plan(
         bar: bar.filter(|_| uses_bar),
         bar_w: shape.bar(layout) * s,
         block: (bw * s, bh * s),
+        side,
         size: (w * s, h * s),
     }
 }
@@ -544,7 +575,24 @@ impl Plan {
         let y0 = (self.head + (i / l.block_cols) as u64 * self.block.1) as u32;
         let cap_h = CAPTION_H * self.scale;
         let px = CAPTION_PX * self.scale as f64;
-        let caption = format!("{} · N = {} · seed {}", ctx.column_title, ctx.n, ctx.seed);
+        // A block of theorem panels is captioned with the theorem's setup and error terms
+        // (its panels then leave them out); any other block with its column.
+        let theorem = match &data.theorem {
+            Some(v) if self.kinds.iter().all(|k| k.is_theorem()) => Some(v),
+            _ => None,
+        };
+        let caption = match theorem {
+            Some(v) => super::theorem::block_caption(v),
+            None => format!("{} · N = {} · seed {}", ctx.column_title, ctx.n, ctx.seed),
+        };
+        // Theorem panels in a mixed block keep their own setup and caption line.
+        let role = |k: PanelKind| {
+            if k.is_theorem() && theorem.is_none() {
+                Role::Alone
+            } else {
+                Role::Panel
+            }
+        };
         text_line(d, &shorten(&caption, room(bw, px), px), (x0, y0), cap_h, px)?;
         let mut y = y0 + cap_h;
         let rows = panel_rows(&self.panels, l.panel_cols);
@@ -555,9 +603,9 @@ impl Plan {
                 check_scale(self.scale)?;
                 let panel = match (k, self.bar) {
                     (PanelKind::Spectrum, Some(_)) => {
-                        render_drawing(&SpectrumWithoutBar, ctx, data, self.scale)?
+                        render_drawing(&SpectrumWithoutBar, ctx, data, self.scale, role(k))?
                     }
-                    _ => render_drawing(figure(k), ctx, data, self.scale)?,
+                    _ => render_drawing(figure(k), ctx, data, self.scale, role(k))?,
                 };
                 let (pw, ph) = (panel.width, panel.height);
                 d.place(panel, x as f32, (y + (rh as u32 - ph) / 2) as f32);
@@ -587,6 +635,7 @@ impl Plan {
             ctx,
             &ColumnData::default(),
             self.scale,
+            Role::Panel,
         )?;
         let x = (l.block_cols as u64 * self.block.0) as u32;
         let y = (self.head + (CAPTION_H * self.scale) as u64 + row_y) as u32
@@ -618,8 +667,12 @@ impl Plan {
         for (i, (ctx, data)) in columns.iter().enumerate() {
             self.draw_block(&mut d, i, ctx, data)?;
         }
-        if let Some((ctx, _)) = columns.first() {
+        if let Some((ctx, data)) = columns.first() {
             self.draw_bar(&mut d, ctx)?;
+            if let Some((k, (x, y))) = self.side {
+                let fig = render_drawing(figure(k), ctx, data, self.scale, Role::Alone)?;
+                d.place(fig, x as f32, y as f32);
+            }
         }
         Ok(d)
     }
@@ -642,13 +695,23 @@ fn no_panels(figure: &'static str) -> ExportError {
 
 /// The layout [`column_png`] uses for figures `kinds` in a frame of `aspect`.
 pub fn column_layout(kinds: &[PanelKind], aspect: Aspect) -> Layout {
-    plan(kinds, 1, None, None, 1, aspect).layout
+    plan(kinds, 1, None, None, None, 1, aspect).layout
 }
 
 /// (width, height) in pixels of [`column_png`] with figures `kinds` at `scale` in a frame of
 /// `aspect`.
 pub fn column_size(kinds: &[PanelKind], scale: u32, aspect: Aspect) -> (u64, u64) {
-    plan(kinds, 1, None, None, scale, aspect).size
+    plan(kinds, 1, None, None, None, scale, aspect).size
+}
+
+/// The figure of the whole scene a comparison shows right of its columns: the integration
+/// study's plot (every column's curve on one plot, carried by column 0) when it was computed.
+fn side_figure(columns: &[(FigureContext, ColumnData)]) -> Option<PanelKind> {
+    let (_, data) = columns.first()?;
+    figure(PanelKind::Integration)
+        .check(data)
+        .is_ok()
+        .then_some(PanelKind::Integration)
 }
 
 /// The plan of the comparison of `columns`.
@@ -660,7 +723,15 @@ fn comparison_plan(
 ) -> Plan {
     let title = columns.first().map_or("", |(c, _)| c.scene_title.as_str());
     let bar = shared_range(kinds, columns);
-    plan(kinds, columns.len(), bar, Some(title), scale, aspect)
+    plan(
+        kinds,
+        columns.len(),
+        bar,
+        Some(title),
+        side_figure(columns),
+        scale,
+        aspect,
+    )
 }
 
 /// The layout [`comparison_png`] uses for `columns` with figures `kinds` in a frame of
@@ -708,7 +779,7 @@ fn column_drawing(
         return Err(no_panels("column"));
     }
     let one = [(ctx.clone(), data.clone())];
-    let p = plan(kinds, 1, None, None, scale, aspect);
+    let p = plan(kinds, 1, None, None, None, scale, aspect);
     Ok((p.draw(&one)?, p.layout))
 }
 
@@ -827,7 +898,11 @@ fn comparison_meta(
         .collect::<Vec<_>>()
         .join("; ");
     m.push(("columns".into(), cols));
-    m.push(("panels".into(), panels_list(kinds)));
+    let mut panels = panels_list(kinds);
+    if let Some(k) = side_figure(columns) {
+        panels.push_str(&format!("; beside the columns: {}", k.name()));
+    }
+    m.push(("panels".into(), panels));
     m.push(("aspect".into(), aspect.to_string()));
     m.push(("layout".into(), layout.to_string()));
     m.push(("scale".into(), scale.to_string()));
@@ -892,6 +967,30 @@ mod tests {
             shared: None,
             blocks,
             head: HEADING_H as u64,
+            side: None,
+        }
+    }
+
+    #[test]
+    fn a_side_figure_stands_right_of_the_blocks_and_counts_as_panel_area() {
+        // Four integration-error columns of one pattern each, and the MSE plot of all four.
+        let own = [PATTERN];
+        let s = Shape {
+            side: Some(LINE_PLOT),
+            ..shape(&own, 4)
+        };
+        let l = s.choose(Aspect::SLIDE);
+        let (gw, gh) = s.grid(l);
+        let (w, h) = s.size(l);
+        assert_eq!(w, gw + LINE_PLOT.0 as u64);
+        assert_eq!(h, HEADING_H as u64 + gh.max(LINE_PLOT.1 as u64));
+        // Without the side figure the four blocks stand in a row; beside it, 2 × 2 fills
+        // a 16:9 frame better (2·480 + 640 = 1600 wide, 2·590 + title high).
+        assert_eq!(l.block_cols, 2, "{l}");
+        assert_eq!(shape(&own, 4).choose(Aspect::SLIDE).block_cols, 4);
+        let best = s.coverage(l, Aspect::SLIDE);
+        for c in s.candidates() {
+            assert!(s.coverage(c, Aspect::SLIDE) <= best + 1e-12, "{c}");
         }
     }
 

@@ -33,6 +33,10 @@ impl Figure for Convergence {
         format!("RMSE vs samples per pixel, {}", ctx.column_title)
     }
 
+    fn panel_title(&self, _ctx: &FigureContext, _data: &ColumnData) -> String {
+        "RMSE vs samples per pixel".to_string()
+    }
+
     fn has_data(&self, data: &ColumnData) -> bool {
         data.convergence.is_some()
     }

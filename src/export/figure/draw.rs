@@ -31,8 +31,10 @@ pub(super) const X_LABEL: u32 = 50;
 pub(super) const BAR_PART: u32 = 110;
 /// Title, tick-label and axis-description font sizes.
 const TITLE_PX: f64 = 17.0;
-pub(super) const TICK_PX: f64 = 13.0;
-pub(super) const DESC_PX: f64 = 15.0;
+pub(super) const TICK_PX: f64 = 14.0;
+pub(super) const DESC_PX: f64 = 16.0;
+/// Tick labels asked of plotters per axis.
+const TICKS: usize = 7;
 /// Height of the caption line under the theorem figures' charts.
 pub(super) const CAPTION_LINE: u32 = 26;
 /// Sample markers are drawn up to this many samples (beyond, the stems alone: the markers
@@ -89,13 +91,23 @@ impl Look {
     }
 }
 
+/// Where a figure is drawn: as a file of its own, or as a panel of a composite, under a block
+/// caption that already names the column (pattern, N, seed) or, for the sampling theorem,
+/// its setup and error terms; a panel's title then says only what it plots.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) enum Role {
+    Alone,
+    Panel,
+}
+
 /// What a figure draws with: the whole page (images are placed in its pixels), the context
-/// and data, and the scale.
+/// and data, the scale, and whether it stands alone or is a composite's panel.
 pub struct Frame<'a, 'b> {
     pub(super) root: &'a Area<'b>,
     pub(super) ctx: &'a FigureContext,
     pub(super) data: &'a ColumnData,
     pub(super) look: Look,
+    pub(super) role: Role,
 }
 
 pub(super) fn draw_err(kind: PanelKind, e: impl std::fmt::Display) -> ExportError {
@@ -127,12 +139,13 @@ pub(super) fn empty(kind: PanelKind, what: &str) -> ExportError {
 }
 
 /// Lays `figure` out at base size × `scale` into its vector drawing (which the PNG, SVG and
-/// PDF writers read).
+/// PDF writers read), in its `role`.
 pub(super) fn render_drawing(
     figure: &dyn Figure,
     ctx: &FigureContext,
     data: &ColumnData,
     scale: u32,
+    role: Role,
 ) -> Result<Drawing, ExportError> {
     ensure_font()?;
     figure.check(data)?;
@@ -141,7 +154,7 @@ pub(super) fn render_drawing(
     let mut drawing = Drawing::new(bw * scale, bh * scale);
     {
         let root = Canvas::new(&mut drawing).into_drawing_area();
-        page(&root, figure, ctx, data, Look { s: scale * SUB })?;
+        page(&root, figure, ctx, data, Look { s: scale * SUB }, role)?;
         root.present().map_err(|e| draw_err(kind, e))?;
     }
     Ok(drawing)
@@ -154,16 +167,22 @@ fn page(
     ctx: &FigureContext,
     data: &ColumnData,
     look: Look,
+    role: Role,
 ) -> Result<(), ExportError> {
     let kind = figure.kind();
     root.fill(&WHITE).map_err(|e| draw_err(kind, e))?;
     let (title_area, body) = root.split_vertically(look.u(TITLE_H));
-    fitted_text(&title_area, &figure.title(ctx, data), TITLE_PX, look, kind)?;
+    let title = match role {
+        Role::Alone => figure.title(ctx, data),
+        Role::Panel => figure.panel_title(ctx, data),
+    };
+    fitted_text(&title_area, &title, TITLE_PX, look, kind)?;
     let mut frame = Frame {
         root,
         ctx,
         data,
         look,
+        role,
     };
     figure.draw(&mut frame, &body)
 }
@@ -196,7 +215,7 @@ pub(super) fn fitted_text(
 }
 
 /// Splits `body` into the plot and the [`CAPTION_LINE`] band under it, and writes `caption`
-/// there; returns the plot's area.
+/// there (nothing when it is empty: the band stays blank); returns the plot's area.
 pub(super) fn with_caption<'b>(
     body: &Area<'b>,
     caption: &str,
@@ -205,7 +224,9 @@ pub(super) fn with_caption<'b>(
 ) -> Result<Area<'b>, ExportError> {
     let (_, h) = body.dim_in_pixel();
     let (plot, band) = body.split_vertically(h - look.u(CAPTION_LINE));
-    fitted_text(&band, caption, DESC_PX, look, kind)?;
+    if !caption.is_empty() {
+        fitted_text(&band, caption, DESC_PX, look, kind)?;
+    }
     Ok(plot)
 }
 
@@ -229,6 +250,19 @@ fn int_label(v: &f64) -> String {
     format!("{v:.0}")
 }
 
+/// Whether every tick plotters puts on `range` (asking for `n` labels) is a whole number,
+/// so that the labels read "−2, −1, 0, 1, 2" instead of "−2.0, −1.0, 0.0, 1.0, 2.0"; ticks
+/// with a fractional step keep plotters' uniform decimals ("0.0, 0.2, … 1.0").
+pub(super) fn whole_ticks(range: Range<f64>, n: usize) -> bool {
+    use plotters::coord::ranged1d::Ranged;
+    use plotters::coord::types::RangedCoordf64;
+    let ticks = RangedCoordf64::from(range).key_points(n);
+    !ticks.is_empty()
+        && ticks
+            .iter()
+            .all(|t| t.is_finite() && (t - t.round()).abs() < 1e-9 && t.abs() < 1e15)
+}
+
 /// Axes with ticks, tick labels and descriptions; a light grid when `grid`.
 #[allow(clippy::too_many_arguments)]
 pub(super) fn axes(
@@ -240,6 +274,7 @@ pub(super) fn axes(
     look: Look,
     kind: PanelKind,
 ) -> Result<(), ExportError> {
+    let (xs, ys) = (chart.x_range(), chart.y_range());
     let mut mesh = chart.configure_mesh();
     mesh.x_desc(x_desc)
         .y_desc(y_desc)
@@ -247,13 +282,15 @@ pub(super) fn axes(
         .axis_desc_style(look.text(DESC_PX))
         .axis_style(look.line(BLACK, 1))
         .set_all_tick_mark_size(look.i(5))
-        .x_labels(7)
-        .y_labels(7)
+        .x_labels(TICKS)
+        .y_labels(TICKS)
         .max_light_lines(0)
         .bold_line_style(look.line(RGBColor(225, 225, 225), 1));
-    if integer_ticks {
-        mesh.x_label_formatter(&int_label)
-            .y_label_formatter(&int_label);
+    if integer_ticks || whole_ticks(xs, TICKS) {
+        mesh.x_label_formatter(&int_label);
+    }
+    if integer_ticks || whole_ticks(ys, TICKS) {
+        mesh.y_label_formatter(&int_label);
     }
     if !grid {
         mesh.disable_mesh();
@@ -638,6 +675,16 @@ mod tests {
         assert_eq!(tick_label(&0.02), "0.02");
         assert_eq!(tick_label(&0.5), "0.5");
         assert_eq!(tick_label(&200.0), "200");
+    }
+
+    #[test]
+    fn whole_ticks_drop_their_decimals_and_fractional_ones_keep_them() {
+        // A kernel of radius 2 padded by a quarter: ticks −2, −1, 0, 1, 2.
+        assert!(whole_ticks(-2.25..2.25, TICKS));
+        assert!(whole_ticks(-128.0..128.0, TICKS));
+        // The unit square and a magnitude axis: 0.0, 0.2, …
+        assert!(!whole_ticks(0.0..1.0, TICKS));
+        assert!(!whole_ticks(-0.05..1.08, TICKS));
     }
 
     #[test]

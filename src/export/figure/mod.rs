@@ -105,6 +105,13 @@ pub trait Figure: Sync {
     /// The title (also the `Title` metadata).
     fn title(&self, ctx: &FigureContext, data: &ColumnData) -> String;
 
+    /// The title as a panel of a composite, whose block caption already names the column (or
+    /// the theorem's setup): what the figure plots, without repeating the caption. By default
+    /// the title.
+    fn panel_title(&self, ctx: &FigureContext, data: &ColumnData) -> String {
+        self.title(ctx, data)
+    }
+
     /// Whether the data it draws was computed (it may still be empty: see [`Figure::check`]).
     fn has_data(&self, data: &ColumnData) -> bool;
 
@@ -243,7 +250,7 @@ fn panel_drawing(
     scale: u32,
 ) -> Result<drawing::Drawing, ExportError> {
     check_scale(scale)?;
-    draw::render_drawing(figure(kind), ctx, data, scale)
+    draw::render_drawing(figure(kind), ctx, data, scale, draw::Role::Alone)
 }
 
 /// A drawing in `format`, with `meta` as its metadata.

@@ -39,6 +39,10 @@ impl Figure for Pattern {
         ctx.column_caption()
     }
 
+    fn panel_title(&self, _ctx: &FigureContext, _data: &ColumnData) -> String {
+        "points".to_string()
+    }
+
     fn has_data(&self, data: &ColumnData) -> bool {
         data.points.is_some()
     }

@@ -28,6 +28,10 @@ impl Figure for Raps {
         format!("RAPS, {}", ctx.column_caption())
     }
 
+    fn panel_title(&self, _ctx: &FigureContext, _data: &ColumnData) -> String {
+        "radially averaged power spectrum".to_string()
+    }
+
     fn has_data(&self, data: &ColumnData) -> bool {
         data.spectrum.is_some()
     }

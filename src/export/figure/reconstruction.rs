@@ -55,6 +55,10 @@ impl Figure for Reconstruction {
         format!("reconstruction, {}", ctx.column_caption())
     }
 
+    fn panel_title(&self, _ctx: &FigureContext, _data: &ColumnData) -> String {
+        "reconstruction".to_string()
+    }
+
     fn has_data(&self, data: &ColumnData) -> bool {
         data.reconstruction.is_some()
     }

@@ -1,5 +1,6 @@
-//! The filter's frequency response |H(ω)|, linear or in dB, against the ideal low-pass and
-//! the Nyquist line.
+//! The filter's frequency response |H(ω)|, linear or in dB, with the Nyquist line; a
+//! low-pass filter's (normalised to H(0) = 1) against the ideal low-pass, a filter that blocks
+//! DC (band-pass, high-pass, derivative) raw.
 
 use super::csv::curve;
 use super::draw::{
@@ -54,34 +55,48 @@ impl Figure for Response {
             pts.iter().map(|p| p.0).fold(0.5, f64::max)
         };
         let (one, zero) = if db { (0.0, DB_FLOOR) } else { (1.0, 0.0) };
-        let y = padded(pts.iter().map(|p| p.1), &[one, zero]);
+        // The ideal low-pass is the reference of a low-pass filter (normalised to H(0) = 1);
+        // a filter that blocks DC (band-pass, high-pass, derivative) is drawn as it is, with
+        // its own scale, and compared with nothing it does not try to be.
+        let ideal = r.normalised;
+        let guides = [one, zero];
+        let y = padded(
+            pts.iter().map(|p| p.1),
+            if ideal { &guides[..] } else { &guides[1..] },
+        );
         // The legend takes the corner the curve and the ideal low-pass leave free.
         let mut drawn = pts.clone();
-        drawn.extend((0..=10).map(|i| (0.05 * i as f64, one)));
-        drawn.extend((0..=20).map(|i| (0.5 + (w_hi - 0.5) * i as f64 / 20.0, zero)));
+        if ideal {
+            drawn.extend((0..=10).map(|i| (0.05 * i as f64, one)));
+            drawn.extend((0..=20).map(|i| (0.5 + (w_hi - 0.5) * i as f64 / 20.0, zero)));
+        }
         let corner = emptiest_corner(&drawn, &(0.0..w_hi), &y, SeriesLabelPosition::UpperRight);
         let mut ch = chart(body, 0.0..w_hi, y.clone(), look, KIND)?;
+        let y_desc = match (db, ideal) {
+            (true, true) => "|H(ω)| / |H(0)|  dB",
+            (true, false) => "|H(ω)|  dB",
+            (false, true) => "|H(ω)| / |H(0)|",
+            (false, false) => "|H(ω)|",
+        };
         axes(
             &mut ch,
             "ω (cycles per sample)",
-            if db {
-                "|H(ω)|  dB"
-            } else {
-                "|H(ω)| / |H(0)|"
-            },
+            y_desc,
             true,
             false,
             look,
             KIND,
         )?;
-        let guide = look.line(GUIDE, 1);
-        ch.draw_series(LineSeries::new(
-            [(0.0, one), (0.5, one), (0.5, zero), (w_hi, zero)],
-            guide,
-        ))
-        .map_err(de)?
-        .label("ideal low-pass")
-        .legend(line_sample(guide, look));
+        if ideal {
+            let guide = look.line(GUIDE, 1);
+            ch.draw_series(LineSeries::new(
+                [(0.0, one), (0.5, one), (0.5, zero), (w_hi, zero)],
+                guide,
+            ))
+            .map_err(de)?
+            .label("ideal low-pass")
+            .legend(line_sample(guide, look));
+        }
         let red = look.line(NYQUIST, 1);
         ch.draw_series(LineSeries::new([(0.5, y.start), (0.5, y.end)], red))
             .map_err(de)?

@@ -60,6 +60,10 @@ impl Figure for Spectrum {
         format!("periodogram, {}", ctx.column_caption())
     }
 
+    fn panel_title(&self, _ctx: &FigureContext, _data: &ColumnData) -> String {
+        "periodogram".to_string()
+    }
+
     fn has_data(&self, data: &ColumnData) -> bool {
         data.spectrum.is_some()
     }
@@ -128,6 +132,10 @@ impl Figure for SpectrumWithoutBar {
 
     fn title(&self, ctx: &FigureContext, data: &ColumnData) -> String {
         Spectrum.title(ctx, data)
+    }
+
+    fn panel_title(&self, ctx: &FigureContext, data: &ColumnData) -> String {
+        Spectrum.panel_title(ctx, data)
     }
 
     fn has_data(&self, data: &ColumnData) -> bool {

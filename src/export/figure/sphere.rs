@@ -55,6 +55,10 @@ impl Figure for Sphere {
         format!("on the sphere, {}", ctx.column_caption())
     }
 
+    fn panel_title(&self, _ctx: &FigureContext, _data: &ColumnData) -> String {
+        "on the sphere".to_string()
+    }
+
     fn has_data(&self, data: &ColumnData) -> bool {
         data.points.is_some()
     }

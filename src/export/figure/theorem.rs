@@ -1,7 +1,7 @@
 //! What the four figures of the 1D sampling theorem share: the view they draw, their data
 //! check, titles, caption line and metadata.
 
-use super::draw::{empty, present};
+use super::draw::{empty, present, Frame, Role};
 use crate::core::params::Params;
 use crate::export::ExportError;
 use crate::model::{ColumnData, FigureContext, PanelKind, TheoremView};
@@ -37,7 +37,7 @@ pub(super) fn title(what: &str, data: &ColumnData) -> String {
 }
 
 /// "signal (params), f_s = …, filter": the theorem view's settings in words.
-fn setup(v: &TheoremView) -> String {
+pub(super) fn setup(v: &TheoremView) -> String {
     let s = &v.settings;
     let params = s
         .signal
@@ -70,6 +70,21 @@ pub fn theorem_caption(v: &TheoremView) -> String {
         100.0 * e.relative(e.post_aliasing),
         0.5 * v.settings.rate
     )
+}
+
+/// The caption line of a theorem figure drawn in `f`: [`theorem_caption`] when the figure
+/// stands alone; empty (the band left blank) as a composite's panel, whose block caption
+/// gives the setup and the error terms once for every theorem panel ([`block_caption`]).
+pub(super) fn caption(f: &Frame<'_, '_>, v: &TheoremView) -> String {
+    match f.role {
+        Role::Alone => theorem_caption(v),
+        Role::Panel => String::new(),
+    }
+}
+
+/// The caption of a composite's block of theorem panels: the setup, then the error terms.
+pub(super) fn block_caption(v: &TheoremView) -> String {
+    format!("{} · {}", setup(v), theorem_caption(v))
 }
 
 /// The scene, then the theorem view's settings and error terms, as metadata (the 2D

@@ -5,7 +5,7 @@ use super::draw::{
     any_finite, axes, chart, draw_err, finite, legend_box, line_sample, magnitude_range, max_of,
     nyquist_lines, stems, with_caption, Frame, GREY, RECON,
 };
-use super::theorem::{self, theorem_caption, view};
+use super::theorem::{self, view};
 use super::{Area, Figure};
 use crate::export::ExportError;
 use crate::model::{ColumnData, FigureContext, PanelKind};
@@ -13,6 +13,9 @@ use plotters::prelude::*;
 
 /// The theorem's reconstructed-spectrum figure.
 pub(super) struct TheoremReconstructed;
+
+/// What the figure plots (its title, before the theorem's setup).
+const WHAT: &str = "reconstructed spectrum |F_r(ω)| vs |F(ω)|";
 
 const KIND: PanelKind = PanelKind::TheoremReconstructed;
 
@@ -26,7 +29,11 @@ impl Figure for TheoremReconstructed {
     }
 
     fn title(&self, _ctx: &FigureContext, data: &ColumnData) -> String {
-        theorem::title("reconstructed spectrum |F_r(ω)| vs |F(ω)|", data)
+        theorem::title(WHAT, data)
+    }
+
+    fn panel_title(&self, _ctx: &FigureContext, _data: &ColumnData) -> String {
+        WHAT.to_string()
     }
 
     fn has_data(&self, data: &ColumnData) -> bool {
@@ -43,7 +50,7 @@ impl Figure for TheoremReconstructed {
         let de = |e| draw_err(KIND, e);
         let look = f.look;
         let v = view(KIND, f.data)?;
-        let plot = with_caption(body, &theorem_caption(v), look, KIND)?;
+        let plot = with_caption(body, &theorem::caption(f, v), look, KIND)?;
         let sp = &v.spectrum;
         let original_lines: &[[f64; 2]] = sp
             .lines

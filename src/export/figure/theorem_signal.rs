@@ -5,7 +5,7 @@ use super::draw::{
     any_finite, axes, chart, draw_err, finite, legend_box, line_sample, padded, stems,
     with_caption, Frame, DATA, GREY, GUIDE, RECON,
 };
-use super::theorem::{self, theorem_caption, view};
+use super::theorem::{self, view};
 use super::{Area, Figure};
 use crate::export::ExportError;
 use crate::model::{ColumnData, FigureContext, PanelKind};
@@ -13,6 +13,9 @@ use plotters::prelude::*;
 
 /// The theorem's signal figure.
 pub(super) struct TheoremSignal;
+
+/// What the figure plots (its title, before the theorem's setup).
+const WHAT: &str = "f(x), samples f(nT), reconstruction f_r(x)";
 
 const KIND: PanelKind = PanelKind::TheoremSignal;
 
@@ -26,7 +29,11 @@ impl Figure for TheoremSignal {
     }
 
     fn title(&self, _ctx: &FigureContext, data: &ColumnData) -> String {
-        theorem::title("f(x), samples f(nT), reconstruction f_r(x)", data)
+        theorem::title(WHAT, data)
+    }
+
+    fn panel_title(&self, _ctx: &FigureContext, _data: &ColumnData) -> String {
+        WHAT.to_string()
     }
 
     fn has_data(&self, data: &ColumnData) -> bool {
@@ -41,7 +48,7 @@ impl Figure for TheoremSignal {
         let de = |e| draw_err(KIND, e);
         let look = f.look;
         let v = view(KIND, f.data)?;
-        let plot = with_caption(body, &theorem_caption(v), look, KIND)?;
+        let plot = with_caption(body, &theorem::caption(f, v), look, KIND)?;
         let ext = v.settings.extent;
         let fx = finite(&v.signal);
         let fr = finite(&v.reconstruction);

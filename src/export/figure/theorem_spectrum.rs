@@ -7,7 +7,7 @@ use super::draw::{
     any_finite, axes, chart, draw_err, finite, magnitude_range, max_of, nyquist_lines,
     replica_colour, stems, with_caption, Frame, GREY, INK, MARGIN, NYQUIST, TICK_PX,
 };
-use super::theorem::{self, theorem_caption, view};
+use super::theorem::{self, view};
 use super::{Area, Figure};
 use crate::export::ExportError;
 use crate::model::{ColumnData, FigureContext, PanelKind};
@@ -16,6 +16,9 @@ use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 /// The theorem's spectrum figure.
 pub(super) struct TheoremSpectrum;
+
+/// What the figure plots (its title, before the theorem's setup).
+const WHAT: &str = "|F(ω)|, replicas F(ω − k·f_s), filter |G(ω)|";
 
 const KIND: PanelKind = PanelKind::TheoremSpectrum;
 
@@ -68,7 +71,11 @@ impl Figure for TheoremSpectrum {
     }
 
     fn title(&self, _ctx: &FigureContext, data: &ColumnData) -> String {
-        theorem::title("|F(ω)|, replicas F(ω − k·f_s), filter |G(ω)|", data)
+        theorem::title(WHAT, data)
+    }
+
+    fn panel_title(&self, _ctx: &FigureContext, _data: &ColumnData) -> String {
+        WHAT.to_string()
     }
 
     fn has_data(&self, data: &ColumnData) -> bool {
@@ -87,7 +94,7 @@ impl Figure for TheoremSpectrum {
         let de = |e| draw_err(KIND, e);
         let look = f.look;
         let v = view(KIND, f.data)?;
-        let plot = with_caption(body, &theorem_caption(v), look, KIND)?;
+        let plot = with_caption(body, &theorem::caption(f, v), look, KIND)?;
         let sp = &v.spectrum;
         let (w, _) = plot.dim_in_pixel();
         let (main, legend_area) = plot.split_horizontally(w - look.u(LEGEND_PART));

@@ -1,4 +1,4 @@
-//! The filter panel: the kernel h(x), its frequency response |H(ω)| against the ideal low-pass
+//! The filter panel: the kernel h(x), its frequency response |H(ω)| (a low-pass one against the ideal low-pass)
 //! with the Nyquist line, the 2D response image and the filter's metrics.
 
 use super::{Panel, PanelCx};
@@ -78,10 +78,18 @@ impl Panel for FilterPanel {
             .allow_zoom(false)
             .allow_scroll(false)
             .x_axis_label("ω (cycles/sample)")
-            .y_axis_label(if db { "|H| dB" } else { "|H|" })
+            .y_axis_label(match (db, d.normalised) {
+                (true, true) => "|H|/|H(0)| dB",
+                (true, false) => "|H| dB",
+                (false, true) => "|H|/|H(0)|",
+                (false, false) => "|H|",
+            })
             .show(ui, |p| {
-                for part in &ideal_parts {
-                    p.line(Line::new("ideal low-pass", part.clone()).color(Color32::GRAY));
+                // Only a low-pass filter (normalised to H(0) = 1) is compared with the ideal one.
+                if d.normalised {
+                    for part in &ideal_parts {
+                        p.line(Line::new("ideal low-pass", part.clone()).color(Color32::GRAY));
+                    }
                 }
                 p.line(Line::new("|H(ω)|", mag));
                 let [r, g, b] = crate::model::palette::NYQUIST;
