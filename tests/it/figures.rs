@@ -199,7 +199,7 @@ fn svg_has_axes_text_metadata_and_embedded_images() {
         "the periodogram and its colour bar"
     );
     assert!(spectrum.contains("xlink:href=\"data:image/png;base64,iVBORw0KGgo"));
-    assert!(spectrum.contains("log10 P"));
+    assert!(spectrum.contains("log₁₀ P   (white noise: 0)"));
     assert!(spectrum.contains("kx (cycles per unit)"));
 }
 

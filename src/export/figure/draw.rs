@@ -605,21 +605,36 @@ impl Frame<'_, '_> {
                 data,
             };
             self.paint(bar.plotting_area().get_pixel_range(), gradient, kind)?;
-            bar.configure_mesh()
-                .disable_mesh()
-                .disable_x_axis()
-                .x_labels(0)
-                .y_labels(6)
-                .y_desc(desc)
-                .label_style(look.text(TICK_PX))
-                .axis_desc_style(look.text(DESC_PX))
-                .axis_style(look.line(BLACK, 1))
-                .set_all_tick_mark_size(look.i(5))
-                .draw()
-                .map_err(|e| draw_err(kind, e))?;
+            bar_axis(&mut bar, desc, look, kind)?;
         }
         Ok(())
     }
+}
+
+/// The value axis of a colour bar (its chart's y axis): ticks, whole numbers without ".0",
+/// and the description `desc` (what the colour means, with its unit).
+pub(super) fn bar_axis(
+    bar: &mut Chart<'_, '_>,
+    desc: &str,
+    look: Look,
+    kind: PanelKind,
+) -> Result<(), ExportError> {
+    const BAR_TICKS: usize = 6;
+    let whole = whole_ticks(bar.y_range(), BAR_TICKS);
+    let mut mesh = bar.configure_mesh();
+    mesh.disable_mesh()
+        .disable_x_axis()
+        .x_labels(0)
+        .y_labels(BAR_TICKS)
+        .y_desc(desc)
+        .label_style(look.text(TICK_PX))
+        .axis_desc_style(look.text(DESC_PX))
+        .axis_style(look.line(BLACK, 1))
+        .set_all_tick_mark_size(look.i(5));
+    if whole {
+        mesh.y_label_formatter(&int_label);
+    }
+    mesh.draw().map_err(|e| draw_err(kind, e))
 }
 
 #[cfg(test)]

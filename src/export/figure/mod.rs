@@ -260,7 +260,7 @@ fn encode(
     meta: &[(String, String)],
 ) -> Result<Vec<u8>, ExportError> {
     match format {
-        FileFormat::Png => encode_png(&d.raster()?, meta),
+        FileFormat::Png => d.png(meta),
         FileFormat::Svg => Ok(d.svg(meta)?.into_bytes()),
         FileFormat::Pdf => pdf::write(d, meta),
     }

@@ -3,8 +3,7 @@
 //! beside one shared bar ([`SharedBar`]).
 
 use super::draw::{
-    draw_err, empty, ordered_range, present, Frame, ImageSpec, BAR_PART, DESC_PX, MARGIN, TICK_PX,
-    X_LABEL,
+    bar_axis, draw_err, empty, ordered_range, present, Frame, ImageSpec, BAR_PART, MARGIN, X_LABEL,
 };
 use super::{context_metadata, Area, Figure};
 use crate::export::ExportError;
@@ -17,8 +16,8 @@ pub(super) struct Spectrum;
 
 const KIND: PanelKind = PanelKind::Spectrum;
 
-/// The description of the colour bar.
-const BAR_DESC: &str = "log10 P";
+/// The description of the colour bar: the quantity, and where white noise (E[P] = 1) sits.
+const BAR_DESC: &str = "log₁₀ P   (white noise: 0)";
 
 /// Draws the periodogram image into `body`, with its colour bar when `bar`.
 fn draw_periodogram(f: &mut Frame<'_, '_>, body: &Area<'_>, bar: bool) -> Result<(), ExportError> {
@@ -214,18 +213,7 @@ impl Figure for SharedBar {
             )
         }))
         .map_err(de)?;
-        bar.configure_mesh()
-            .disable_mesh()
-            .disable_x_axis()
-            .x_labels(0)
-            .y_labels(6)
-            .y_desc(BAR_DESC)
-            .label_style(look.text(TICK_PX))
-            .axis_desc_style(look.text(DESC_PX))
-            .axis_style(look.line(BLACK, 1))
-            .set_all_tick_mark_size(look.i(5))
-            .draw()
-            .map_err(de)
+        bar_axis(&mut bar, BAR_DESC, look, KIND)
     }
 
     fn csv(&self, _data: &ColumnData) -> Result<String, ExportError> {
