@@ -50,13 +50,75 @@ impl Rgba {
     }
 }
 
-/// A glyph of a text run: its font glyph id and its pen position (on the baseline) in the
-/// run's own frame (x right, y down, the run's box starting at (0, 0)).
+/// A glyph of a text run: its font glyph id, its pen position (on the baseline) in the
+/// run's own frame (x right, y down, the run's box starting at (0, 0)) and its size relative
+/// to the run's (1, or [`SCRIPT_SIZE`] in a sub- or superscript).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) struct PlacedGlyph {
     pub id: u16,
     pub x: f32,
     pub y: f32,
+    pub size: f32,
+}
+
+/// Size of sub- and superscripts relative to the text.
+pub(crate) const SCRIPT_SIZE: f32 = 0.7;
+
+/// A piece of text to lay out: its characters and where they sit.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Script {
+    Normal,
+    Sub,
+    Super,
+}
+
+/// Splits `text` into runs of normal text, subscripts and superscripts. The figures write
+/// subscripts as `f_s`, `F_r`, `Φ_p1` and superscripts as `N^s`, `N^-1`: a `_` or `^` right
+/// after a one-letter symbol (a letter not preceded by a letter or digit), followed by one or
+/// two letters or digits (a superscript may start with a minus) and then nothing that
+/// continues a word or another marker, marks a script; the marker is not drawn. Anything
+/// else is literal (`per_pixel`, `my_scene_v2`, `a_b_c`, a lone `^`), so that the labels users
+/// write stay as they are.
+fn scripts(text: &str) -> Vec<(Script, String)> {
+    let chars: Vec<char> = text.chars().collect();
+    let mut out: Vec<(Script, String)> = Vec::new();
+    let mut push = |kind: Script, c: char| match out.last_mut() {
+        Some((k, s)) if *k == kind => s.push(c),
+        _ => out.push((kind, c.to_string())),
+    };
+    let mut i = 0;
+    while i < chars.len() {
+        let c = chars[i];
+        // The symbol: one letter, not the end of a word.
+        let after_symbol = i > 0
+            && chars[i - 1].is_alphabetic()
+            && !(i > 1 && (chars[i - 2].is_alphanumeric() || matches!(chars[i - 2], '_' | '^')));
+        if (c == '_' || c == '^') && after_symbol {
+            let mut j = i + 1;
+            if c == '^' && matches!(chars.get(j), Some('-' | '−')) {
+                j += 1;
+            }
+            let start = j;
+            while j < chars.len() && chars[j].is_alphanumeric() && j - start < 3 {
+                j += 1;
+            }
+            let len = j - start;
+            let ends = !chars
+                .get(j)
+                .is_some_and(|c| c.is_alphanumeric() || *c == '_' || *c == '^');
+            if (1..=2).contains(&len) && ends {
+                let kind = if c == '_' { Script::Sub } else { Script::Super };
+                for &d in &chars[i + 1..j] {
+                    push(kind, if d == '-' { '−' } else { d });
+                }
+                i = j;
+                continue;
+            }
+        }
+        push(Script::Normal, c);
+        i += 1;
+    }
+    out
 }
 
 /// One shape of a drawing. Lengths are page pixels.
@@ -350,18 +412,26 @@ impl FigureFont {
         let mut x = 0.0f32;
         let mut prev: Option<GlyphId> = None;
         let mut glyphs = Vec::with_capacity(text.len());
-        for c in text.chars() {
-            let id = sf.glyph_id(c);
-            if let Some(p) = prev {
-                x += sf.kern(p, id);
+        for (kind, run) in scripts(text) {
+            let (size, y) = match kind {
+                Script::Normal => (1.0, ascent),
+                Script::Sub => (SCRIPT_SIZE, ascent + 0.18 * px),
+                Script::Super => (SCRIPT_SIZE, ascent - 0.36 * px),
+            };
+            for c in run.chars() {
+                let id = sf.glyph_id(c);
+                if let Some(p) = prev {
+                    x += sf.kern(p, id) * size;
+                }
+                glyphs.push(PlacedGlyph {
+                    id: id.0,
+                    x,
+                    y,
+                    size,
+                });
+                x += sf.h_advance(id) * size;
+                prev = Some(id);
             }
-            glyphs.push(PlacedGlyph {
-                id: id.0,
-                x,
-                y: ascent,
-            });
-            x += sf.h_advance(id);
-            prev = Some(id);
         }
         Line {
             glyphs,
@@ -430,6 +500,7 @@ pub(crate) fn glyph_matrix(
     g: PlacedGlyph,
 ) -> [f32; 6] {
     let [a, b, c, d] = rot;
+    let scale = scale * g.size;
     [
         a * scale,
         b * scale,
@@ -1107,6 +1178,58 @@ mod tests {
         let img = d.raster().unwrap();
         let whole = crate::export::encode::png_rgb(img.width, img.height, &img.data, &meta);
         assert_eq!(d.png(&meta).unwrap(), whole.unwrap());
+    }
+
+    #[test]
+    fn scripts_are_marked_after_a_letter_and_one_or_two_characters_long() {
+        use Script::*;
+        let s = |t: &str| scripts(t);
+        assert_eq!(
+            s("f_s/2"),
+            vec![
+                (Normal, "f".into()),
+                (Sub, "s".into()),
+                (Normal, "/2".into())
+            ]
+        );
+        assert_eq!(
+            s("Φ_p1(i)"),
+            vec![
+                (Normal, "Φ".into()),
+                (Sub, "p1".into()),
+                (Normal, "(i)".into())
+            ]
+        );
+        assert_eq!(s("N^-1"), vec![(Normal, "N".into()), (Super, "−1".into())]);
+        // Words, repeated markers and markers after a non-letter stay literal.
+        for literal in [
+            "per_pixel",
+            "my_scene_v2",
+            "log10_power",
+            "a_b_c",
+            "x ^ 2",
+            "2_3",
+            "_s",
+        ] {
+            assert_eq!(s(literal), vec![(Normal, literal.into())], "{literal}");
+        }
+    }
+
+    #[test]
+    fn scripts_are_smaller_and_off_the_baseline_and_the_marker_is_not_drawn() {
+        let font = font().unwrap();
+        let plain = font.layout("fs", 20.0);
+        let sub = font.layout("f_s", 20.0);
+        let sup = font.layout("f^s", 20.0);
+        assert_eq!(sub.glyphs.len(), 2);
+        assert_eq!(sub.glyphs[0], plain.glyphs[0]);
+        let (s, p) = (sub.glyphs[1], plain.glyphs[1]);
+        assert_eq!((s.id, s.size), (p.id, SCRIPT_SIZE));
+        assert!(
+            s.y > p.y && sup.glyphs[1].y < p.y,
+            "below and above the baseline"
+        );
+        assert!(sub.width < plain.width);
     }
 
     #[test]
