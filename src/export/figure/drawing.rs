@@ -74,7 +74,8 @@ enum Script {
 
 /// Splits `text` into runs of normal text, subscripts and superscripts. The figures write
 /// subscripts as `f_s`, `F_r`, `Φ_p1` and superscripts as `N^s`, `N^-1`: a `_` or `^` right
-/// after a one-letter symbol (a letter not preceded by a letter or digit), followed by one or
+/// after a one-letter symbol (a letter not preceded by a letter or digit; for `^` also a
+/// number: `10^-3`), followed by one or
 /// two letters or digits (a superscript may start with a minus) and then nothing that
 /// continues a word or another marker, marks a script; the marker is not drawn. Anything
 /// else is literal (`per_pixel`, `my_scene_v2`, `a_b_c`, a lone `^`), so that the labels users
@@ -93,7 +94,15 @@ fn scripts(text: &str) -> Vec<(Script, String)> {
         let after_symbol = i > 0
             && chars[i - 1].is_alphabetic()
             && !(i > 1 && (chars[i - 2].is_alphanumeric() || matches!(chars[i - 2], '_' | '^')));
-        if (c == '_' || c == '^') && after_symbol {
+        // A power of a number: digits not ending a word (10^-3).
+        let after_number = c == '^' && i > 0 && chars[i - 1].is_ascii_digit() && {
+            let mut k = i - 1;
+            while k > 0 && chars[k - 1].is_ascii_digit() {
+                k -= 1;
+            }
+            k == 0 || !(chars[k - 1].is_alphanumeric() || matches!(chars[k - 1], '_' | '^' | '.'))
+        };
+        if (c == '_' || c == '^') && (after_symbol || after_number) {
             let mut j = i + 1;
             if c == '^' && matches!(chars.get(j), Some('-' | '−')) {
                 j += 1;
@@ -1201,6 +1210,10 @@ mod tests {
             ]
         );
         assert_eq!(s("N^-1"), vec![(Normal, "N".into()), (Super, "−1".into())]);
+        assert_eq!(
+            s("10^-3"),
+            vec![(Normal, "10".into()), (Super, "−3".into())]
+        );
         // Words, repeated markers and markers after a non-letter stay literal.
         for literal in [
             "per_pixel",
@@ -1209,6 +1222,7 @@ mod tests {
             "a_b_c",
             "x ^ 2",
             "2_3",
+            "x10^2",
             "_s",
         ] {
             assert_eq!(s(literal), vec![(Normal, literal.into())], "{literal}");

@@ -38,11 +38,11 @@ fn decades(lo: f64, hi: f64) -> Vec<f64> {
     (k0..=k1).step_by(step).map(|k| 10f64.powi(k)).collect()
 }
 
-/// An MSE tick: 1e-3 for a power of ten, else 2e-3.
+/// An MSE tick: 10⁻³ (written `10^-3`, drawn as a power) for a power of ten, else 2e-3.
 fn mse_label(v: &f64) -> String {
     let k = v.log10().round();
     if (v / 10f64.powf(k) - 1.0).abs() < 1e-9 {
-        format!("1e{k}")
+        format!("10^{k}")
     } else {
         format!("{v:.0e}")
     }

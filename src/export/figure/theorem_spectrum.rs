@@ -32,7 +32,8 @@ pub(super) enum Mark {
 }
 
 /// The legend as a column of entries (a line or dot sample, then the label) from the top of
-/// `area`, level with the plot.
+/// `area`, level with the plot; the labels at the tick size, or smaller where the longest
+/// would not fit the column's width.
 pub(super) fn legend_column(
     area: &Area<'_>,
     entries: &[(String, Mark)],
@@ -41,8 +42,23 @@ pub(super) fn legend_column(
 ) -> Result<(), ExportError> {
     let de = |e| draw_err(kind, e);
     let look = f.look;
-    let style = look.text(TICK_PX).pos(Pos::new(HPos::Left, VPos::Center));
     let x0 = look.i(8);
+    // The labels at the tick size, or smaller until the longest fits the column.
+    let (w, _) = area.dim_in_pixel();
+    let room = w.saturating_sub(look.u(8 + 32 + 4));
+    let mut px = TICK_PX;
+    while px > 9.0 {
+        let widest = entries
+            .iter()
+            .map(|(label, _)| area.estimate_text_size(label, &look.text(px)).map(|s| s.0))
+            .try_fold(0, |a, w| w.map(|w| a.max(w)))
+            .map_err(de)?;
+        if widest <= room {
+            break;
+        }
+        px -= 0.5;
+    }
+    let style = look.text(px).pos(Pos::new(HPos::Left, VPos::Center));
     let step = look.i(24);
     for (i, (label, mark)) in entries.iter().enumerate() {
         let y = look.i(MARGIN + 12) + step * i as i32;
