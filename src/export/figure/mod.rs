@@ -25,6 +25,12 @@
 //! - **Text.** One font, Ubuntu Light (the font egui ships), from bytes: the same glyphs on
 //!   every machine, no system font lookup. The PNG fills the glyph outlines, the SVG carries
 //!   the same outlines (no viewer needs the font), the PDF embeds the font (searchable text).
+//!   `f_s`, `F_r`, `Φ_p1`, `N^s`, `10^-3` are laid out as sub- and superscripts (smaller glyphs
+//!   off the baseline; the rule in `drawing.rs` leaves words like `per_pixel` literal).
+//! - **PNG.** The drawing is rasterised in bands of 64 rows on worker threads while the
+//!   calling thread encodes the finished bands in order (Sub filter, fdeflate); markers drawn
+//!   many times are composited from one antialiased coverage stamp per radius, colour and
+//!   quarter-pixel phase.
 //! - **Metadata.** PNGs carry tEXt chunks (iTXt for values that are not Latin-1), SVGs a
 //!   `<title>` and `<desc>`, PDFs their document information (Title, Subject): the figure's
 //!   title, scene, pattern and its parameters, N, seed, signal, filter, scale and
