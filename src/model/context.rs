@@ -44,6 +44,9 @@ pub struct FigureContext {
     /// figure with this k (the column's `elementary_k`; nothing is drawn when N is not a
     /// power of two; k above m is taken as m).
     pub elementary_k: Option<u32>,
+    /// Draw the pattern's strata, (columns, rows), under its points (the column's `strata`,
+    /// or the GUI's overlay).
+    pub strata: Option<(usize, usize)>,
 }
 
 impl FigureContext {

@@ -72,6 +72,11 @@ pub fn context(
         spectrum_colormap: Colormap::Viridis,
         response_db: false,
         elementary_k: col.elementary_k,
+        strata: if col.strata && col.points.is_none() {
+            col.pattern.strata(scene.n)
+        } else {
+            None
+        },
     })
 }
 

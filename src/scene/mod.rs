@@ -43,6 +43,10 @@ pub struct Column {
     /// whatever the shared overlay setting; lets a scene show several interval shapes side by
     /// side. At most [`MAX_ELEMENTARY_K`].
     pub elementary_k: Option<u32>,
+    /// Draw this column's strata (the grid its pattern stratifies: jitter's cells, N-rooks'
+    /// and Latin hypercubes' N rows and columns) under its points in the pattern figure; only
+    /// for stratified patterns (see `Pattern::strata`).
+    pub strata: bool,
     /// How supersampling gives the pixels their samples (only with `recon.mode: Supersample`).
     pub pixels: PixelSampling,
 }
@@ -90,6 +94,7 @@ impl Default for Column {
             label: String::new(),
             points: None,
             elementary_k: None,
+            strata: false,
             pixels: PixelSampling::PerPixel,
         }
     }
@@ -734,6 +739,22 @@ impl Scene {
                 c.pattern
                     .check_params()
                     .map_err(|e| param(&format!("columns[{i}].pattern"), e))?;
+            }
+            if c.strata && (c.points.is_some() || c.pattern.strata(self.n).is_none()) {
+                return Err(invalid(
+                    &format!("columns[{i}].strata"),
+                    "true".into(),
+                    &format!(
+                        "false: {} has no strata for N = {} (stratified patterns: grid, jitter, \
+                         multijitter, cmj with a column count dividing N; nrooks; lhs)",
+                        if c.points.is_some() {
+                            "imported points"
+                        } else {
+                            c.pattern.name()
+                        },
+                        self.n
+                    ),
+                ));
             }
             if let Some(k) = c.elementary_k {
                 let field = format!("columns[{i}].elementary_k");

@@ -478,6 +478,7 @@ impl SamplescopeApp {
             colormap: self.view.colormap,
             response_db: self.view.response_db,
             elementary_k: self.view.elementary_k,
+            strata: self.view.show_strata,
         }
     }
 

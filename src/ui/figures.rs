@@ -210,6 +210,8 @@ pub struct Snapshot {
     /// The shared elementary-interval overlay of the pattern panels (a column's own
     /// `elementary_k` takes precedence, as on screen).
     pub elementary_k: Option<u32>,
+    /// The strata overlay of the pattern panels (a column's own `strata` draws them anyway).
+    pub strata: bool,
 }
 
 impl Snapshot {
@@ -220,6 +222,12 @@ impl Snapshot {
         ctx.spectrum_colormap = self.colormap;
         ctx.response_db = self.response_db;
         ctx.elementary_k = ctx.elementary_k.or(self.elementary_k);
+        if self.strata {
+            let col = &self.scene.columns[column];
+            if col.points.is_none() {
+                ctx.strata = ctx.strata.or(col.pattern.strata(self.scene.n));
+            }
+        }
         Ok(ctx)
     }
 
@@ -460,6 +468,7 @@ mod tests {
             colormap: Colormap::Viridis,
             response_db: false,
             elementary_k: None,
+            strata: false,
         };
         let png = Request {
             target: Target::Panel {
@@ -513,6 +522,7 @@ mod tests {
             colormap: Colormap::Viridis,
             response_db: false,
             elementary_k: Some(1),
+            strata: false,
         };
         assert_eq!(snapshot.context(0).unwrap().elementary_k, Some(1));
         assert_eq!(snapshot.context(1).unwrap().elementary_k, Some(3));
@@ -540,6 +550,7 @@ mod tests {
             colormap: Colormap::Viridis,
             response_db: false,
             elementary_k: None,
+            strata: false,
         };
         let dir =
             std::env::temp_dir().join(format!("samplescope-gui-theorem-{}", std::process::id()));

@@ -1029,6 +1029,47 @@ fn pattern_draws_the_elementary_interval_grid_when_the_column_asks() {
     assert!(!blue_near(&three, x_half, y_10));
 }
 
+/// Whether some pixel within ±2 of (x, y) of a 480-wide figure is the strata's light grey.
+fn grey_near(px: &[u8], x: usize, y: usize) -> bool {
+    (y - 2..=y + 2).any(|yy| {
+        (x - 2..=x + 2).any(|xx| {
+            let i = (yy * 480 + xx) * 3;
+            let (r, g, b) = (px[i] as i32, px[i + 1] as i32, px[i + 2] as i32);
+            (r - g).abs() < 6 && (g - b).abs() < 6 && (150..235).contains(&r)
+        })
+    })
+}
+
+#[test]
+fn pattern_draws_the_strata_when_the_column_asks() {
+    // x = 0.5, y = 0.1 lies on the middle vertical of a 2 × 2 grid, between the points.
+    let (x_half, y_10) = (70 + 200, 50 + 360);
+    let (mut ctx, data) = four_points(None);
+    let (_, plain, _) = decode(&panel_png(PanelKind::Pattern, &ctx, &data, 1).unwrap());
+    assert!(!grey_near(&plain, x_half, y_10));
+    ctx.strata = Some((2, 2));
+    let (_, grid, text) = decode(&panel_png(PanelKind::Pattern, &ctx, &data, 1).unwrap());
+    assert!(grey_near(&grid, x_half, y_10));
+    assert_eq!(meta(&text, "strata"), "2×2 cells");
+}
+
+#[test]
+fn the_nrooks_scene_draws_n_by_n_strata_and_strata_need_a_stratified_pattern() {
+    let scene = Scene::load(std::path::Path::new("assets/scenes/nrooks-and-lhs.ron")).unwrap();
+    for c in 0..scene.columns.len() {
+        let ctx = scene_figure::context(&scene, c, "nrooks").unwrap();
+        assert_eq!(ctx.strata, Some((10, 10)), "column {c}");
+    }
+    let e = Scene::from_ron(
+        r#"(columns: [(pattern: (kind: "random"), seed: 1, strata: true)], n: 16)"#,
+        "strata.ron",
+    )
+    .unwrap_err()
+    .to_string();
+    assert!(e.contains("columns[0].strata"), "{e}");
+    assert!(e.contains("random has no strata"), "{e}");
+}
+
 #[test]
 fn the_net_scene_columns_carry_their_elementary_k_into_the_figures() {
     let scene = Scene::load(std::path::Path::new(

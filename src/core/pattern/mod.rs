@@ -574,6 +574,24 @@ pub fn divisor_near_sqrt(n: usize) -> usize {
 }
 
 /// Resolves a `cols` parameter (0 = auto) into `(cols, rows)` with `cols·rows = n`.
+impl Pattern {
+    /// The grid of strata the pattern puts one point (jitter, multi-jitter: one per cell) or
+    /// one point per row and column (N-rooks, Latin hypercube: an N × N grid) into, as
+    /// (columns, rows), for n points; `None` for patterns that are not stratified on a grid
+    /// (or whose grid does not divide n).
+    pub fn strata(&self, n: usize) -> Option<(usize, usize)> {
+        let cols = match self {
+            Pattern::Jitter(j) => j.cols,
+            Pattern::Grid(g) => g.cols,
+            Pattern::MultiJitter(m) => m.cols,
+            Pattern::CorrelatedMultiJitter(m) => m.cols,
+            Pattern::NRooks(_) | Pattern::Lhs(_) => return (n > 0).then_some((n, n)),
+            _ => return None,
+        };
+        resolve_cols(self.name(), cols, n).ok()
+    }
+}
+
 pub fn resolve_cols(
     pattern: &'static str,
     cols: u32,
@@ -593,4 +611,27 @@ pub fn resolve_cols(
         });
     }
     Ok((c, n / c))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn strata_are_the_grid_each_stratified_pattern_fills() {
+        let jitter = |cols| {
+            Pattern::Jitter(Jitter {
+                cols,
+                ..Default::default()
+            })
+        };
+        assert_eq!(jitter(0).strata(4096), Some((64, 64)));
+        assert_eq!(jitter(3).strata(16), None, "3 does not divide 16");
+        assert_eq!(
+            Pattern::NRooks(Default::default()).strata(10),
+            Some((10, 10))
+        );
+        assert_eq!(Pattern::Lhs(Default::default()).strata(10), Some((10, 10)));
+        assert_eq!(Pattern::Random(Default::default()).strata(16), None);
+    }
 }

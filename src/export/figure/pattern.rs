@@ -1,4 +1,5 @@
-//! The points in the unit square, over the elementary intervals when the column asks.
+//! The points in the unit square, over the strata and the elementary intervals when the
+//! column asks.
 //!
 //! The axes are padded by one marker radius (and a pixel) on every side, so that points on
 //! the square's border (0 and 1 are common coordinates: grids, Hammersley, lattices) are drawn
@@ -14,6 +15,27 @@ use plotters::prelude::*;
 
 /// The pattern figure.
 pub(super) struct Pattern;
+
+/// The strata's lines (the GUI's overlay grey).
+const STRATA: RGBColor = RGBColor(190, 190, 190);
+
+/// The inner lines of a `cols` × `rows` grid over the unit square.
+fn grid(
+    ch: &mut super::canvas::Chart<'_, '_>,
+    cols: usize,
+    rows: usize,
+    style: ShapeStyle,
+) -> Result<(), plotters::drawing::DrawingAreaErrorKind<super::canvas::CanvasError>> {
+    let verticals = (1..cols).map(|i| {
+        let x = i as f64 / cols as f64;
+        PathElement::new(vec![(x, 0.0), (x, 1.0)], style)
+    });
+    let horizontals = (1..rows).map(|j| {
+        let y = j as f64 / rows as f64;
+        PathElement::new(vec![(0.0, y), (1.0, y)], style)
+    });
+    ch.draw_series(verticals.chain(horizontals)).map(|_| ())
+}
 
 const KIND: PanelKind = PanelKind::Pattern;
 
@@ -70,17 +92,13 @@ impl Figure for Pattern {
         let pad = (radius as f64 + SUB as f64) / side;
         let mut ch = chart(body, -pad..1.0 + pad, -pad..1.0 + pad, look, KIND)?;
         axes(&mut ch, "x", "y", false, false, look, KIND)?;
+        // The strata (up to 256 per axis: beyond, the lines would merge into grey), then the
+        // elementary intervals.
+        if let Some((cols, rows)) = f.ctx.strata.filter(|&(c, r)| c <= 256 && r <= 256) {
+            grid(&mut ch, cols, rows, look.line(STRATA, 1)).map_err(de)?;
+        }
         if let Some((cols, rows)) = elementary_grid(f.ctx.elementary_k, pts.len()) {
-            let thin = look.line(INTERVALS, 1);
-            let verticals = (1..cols).map(|i| {
-                let x = i as f64 / cols as f64;
-                PathElement::new(vec![(x, 0.0), (x, 1.0)], thin)
-            });
-            let horizontals = (1..rows).map(|j| {
-                let y = j as f64 / rows as f64;
-                PathElement::new(vec![(0.0, y), (1.0, y)], thin)
-            });
-            ch.draw_series(verticals.chain(horizontals)).map_err(de)?;
+            grid(&mut ch, cols, rows, look.line(INTERVALS, 1)).map_err(de)?;
         }
         // The unit square in a light line under the points, and a closed frame around the
         // padded plotting area: the axes, and a top and a right side.
@@ -110,9 +128,12 @@ impl Figure for Pattern {
         curve("x,y", &pts, KIND)
     }
 
-    /// The context, and the elementary intervals when they are drawn.
+    /// The context, and the strata and elementary intervals when they are drawn.
     fn metadata(&self, ctx: &FigureContext, data: &ColumnData) -> Vec<(String, String)> {
         let mut m = context_metadata(ctx);
+        if let Some((c, r)) = ctx.strata.filter(|&(c, r)| c <= 256 && r <= 256) {
+            m.push(("strata".into(), format!("{c}×{r} cells")));
+        }
         if let Some(grid) = data
             .points
             .as_ref()

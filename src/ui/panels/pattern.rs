@@ -165,18 +165,12 @@ impl Panel for PatternPanel {
     }
 }
 
-/// Columns × rows of the strata drawn for a pattern.
+/// Columns × rows of the strata drawn for a pattern (at most 256 lines each way on screen).
 fn strata_shape(scene: &Scene, ci: usize, n: usize) -> (usize, usize) {
-    use crate::core::pattern::{resolve_cols, Pattern};
-    let cols = match &scene.columns[ci].pattern {
-        Pattern::Jitter(j) => j.cols,
-        Pattern::Grid(g) => g.cols,
-        Pattern::MultiJitter(m) => m.cols,
-        Pattern::CorrelatedMultiJitter(m) => m.cols,
-        Pattern::NRooks(_) | Pattern::Lhs(_) => return (n.min(256), n.min(256)),
-        _ => 0,
-    };
-    resolve_cols("strata", cols, n).unwrap_or((1, 1))
+    scene.columns[ci]
+        .pattern
+        .strata(n)
+        .map_or((1, 1), |(c, r)| (c.min(256), r.min(256)))
 }
 
 /// The inner lines of a `cols × rows` grid over the unit square drawn in `rect`.
