@@ -64,7 +64,7 @@ pub(crate) struct PlacedGlyph {
 /// Size of sub- and superscripts relative to the text.
 pub(crate) const SCRIPT_SIZE: f32 = 0.7;
 
-/// A piece of text to lay out: its characters and where they sit.
+/// Where a run of text sits: on the baseline, or as a sub- or superscript.
 #[derive(Debug, Clone, Copy, PartialEq)]
 enum Script {
     Normal,
@@ -346,13 +346,10 @@ impl Stamp {
         })
     }
 
-    /// Composites the stamp for `circle` (a filled circle of this stamp's key) into `pm`, the
+    /// Composites the stamp for the circle at `centre` (of this stamp's key) into `pm`, the
     /// band whose top row is page row `y0`: source-over as tiny-skia's pipeline does it
     /// (d ← s + d·(255 − sₐ)/255, rounded up by (v + 255) >> 8).
-    fn blend(&self, pm: &mut tiny_skia::Pixmap, circle: &Op, y0: u32) {
-        let Op::Circle { centre, .. } = circle else {
-            return;
-        };
+    fn blend(&self, pm: &mut tiny_skia::Pixmap, centre: [f32; 2], y0: u32) {
         let (pw, ph) = (pm.width() as i64, pm.height() as i64);
         let x0 = centre[0].floor() as i64 - self.reach;
         let top = centre[1].floor() as i64 - self.reach - y0 as i64;
@@ -768,7 +765,7 @@ impl Drawing {
                     color,
                 } => {
                     if let Some(stamp) = StampKey::of(op).and_then(|k| prep.stamps.get(&k)) {
-                        stamp.blend(&mut pm, op, y0);
+                        stamp.blend(&mut pm, *centre, y0);
                     } else if let Some(path) =
                         PathBuilder::from_circle(centre[0], centre[1], *radius)
                     {
