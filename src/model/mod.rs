@@ -32,7 +32,7 @@ pub use integration::{
     guide_line, IntegrationCurve, IntegrationData, IntegrationPlot, GUIDE_SLOPES,
 };
 pub use panel::PanelKind;
-pub use points::{elementary_grid, PointsData, StatsData, STATS_PSA_MAX_N};
+pub use points::{elementary_grid, PointsData, StatsData, MAX_STRATA_LINES, STATS_PSA_MAX_N};
 pub use recon::{ConvergencePoint, ErrorData, ReconData, ReferenceData};
 pub use spectrum::{shared_spectrum_range, SpectrumData, SHARED_DECADES};
 

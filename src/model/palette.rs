@@ -8,6 +8,8 @@ pub const GUIDE: [u8; 3] = [150, 150, 150];
 pub const NYQUIST: [u8; 3] = [200, 60, 60];
 /// The points of a pattern, and the signal's own spectrum (replica k = 0) in figures.
 pub const INK: [u8; 3] = [20, 20, 30];
+/// The strata grid under the points.
+pub const STRATA: [u8; 3] = [190, 190, 190];
 /// The elementary-interval grid under the points.
 pub const INTERVALS: [u8; 3] = [120, 160, 220];
 /// The reconstruction f_r and its spectrum.

@@ -32,6 +32,9 @@ pub struct StatsData {
 /// Largest N whose statistics include PSA's measures (about 0.25 s at 4096 on 2 cores).
 pub const STATS_PSA_MAX_N: usize = 8192;
 
+/// Most strata per axis a pattern panel or figure draws (beyond, the lines merge into grey).
+pub const MAX_STRATA_LINES: usize = 256;
+
 /// The elementary-interval grid (columns, rows) = (2^k, 2^(m−k)) drawn under `n` = 2^m
 /// points for `k` (k above m taken as m); `None` without a k or when `n` is not a power of
 /// two. The pattern panel's overlay and the pattern figure both draw this grid.

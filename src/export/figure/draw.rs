@@ -197,21 +197,36 @@ pub(super) fn fitted_text(
 ) -> Result<(), ExportError> {
     let (w, h) = area.dim_in_pixel();
     let room = w.saturating_sub(2 * look.u(MARGIN));
-    let mut px = start_px;
-    let mut style = look.text(px);
-    while px > 8.0 {
-        let (tw, _) = area
-            .estimate_text_size(text, &style)
-            .map_err(|e| draw_err(kind, e))?;
-        if tw <= room {
-            break;
-        }
-        px -= 1.0;
-        style = look.text(px);
-    }
-    let style = style.pos(Pos::new(HPos::Center, VPos::Center));
+    let px = fitting_px(area, &[text], room, (start_px, 1.0, 8.0), look, kind)?;
+    let style = look.text(px).pos(Pos::new(HPos::Center, VPos::Center));
     area.draw_text(text, &style, ((w / 2) as i32, (h / 2) as i32))
         .map_err(|e| draw_err(kind, e))
+}
+
+/// The text size for `texts` in `area`: from `start` down by `step` while the widest of them
+/// is wider than `room` (plotters' pixels), stopping at `floor`.
+pub(super) fn fitting_px(
+    area: &Area<'_>,
+    texts: &[&str],
+    room: u32,
+    (start, step, floor): (f64, f64, f64),
+    look: Look,
+    kind: PanelKind,
+) -> Result<f64, ExportError> {
+    let mut px = start;
+    while px > floor {
+        let style = look.text(px);
+        let widest = texts
+            .iter()
+            .map(|t| area.estimate_text_size(t, &style).map(|s| s.0))
+            .try_fold(0, |a, w| w.map(|w| a.max(w)))
+            .map_err(|e| draw_err(kind, e))?;
+        if widest <= room {
+            break;
+        }
+        px -= step;
+    }
+    Ok(px)
 }
 
 /// Splits `body` into the plot and the [`CAPTION_LINE`] band under it, and writes `caption`

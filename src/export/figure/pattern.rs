@@ -10,14 +10,22 @@ use super::csv::curve;
 use super::draw::{axes, chart, draw_err, empty, present, Frame, GUIDE, INK, INTERVALS};
 use super::{context_metadata, Area, Figure};
 use crate::export::ExportError;
-use crate::model::{elementary_grid, ColumnData, FigureContext, PanelKind};
+use crate::model::{
+    elementary_grid, palette, ColumnData, FigureContext, PanelKind, MAX_STRATA_LINES,
+};
 use plotters::prelude::*;
 
 /// The pattern figure.
 pub(super) struct Pattern;
 
-/// The strata's lines (the GUI's overlay grey).
-const STRATA: RGBColor = RGBColor(190, 190, 190);
+/// The strata's lines (the GUI's overlay colour).
+const STRATA: RGBColor = RGBColor(palette::STRATA[0], palette::STRATA[1], palette::STRATA[2]);
+
+/// The strata the figure draws: the context's, up to [`MAX_STRATA_LINES`] per axis.
+fn drawn_strata(ctx: &FigureContext) -> Option<(usize, usize)> {
+    ctx.strata
+        .filter(|&(c, r)| c <= MAX_STRATA_LINES && r <= MAX_STRATA_LINES)
+}
 
 /// The inner lines of a `cols` × `rows` grid over the unit square.
 fn grid(
@@ -92,9 +100,8 @@ impl Figure for Pattern {
         let pad = (radius as f64 + SUB as f64) / side;
         let mut ch = chart(body, -pad..1.0 + pad, -pad..1.0 + pad, look, KIND)?;
         axes(&mut ch, "x", "y", false, false, look, KIND)?;
-        // The strata (up to 256 per axis: beyond, the lines would merge into grey), then the
-        // elementary intervals.
-        if let Some((cols, rows)) = f.ctx.strata.filter(|&(c, r)| c <= 256 && r <= 256) {
+        // The strata, then the elementary intervals.
+        if let Some((cols, rows)) = drawn_strata(f.ctx) {
             grid(&mut ch, cols, rows, look.line(STRATA, 1)).map_err(de)?;
         }
         if let Some((cols, rows)) = elementary_grid(f.ctx.elementary_k, pts.len()) {
@@ -131,7 +138,7 @@ impl Figure for Pattern {
     /// The context, and the strata and elementary intervals when they are drawn.
     fn metadata(&self, ctx: &FigureContext, data: &ColumnData) -> Vec<(String, String)> {
         let mut m = context_metadata(ctx);
-        if let Some((c, r)) = ctx.strata.filter(|&(c, r)| c <= 256 && r <= 256) {
+        if let Some((c, r)) = drawn_strata(ctx) {
             m.push(("strata".into(), format!("{c}×{r} cells")));
         }
         if let Some(grid) = data

@@ -4,7 +4,7 @@
 
 use super::csv::series;
 use super::draw::{
-    any_finite, axes, chart, draw_err, finite, magnitude_range, max_of, nyquist_lines,
+    any_finite, axes, chart, draw_err, finite, fitting_px, magnitude_range, max_of, nyquist_lines,
     replica_colour, stems, with_caption, Frame, GREY, INK, MARGIN, NYQUIST, TICK_PX,
 };
 use super::theorem::{self, view};
@@ -46,18 +46,8 @@ pub(super) fn legend_column(
     // The labels at the tick size, or smaller until the longest fits the column.
     let (w, _) = area.dim_in_pixel();
     let room = w.saturating_sub(look.u(8 + 32 + 4));
-    let mut px = TICK_PX;
-    while px > 9.0 {
-        let widest = entries
-            .iter()
-            .map(|(label, _)| area.estimate_text_size(label, &look.text(px)).map(|s| s.0))
-            .try_fold(0, |a, w| w.map(|w| a.max(w)))
-            .map_err(de)?;
-        if widest <= room {
-            break;
-        }
-        px -= 0.5;
-    }
+    let labels: Vec<&str> = entries.iter().map(|(label, _)| label.as_str()).collect();
+    let px = fitting_px(area, &labels, room, (TICK_PX, 0.5, 9.0), look, kind)?;
     let style = look.text(px).pos(Pos::new(HPos::Left, VPos::Center));
     let step = look.i(24);
     for (i, (label, mark)) in entries.iter().enumerate() {

@@ -49,7 +49,10 @@ impl Panel for PatternPanel {
         let count = cx.view.prefix.unwrap_or(usize::MAX).min(data.points.len());
         let radius = (side / (data.points.len() as f32).sqrt() * 0.18).clamp(0.8, 4.0);
         // Overlays under the points.
-        let grid_stroke = Stroke::new(0.5, Color32::from_gray(190));
+        let grid_stroke = {
+            let [r, g, b] = crate::model::palette::STRATA;
+            Stroke::new(0.5, Color32::from_rgb(r, g, b))
+        };
         if cx.view.show_strata {
             let (c, rws) = strata_shape(cx.scene, ci, data.points.len());
             grid_lines(&painter, rect, c, rws, grid_stroke);
@@ -165,12 +168,14 @@ impl Panel for PatternPanel {
     }
 }
 
-/// Columns × rows of the strata drawn for a pattern (at most 256 lines each way on screen).
+/// Columns × rows of the strata drawn for a pattern (at most
+/// [`crate::model::MAX_STRATA_LINES`] lines each way on screen).
 fn strata_shape(scene: &Scene, ci: usize, n: usize) -> (usize, usize) {
+    let most = crate::model::MAX_STRATA_LINES;
     scene.columns[ci]
         .pattern
         .strata(n)
-        .map_or((1, 1), |(c, r)| (c.min(256), r.min(256)))
+        .map_or((1, 1), |(c, r)| (c.min(most), r.min(most)))
 }
 
 /// The inner lines of a `cols × rows` grid over the unit square drawn in `rect`.
