@@ -47,6 +47,8 @@ fn setup() -> (FigureContext, ColumnData, Vec<f64>) {
         w: W,
         pixels: flip_rows(&values, W),
         zero_weight: 0,
+        floored: 0,
+        floor: 0.5,
         mask: vec![false; W * W],
         fill: ZERO_WEIGHT_FILL,
         samples: W * W,

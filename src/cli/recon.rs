@@ -16,6 +16,10 @@ use samplescope::model::Colormap;
 use std::path::Path;
 use std::time::Instant;
 
+/// The reconstruction's estimator, as the JSON output names it (`core::recon` module docs).
+const RULE: &str =
+    "Σw·f/Σw where Σw ≥ c·Σ|w|, else (Σw·f + (c·Σ|w| − Σw)·P)/(c·Σ|w|) with P = Σ|w|·f/Σ|w|";
+
 /// Arguments of `samplescope recon`.
 #[derive(clap::Args, Debug)]
 pub struct ReconArgs {
@@ -114,6 +118,9 @@ pub fn run(args: &ReconArgs, session: &Session) -> Result<(), CliError> {
     let signal = signal_from_args(&args.signal, &args.signal_set)?;
     let pattern = pattern_from_args(&args.pattern, &args.set)?;
     let filter = filter_from_args(&args.filter, &args.filter_set, &args.mode)?;
+    if let Some(why) = filter.reconstruction_refusal() {
+        return Err(CliError::Usage(format!("--filter: {why}")));
+    }
     let usage = |e: &dyn std::fmt::Display| CliError::Usage(e.to_string());
     // The sizes the estimates take are checked first (the same errors the core gives).
     let range = |field: &'static str, value: usize, max: usize| {
@@ -216,6 +223,11 @@ pub fn run(args: &ReconArgs, session: &Session) -> Result<(), CliError> {
                 "psnr": report.psnr,
                 "max_abs_error": report.max_abs,
                 "zero_weight_pixels": recon.zero_weight,
+                "normaliser": {
+                    "rule": RULE,
+                    "c": recon.floor,
+                    "floored_pixels": recon.floored,
+                },
                 "reference_error_estimate": reference.error_estimate,
                 "reference_method": reference.method.label(),
                 "timings_ms": { "reconstruction": recon_ms, "reference": reference_ms },
@@ -225,6 +237,11 @@ pub fn run(args: &ReconArgs, session: &Session) -> Result<(), CliError> {
         outln!("RMSE   {:.6}", report.rmse)?;
         outln!("PSNR   {:.3} dB", report.psnr)?;
         outln!("time   {recon_ms:.2} ms (reconstruction, sampling included); reference {reference_ms:.2} ms")?;
+        outln!(
+            "norm   Σw·f/Σw, floored where Σw < c·Σ|w| (c = {:.3}): {} pixels floored",
+            recon.floor,
+            recon.floored
+        )?;
         if recon.zero_weight > 0 {
             outln!(
                 "note   {} pixels had zero total filter weight",

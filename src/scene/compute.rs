@@ -145,6 +145,9 @@ pub(super) fn samples(ctx: &JobCtx) -> Output {
 pub(super) fn reconstruction(ctx: &JobCtx) -> Output {
     let (scene, c, done, cancel) = (ctx.scene, ctx.column, ctx.deps, ctx.cancel);
     let w = scene.recon.size;
+    if let Some(why) = scene.filter.reconstruction_refusal() {
+        return Err(NodeError::CannotReconstruct(why));
+    }
     let r = match scene.recon.mode {
         ReconMode::Scattered => {
             let p = points_of(done)?;
@@ -406,6 +409,9 @@ pub(super) fn convergence(ctx: &JobCtx) -> Output {
             column: c,
             what: "the convergence curve",
         });
+    }
+    if let Some(why) = scene.filter.reconstruction_refusal() {
+        return Err(NodeError::CannotReconstruct(why));
     }
     let provider = crate::core::recon::PatternProvider {
         pattern: col.pattern,

@@ -838,6 +838,15 @@ impl Scene {
                 &e.to_string(),
             ));
         }
+        let reconstructs = (self.panels.zoneplate && self.effects.reconstruction)
+            || (self.panels.cost && self.effects.convergence);
+        if reconstructs && self.filter.reconstruction_refusal().is_some() {
+            return Err(invalid(
+                "filter.filter",
+                self.filter.filter.name().to_string(),
+                "a filter that passes constants (H(0) ≠ 0: not band-pass, high-pass or cosc, nor a setting that makes H(0) vanish) while effects.reconstruction or effects.convergence is on; turn those off to show the kernel alone",
+            ));
+        }
         let s = &self.spectrum;
         if let Some(allowed) = int_range(s.size, &limits::SPECTRUM_SIZE) {
             return Err(invalid("spectrum.size", s.size.to_string(), &allowed));

@@ -173,6 +173,9 @@ pub enum NodeError {
         column + 1
     )]
     ImportedNoStudy { column: usize },
+    /// The scene's filter cannot reconstruct (H(0) = 0: band-pass, high-pass, cosc).
+    #[error("{0}")]
+    CannotReconstruct(String),
     /// The job panicked (a bug; the message is the panic's).
     #[error("internal error (panic): {0}")]
     Panic(String),

@@ -388,6 +388,8 @@ fn images_and_points_are_drawn_where_their_data_says() {
                 w: 8,
                 pixels: vec![level; 64],
                 zero_weight: 0,
+                floored: 0,
+                floor: 0.5,
                 mask: vec![false; 64],
                 fill: ZERO_WEIGHT_FILL,
                 samples: 64,

@@ -36,6 +36,7 @@ mod recon_grid;
 mod recon_kernels;
 mod recon_reference;
 mod recon_scattered;
+mod recon_stability;
 mod recon_supersample;
 mod render_cli;
 mod scene_cost;

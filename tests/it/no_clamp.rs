@@ -138,6 +138,13 @@ fn limit_scenes() -> Vec<(String, Scene)> {
         for g in at_limits(&f) {
             let mut s = base.clone();
             s.filter.filter = g;
+            // A kernel that cannot reconstruct (H(0) = 0) is shown with the reconstruction off,
+            // as the shipped band-pass, high-pass and cosc scenes do (scene validation refuses
+            // it otherwise).
+            if s.filter.reconstruction_refusal().is_some() {
+                s.effects.reconstruction = false;
+                s.effects.convergence = false;
+            }
             if s.filter.validate().is_ok() {
                 push(format!("filter {g:?}"), s);
             }

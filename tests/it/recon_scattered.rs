@@ -8,7 +8,7 @@ use glam::DVec2;
 use samplescope::core::cancel::Cancel;
 use samplescope::core::recon::{
     reconstruct_scattered, reconstruct_scattered_gather, reconstruct_scattered_serial,
-    sample_signal, ReconError, ReconKernel, Reconstruction, ZERO_WEIGHT_FILL,
+    sample_signal, ReconError, ReconKernel, Reconstruction, FLOOR_FACTOR, ZERO_WEIGHT_FILL,
 };
 use samplescope::core::rng::Rng;
 use samplescope::core::signal::{Signal, ZonePlate};
@@ -20,13 +20,16 @@ fn random_points(n: usize, seed: u64) -> Vec<DVec2> {
         .collect()
 }
 
-/// The definition, summed over every sample for every pixel (no range, no buckets).
+/// The definition, summed over every sample for every pixel (no range, no buckets): Σw·f/Σw,
+/// floored where Σw < c·Σ|w| (c = FLOOR_FACTOR·ρ) towards P = Σ|w|·f/Σ|w| as `core::recon`
+/// documents.
 fn brute_force<K: ReconKernel>(points: &[DVec2], values: &[f64], w: usize, k: &K) -> Vec<f64> {
     let inv_scale = (points.len() as f64).sqrt() / w as f64;
+    let c = FLOOR_FACTOR * k.dc_fraction();
     let mut out = vec![f64::NAN; w * w];
     for j in 0..w {
         for i in 0..w {
-            let (mut num, mut den) = (0.0, 0.0);
+            let (mut num, mut den, mut abs, mut num_abs) = (0.0, 0.0, 0.0, 0.0);
             for (p, v) in points.iter().zip(values) {
                 let x = *p * w as f64;
                 let d = DVec2::new(
@@ -36,9 +39,14 @@ fn brute_force<K: ReconKernel>(points: &[DVec2], values: &[f64], w: usize, k: &K
                 let wt = k.weight(d);
                 num += wt * v;
                 den += wt;
+                abs += wt.abs();
+                num_abs += wt.abs() * v;
             }
-            out[j * w + i] = if den == 0.0 {
+            out[j * w + i] = if abs == 0.0 {
                 ZERO_WEIGHT_FILL
+            } else if den < c * abs {
+                let p = num_abs / abs;
+                p + (num - den * p) / (c * abs)
             } else {
                 num / den
             };

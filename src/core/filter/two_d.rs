@@ -248,8 +248,33 @@ impl Filter2D {
         }
     }
 
+    /// Why this filter cannot reconstruct a signal, as one line; `None` when it can. A
+    /// normalised reconstruction Σw·f/Σw needs H₂(0) ≠ 0 ([`Filter2D::dc_normaliser`]) and a
+    /// kernel that is not a derivative: band-pass, high-pass and cosc are refused, and so is
+    /// any setting that makes H₂(0) vanish (a radial sinc cut at an even radius).
+    pub fn reconstruction_refusal(&self) -> Option<String> {
+        let name = self.filter.name();
+        if self.filter.is_derivative() {
+            return Some(format!(
+                "{name} cannot reconstruct: it is a derivative kernel (H(0) = 0); use box, tent, gaussian, mitchell, sinc, windowed-sinc or low-pass"
+            ));
+        }
+        match self.dc_normaliser() {
+            Some(h0) if h0 > 0.0 => None,
+            _ => {
+                let how = match self.mode {
+                    Mode2D::Separable => "",
+                    Mode2D::Radial => " (radial)",
+                };
+                Some(format!(
+                    "{name}{how} cannot reconstruct: H(0) = 0 with these settings (it blocks constants); use box, tent, gaussian, mitchell, sinc, windowed-sinc or low-pass"
+                ))
+            }
+        }
+    }
+
     /// ∫∫|h₂|, the scale against which a vanishing DC gain is judged.
-    fn abs_integral2(&self) -> f64 {
+    pub fn abs_integral2(&self) -> f64 {
         let f = self.filter;
         let k = f.kernel();
         let (g, w) = (|s: f64| k.eval(s).abs(), 0.5 * k.feature_scale());

@@ -1,13 +1,13 @@
 //! The splatting engine shared by scattered, grid and supersampled reconstruction.
 //!
 //! Positions are in **pixel units** (pixel i covers [i, i+1), its centre is i + ½). A sample at
-//! x with value v adds w(d)·v and w(d) to every pixel whose centre c satisfies
+//! x with value v adds w(d)·v, w(d), |w(d)| and |w(d)|·v to every pixel whose centre c satisfies
 //! |c − x| < r_px (per axis), where d = (c − x)·inv_scale is the offset in filter units and
 //! r_px = support / inv_scale the support in pixels. The range of pixels is padded by
 //! [`PAD`] pixel so that rounding never drops a tap inside the support; taps outside it have
 //! weight 0 by the [`ReconKernel`] contract.
 
-use super::{ReconError, ReconKernel, Reconstruction, ZERO_WEIGHT_FILL};
+use super::{check_floor, ReconError, ReconKernel, Reconstruction, ZERO_WEIGHT_FILL};
 use glam::DVec2;
 use std::time::Duration;
 
@@ -85,11 +85,11 @@ pub(crate) fn tile_sorted(points: &[DVec2], values: &[f64], w: usize) -> Vec<(DV
 /// Largest per-axis tap count handled with stack buffers.
 const SMALL: usize = 16;
 
-/// Adds the separable weights hx[a]·hy[b] (times v, and alone) to the pixels
-/// (i0 + a, j0 + b).
+/// Adds the separable weights wt = hx[a]·hy[b] to the pixels (i0 + a, j0 + b): the four sums
+/// [wt·v, wt, |wt|, |wt|·v].
 #[inline(always)]
 fn splat_rows(
-    cells: &mut [[f64; 2]],
+    cells: &mut [[f64; 4]],
     w: usize,
     i0: usize,
     j0: usize,
@@ -104,19 +104,29 @@ fn splat_rows(
         }
         let base = (j0 + b) * w + i0;
         let row = &mut cells[base..base + nx];
-        // [wy·v, wy] scaled by wx: one packed multiply-add per tap.
+        // [wy·v, wy] scaled by wx: one packed multiply-add per tap, and the absolute pair.
         let wyv = wy * v;
         for (cell, &wx) in row.iter_mut().zip(hx) {
-            cell[0] += wx * wyv;
-            cell[1] += wx * wy;
+            add(cell, wx * wy, wx * wyv, v);
         }
     }
 }
 
-/// Running sums Σ w·v and Σ w per pixel (interleaved for locality).
+/// Adds one tap of weight `wt` (and `wtv` = wt·v) to a pixel's sums [Σw·v, Σw, Σ|w|, Σ|w|·v].
+#[inline(always)]
+fn add(cell: &mut [f64; 4], wt: f64, wtv: f64, v: f64) {
+    let a = wt.abs();
+    cell[0] += wtv;
+    cell[1] += wt;
+    cell[2] += a;
+    cell[3] += a * v;
+}
+
+/// Running sums Σ w·v, Σ w, Σ |w| and Σ |w|·v per pixel (interleaved for locality).
 pub(crate) struct Accum<'k, K: ReconKernel + ?Sized> {
     w: usize,
-    cells: Vec<[f64; 2]>,
+    cells: Vec<[f64; 4]>,
+    floor: f64,
     kernel: &'k K,
     separable: bool,
     inv_scale: f64,
@@ -126,18 +136,26 @@ pub(crate) struct Accum<'k, K: ReconKernel + ?Sized> {
 }
 
 impl<'k, K: ReconKernel + ?Sized> Accum<'k, K> {
-    /// An empty W×W accumulator for `kernel` at `scale_px` pixels per filter unit.
-    pub(crate) fn new(w: usize, kernel: &'k K, support: f64, scale_px: f64) -> Self {
-        Accum {
+    /// An empty W×W accumulator for `kernel` at `scale_px` pixels per filter unit; refuses a
+    /// kernel that cannot reconstruct ([`check_floor`]).
+    pub(crate) fn new(
+        w: usize,
+        kernel: &'k K,
+        support: f64,
+        scale_px: f64,
+    ) -> Result<Self, ReconError> {
+        let floor = check_floor(kernel)?;
+        Ok(Accum {
             w,
-            cells: vec![[0.0; 2]; w * w],
+            cells: vec![[0.0; 4]; w * w],
+            floor,
             kernel,
             separable: kernel.factor(0.0).is_some(),
             inv_scale: 1.0 / scale_px,
             r_px: support * scale_px,
             hx: Vec::new(),
             hy: Vec::new(),
-        }
+        })
     }
 
     /// Support in pixels.
@@ -186,8 +204,7 @@ impl<'k, K: ReconKernel + ?Sized> Accum<'k, K> {
                 let row = &mut self.cells[base..base + nx];
                 for (a, cell) in row.iter_mut().enumerate() {
                     let wt = kernel.weight(DVec2::new(offset(i0 + a, x.x, s), dy));
-                    cell[0] += wt * v;
-                    cell[1] += wt;
+                    add(cell, wt, wt * v, v);
                 }
             }
         }
@@ -248,8 +265,7 @@ impl<'k, K: ReconKernel + ?Sized> Accum<'k, K> {
                             let row = &mut band[base..base + nx];
                             for (a, cell) in row.iter_mut().enumerate() {
                                 let wt = kernel.weight(DVec2::new(offset(i0 + a, x.x, s), dy));
-                                cell[0] += wt * v;
-                                cell[1] += wt;
+                                add(cell, wt, wt * v, v);
                             }
                         }
                     }
@@ -258,20 +274,30 @@ impl<'k, K: ReconKernel + ?Sized> Accum<'k, K> {
             })
     }
 
-    /// Normalises every pixel; zero-weight pixels get the fill value and are flagged.
+    /// Normalises every pixel (module docs of [`super`]); zero-weight pixels get the fill
+    /// value and are flagged.
     pub(crate) fn finish(
         self,
         samples: usize,
         wall_time: Duration,
     ) -> Result<Reconstruction, ReconError> {
-        finish_sums(self.w, &self.cells, samples, wall_time)
+        finish_sums(self.w, &self.cells, self.floor, samples, wall_time)
     }
 }
 
-/// Turns per-pixel sums [Σ w·v, Σ w] into a [`Reconstruction`].
+/// Turns per-pixel sums [Σw·v, Σw, Σ|w|, Σ|w|·v] into a [`Reconstruction`] (the estimator of
+/// the module docs of [`super`]): with A = Σ|w| and P = Σ|w|·v / A,
+///
+/// ```text
+/// I = Σw·v / Σw                               where Σw ≥ c·A,
+/// I = (Σw·v + (c·A − Σw)·P) / (c·A)           where Σw < c·A (floored),
+/// ```
+///
+/// and the fill value where A = 0.
 pub(crate) fn finish_sums(
     w: usize,
-    cells: &[[f64; 2]],
+    cells: &[[f64; 4]],
+    floor: f64,
     samples: usize,
     wall_time: Duration,
 ) -> Result<Reconstruction, ReconError> {
@@ -279,22 +305,34 @@ pub(crate) fn finish_sums(
     let mut pixels = vec![0.0; n];
     let mut mask = vec![false; n];
     let mut zero_weight = 0usize;
-    // One branch-free pass. x·0 is NaN exactly when x is not finite, and a finite sum over a
-    // tiny non-zero weight can still overflow: both make `bad` true.
+    let mut floored = 0usize;
+    // One pass. x·0 is NaN exactly when x is not finite, and a finite sum over a tiny
+    // non-zero weight can still overflow: both make `bad` true.
     let mut bad = false;
-    for ((&[num, den], p), m) in cells.iter().zip(pixels.iter_mut()).zip(mask.iter_mut()) {
-        let zero = den == 0.0;
-        let v = if zero { ZERO_WEIGHT_FILL } else { num / den };
-        bad |= (num * 0.0 + den * 0.0 != 0.0) | !v.is_finite();
+    for ((&[num, den, abs, num_abs], p), m) in
+        cells.iter().zip(pixels.iter_mut()).zip(mask.iter_mut())
+    {
+        let zero = abs == 0.0;
+        let least = floor * abs;
+        let low = den < least;
+        let v = if zero {
+            ZERO_WEIGHT_FILL
+        } else if low {
+            (num + (least - den) * (num_abs / abs)) / least
+        } else {
+            num / den
+        };
+        bad |= ((num + den + abs + num_abs) * 0.0 != 0.0) | !v.is_finite();
         *p = v;
         *m = zero;
         zero_weight += zero as usize;
+        floored += (low && !zero) as usize;
     }
     if bad {
         let pixel = cells
             .iter()
             .zip(&pixels)
-            .position(|(&[n, d], v)| !(n.is_finite() && d.is_finite() && v.is_finite()))
+            .position(|(c, v)| !(c.iter().all(|x| x.is_finite()) && v.is_finite()))
             .unwrap_or(0);
         return Err(ReconError::NonFiniteWeight { pixel });
     }
@@ -302,6 +340,8 @@ pub(crate) fn finish_sums(
         w,
         pixels,
         zero_weight,
+        floored,
+        floor,
         mask,
         fill: ZERO_WEIGHT_FILL,
         samples,

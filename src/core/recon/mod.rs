@@ -7,21 +7,58 @@
 //! - **Reconstruction** is the normalised weighted sum
 //!
 //!   ```text
-//!   I(p) = Σⱼ w((p − xⱼ)/h) f(xⱼ) / Σⱼ w((p − xⱼ)/h)
+//!   I(p) = Σⱼ wⱼ f(xⱼ) / Σⱼ wⱼ,      wⱼ = w((p − xⱼ)/h)      (where Σw ≥ c·Σ|w|: see below)
 //!   ```
 //!
 //!   evaluated at every pixel centre p, with a [`ReconKernel`] w given in filter units and a
 //!   scale h: the mean sample spacing h = 1/√N for N scattered samples over the image
 //!   ([`scattered`], and [`grid`] where N = G²), the output pixel h = 1/W for supersampling
 //!   ([`supersample`](mod@supersample)). A kernel with support r covers |d| < r sample spacings (or pixels).
+//! - **Cancelling weights: the floor.** A kernel with negative lobes (Mitchell, Catmull–Rom,
+//!   Lanczos, sinc, …) has weights that cancel, and where scattered samples are sparse Σw can
+//!   come close to 0 or cross it: Σw·f/Σw then explodes (RMSE 19 and errors of 9·10³ for
+//!   Catmull–Rom on 4096 jittered samples). So the normaliser has a floor: with A = Σⱼ|wⱼ|,
+//!   P = Σⱼ|wⱼ| f(xⱼ) / A (the mean under the absolute weights, a convex combination of the
+//!   samples) and c = [`FLOOR_FACTOR`]·ρ, where ρ = ∫∫w / ∫∫|w| ∈ (0, 1] is the kernel's own
+//!   ratio ([`ReconKernel::dc_fraction`]: 1 without negative lobes, 0.73 for Catmull–Rom, 0.54
+//!   for Lanczos-3, 0.30 for the sinc of radius 4),
+//!
+//!   ```text
+//!   I(p) = (Σw·f + (c·A − Σw)·P) / (c·A)   where Σw < c·A   ("floored")
+//!        = t·(Σw·f/Σw) + (1 − t)·P,         t = Σw/(c·A) < 1.
+//!   ```
+//!
+//!   The missing weight c·A − Σw is lent to P: a pixel whose weights cancel more than half
+//!   as much as the continuous kernel's do is pulled towards the |w|-weighted mean in
+//!   proportion. Properties (the tests check each):
+//!   - **Bounded**: in both branches I − P = Σw(f − P)/max(Σw, c·A), so
+//!     |I(p) − P| ≤ (max f − min f)/c over the samples that reach p, for every kernel and
+//!     pattern (P itself lies between their min and max).
+//!   - **Unchanged where samples are regular or dense**: where Σw ≥ c·A — every pixel of a
+//!     grid, whose local ratio stays near ρ, and most pixels of well-spread patterns — the
+//!     estimate is the plain Σw·f/Σw, bit for bit, with the kernel's sharpness.
+//!     [`Reconstruction::floored`] counts the other pixels.
+//!   - **Constants exact, no seams**: f ≡ k gives P = k and I = k in both branches (a plain
+//!     floor max(Σw, c·A) would darken floored pixels); at Σw = c·A both branches agree.
+//!
+//!   Kernels that cannot reconstruct (ρ ≤ [`MIN_DC_FRACTION`]: band-pass, high-pass,
+//!   derivative kernels, a radial sinc cut at an even radius) are refused with
+//!   [`ReconError::NoDcGain`]. Alternatives measured on the zone plate (N = 4096, W = 128,
+//!   every kernel × grid, random, jitter, Poisson disk, Sobol'): dividing by max(Σw, c·A)
+//!   alone (shrinking towards 0) doubles the error of sinc on random samples (RMSE 0.72
+//!   against 0.50 here) and breaks constants; dividing by A alone biases every pixel, the
+//!   grid's included (a constant comes out ρ-dependent); dividing by the expected weight
+//!   N·∫∫w (density compensation) turns the local density of irregular patterns into noise
+//!   (RMSE 0.38–0.67 where the positive Gaussian has 0.25); a floor at c = ρ instead of ρ/2 is
+//!   slightly better on irregular patterns but changes the grid.
 //! - **Borders are open** (not toroidal): the signals are not periodic, so a sample only
 //!   contributes to pixels inside the image, distances are plain Euclidean, and pixels near the
 //!   border are normalised by the smaller weight they receive. This keeps the normalised sum
 //!   exact for constants and unbiased at the border.
-//! - **Zero total weight.** A pixel whose weights sum to exactly 0 (no sample within the
-//!   support, or cancelling negative lobes) is never divided: it is set to
-//!   [`ZERO_WEIGHT_FILL`] (½, mid grey), flagged in [`Reconstruction::mask`] and counted in
-//!   [`Reconstruction::zero_weight`]. No output is ever NaN.
+//! - **Zero total weight.** A pixel that no sample reaches with a non-zero weight
+//!   (Σ|w| = 0) is never divided: it is set to [`ZERO_WEIGHT_FILL`] (½, mid grey), flagged in
+//!   [`Reconstruction::mask`] and counted in [`Reconstruction::zero_weight`]. No output is
+//!   ever NaN.
 //! - **Reference images** ([`reference`](mod@reference)) are box-prefiltered: the mean of the signal over each
 //!   pixel square, exact where a closed form exists (area coverage, integrals), by separable
 //!   Gauss–Legendre quadrature with an error bound for the zone plate and the chirp, and
@@ -78,6 +115,12 @@ pub const MAX_SUPPORT: f64 = 64.0;
 pub const MAX_WORK: u128 = 1 << 34;
 /// The value of a pixel whose total weight is zero: mid grey.
 pub const ZERO_WEIGHT_FILL: f64 = 0.5;
+/// The normaliser's floor as a fraction of the kernel's own ratio ρ = ∫∫w/∫∫|w|: pixels with
+/// Σw < c·Σ|w|, c = `FLOOR_FACTOR`·ρ, are floored (module docs).
+pub const FLOOR_FACTOR: f64 = 0.5;
+/// The smallest ratio ρ = ∫∫w/∫∫|w| of a kernel that may reconstruct: below it the kernel
+/// (nearly) blocks constants and a normalised sum is meaningless.
+pub const MIN_DC_FRACTION: f64 = 1e-6;
 
 /// A reconstruction kernel w(d), d in units of the filter scale (sample spacing or pixel).
 ///
@@ -96,6 +139,48 @@ pub trait ReconKernel: Sync {
         let _ = x;
         None
     }
+    /// The kernel's ratio ρ = ∫∫w / ∫∫|w| over its support: 1 for kernels without negative
+    /// lobes, less for those with (the normaliser's floor is [`FLOOR_FACTOR`]·ρ; module docs).
+    /// The default integrates by the midpoint rule: 8192 nodes per axis on the separable
+    /// factor when there is one, else 512 × 512 nodes on the support square (relative error
+    /// about 10⁻⁴ for kernels with jumps, far less for smooth ones, which is all a floor needs).
+    fn dc_fraction(&self) -> f64 {
+        let r = self.support();
+        if self.factor(0.0).is_some() {
+            let m = 8192;
+            let (mut s, mut a) = (0.0, 0.0);
+            for k in 0..m {
+                let x = -r + (k as f64 + 0.5) * 2.0 * r / m as f64;
+                let h = self.factor(x).unwrap_or(0.0);
+                s += h;
+                a += h.abs();
+            }
+            // NaN when a weight is not finite (the reconstruction then names the pixel).
+            if a == 0.0 {
+                0.0
+            } else {
+                let q = s / a;
+                q * q
+            }
+        } else {
+            let m = 512;
+            let (mut s, mut a) = (0.0, 0.0);
+            for j in 0..m {
+                let y = -r + (j as f64 + 0.5) * 2.0 * r / m as f64;
+                for i in 0..m {
+                    let x = -r + (i as f64 + 0.5) * 2.0 * r / m as f64;
+                    let h = self.weight(DVec2::new(x, y));
+                    s += h;
+                    a += h.abs();
+                }
+            }
+            if a == 0.0 {
+                0.0
+            } else {
+                s / a
+            }
+        }
+    }
 }
 
 impl<K: ReconKernel + ?Sized> ReconKernel for &K {
@@ -107,6 +192,9 @@ impl<K: ReconKernel + ?Sized> ReconKernel for &K {
     }
     fn factor(&self, x: f64) -> Option<f64> {
         (**self).factor(x)
+    }
+    fn dc_fraction(&self) -> f64 {
+        (**self).dc_fraction()
     }
 }
 
@@ -142,6 +230,9 @@ pub enum ReconError {
     /// The kernel's support is unusable.
     #[error("kernel support = {support}: must be a finite number in (0, {max}]")]
     InvalidSupport { support: f64, max: f64 },
+    /// The kernel (nearly) blocks constants, so it cannot reconstruct a signal.
+    #[error("the kernel's weights sum to {} of their absolute sum (∫∫w / ∫∫|w|): a reconstruction kernel must pass constants (H(0) > 0; band-pass, high-pass and derivative kernels cannot reconstruct)", crate::core::params::fmt_num(*.ratio))]
+    NoDcGain { ratio: f64 },
     /// The kernel produced a non-finite weight (first affected pixel given).
     #[error(
         "kernel weights at pixel {pixel} are not finite: the kernel must return finite weights"
@@ -214,6 +305,20 @@ pub(crate) fn check_support<K: ReconKernel + ?Sized>(kernel: &K) -> Result<f64, 
     Ok(r)
 }
 
+/// The normaliser's floor c = [`FLOOR_FACTOR`]·ρ of a kernel (module docs); refuses a kernel
+/// whose ratio ρ = ∫∫w/∫∫|w| is not above [`MIN_DC_FRACTION`].
+pub(crate) fn check_floor<K: ReconKernel + ?Sized>(kernel: &K) -> Result<f64, ReconError> {
+    let ratio = kernel.dc_fraction();
+    if ratio.is_nan() {
+        // Non-finite weights: the reconstruction reports the first pixel they reach.
+        return Ok(FLOOR_FACTOR);
+    }
+    if ratio <= MIN_DC_FRACTION {
+        return Err(ReconError::NoDcGain { ratio });
+    }
+    Ok(FLOOR_FACTOR * ratio.min(1.0))
+}
+
 /// Checks an amount of work against [`MAX_WORK`].
 pub(crate) fn check_work(what: &'static str, work: u128) -> Result<(), ReconError> {
     if work > MAX_WORK {
@@ -233,8 +338,12 @@ pub struct Reconstruction {
     pub w: usize,
     /// Pixel values, row-major (`pixels[j·W + i]`); zero-weight pixels hold [`Self::fill`].
     pub pixels: Vec<f64>,
-    /// How many pixels had zero total weight.
+    /// How many pixels had zero total weight (Σ|w| = 0).
     pub zero_weight: usize,
+    /// How many pixels had Σw < c·Σ|w| and took the floored estimate (module docs).
+    pub floored: usize,
+    /// The floor's fraction c = [`FLOOR_FACTOR`]·ρ of the kernel.
+    pub floor: f64,
     /// `true` where the total weight was zero (row-major, like `pixels`).
     pub mask: Vec<bool>,
     /// The value given to zero-weight pixels ([`ZERO_WEIGHT_FILL`]).
@@ -256,6 +365,8 @@ pub struct ErrorReport {
     pub max_abs: f64,
     /// Zero-weight pixels in the reconstruction (they count with their fill value).
     pub zero_weight: usize,
+    /// Pixels divided by the normaliser's floor (copied from the reconstruction).
+    pub floored: usize,
     /// Wall-clock time of the reconstruction being judged (copied from it).
     pub wall_time: Duration,
 }
@@ -314,6 +425,7 @@ pub fn error_report(recon: &Reconstruction, reference: &[f64]) -> Result<ErrorRe
         psnr: psnr(e),
         max_abs,
         zero_weight: recon.zero_weight,
+        floored: recon.floored,
         wall_time: recon.wall_time,
     })
 }

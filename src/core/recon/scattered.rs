@@ -1,7 +1,9 @@
 //! Reconstruction from N scattered samples over the whole image.
 //!
 //! N samples xⱼ ∈ \[0,1\]² with values f(xⱼ) are reconstructed on a W×W grid by the normalised
-//! weighted sum I(p) = Σⱼ w((p − xⱼ)/h) f(xⱼ) / Σⱼ w((p − xⱼ)/h) at every pixel centre p, with
+//! weighted sum I(p) = Σⱼ wⱼ f(xⱼ) / Σⱼ wⱼ, wⱼ = w((p − xⱼ)/h), at every pixel centre p (where
+//! the weights cancel, Σw below c·Σ|w|, the floored estimator of the module docs of
+//! [`super`]), with
 //! the kernel scaled to the mean sample spacing h = 1/√N: a kernel of support r reaches r mean
 //! sample spacings, r·W/√N pixels. Borders are open (see the module docs of [`super`]).
 //!
@@ -16,8 +18,8 @@
 
 use super::accum::{finish_sums, offset, splat_work, tile_sorted, Accum, PAD};
 use super::{
-    check_cancel, check_size, check_support, check_work, ReconError, ReconKernel, Reconstruction,
-    MAX_SAMPLES, MAX_W,
+    check_cancel, check_floor, check_size, check_support, check_work, ReconError, ReconKernel,
+    Reconstruction, MAX_SAMPLES, MAX_W,
 };
 use crate::core::cancel::Cancel;
 use crate::core::signal::Signal;
@@ -141,7 +143,7 @@ fn splat_scattered<K: ReconKernel + ?Sized>(
 ) -> Result<Reconstruction, ReconError> {
     let start = Instant::now();
     let (support, scale_px) = check_inputs(points, values, w, kernel)?;
-    let mut acc = Accum::new(w, kernel, support, scale_px);
+    let mut acc = Accum::new(w, kernel, support, scale_px)?;
     check_work(
         "scattered splatting",
         splat_work(points.len(), acc.r_px(), w),
@@ -229,6 +231,7 @@ pub fn reconstruct_scattered_gather<K: ReconKernel + ?Sized>(
 ) -> Result<Reconstruction, ReconError> {
     let start = Instant::now();
     let (support, scale_px) = check_inputs(points, values, w, kernel)?;
+    let floor = check_floor(kernel)?;
     let r_px = support * scale_px;
     let inv_scale = 1.0 / scale_px;
     // A sample within r_px (+ pad) of a pixel centre lies in the centre's cell or a neighbour.
@@ -238,7 +241,7 @@ pub fn reconstruct_scattered_gather<K: ReconKernel + ?Sized>(
     let wf = w as f64;
     let pos: Vec<DVec2> = points.iter().map(|p| *p * wf).collect();
     let buckets = Buckets::new(&pos, w, c);
-    let mut cells = vec![[0.0f64; 2]; w * w];
+    let mut cells = vec![[0.0f64; 4]; w * w];
     cells
         .par_chunks_mut(w)
         .enumerate()
@@ -247,8 +250,7 @@ pub fn reconstruct_scattered_gather<K: ReconKernel + ?Sized>(
             let cy = Buckets::coord(j as f64 + 0.5, w, c);
             for (i, cell) in row.iter_mut().enumerate() {
                 let cx = Buckets::coord(i as f64 + 0.5, w, c);
-                let mut num = 0.0;
-                let mut den = 0.0;
+                let mut sums = [0.0; 4];
                 for by in cy.saturating_sub(1)..=(cy + 1).min(c - 1) {
                     for bx in cx.saturating_sub(1)..=(cx + 1).min(c - 1) {
                         for &k in buckets.cell(bx, by) {
@@ -257,15 +259,18 @@ pub fn reconstruct_scattered_gather<K: ReconKernel + ?Sized>(
                                 DVec2::new(offset(i, x.x, inv_scale), offset(j, x.y, inv_scale));
                             let wt = kernel.weight(d);
                             if wt != 0.0 {
-                                num += wt * values[k as usize];
-                                den += wt;
+                                let v = values[k as usize];
+                                sums[0] += wt * v;
+                                sums[1] += wt;
+                                sums[2] += wt.abs();
+                                sums[3] += wt.abs() * v;
                             }
                         }
                     }
                 }
-                *cell = [num, den];
+                *cell = sums;
             }
             Ok::<(), ReconError>(())
         })?;
-    finish_sums(w, &cells, points.len(), start.elapsed())
+    finish_sums(w, &cells, floor, points.len(), start.elapsed())
 }

@@ -4,7 +4,10 @@
 //! [`SampleProvider`] (jitter, N-rooks, Halton/Sobol with per-pixel scrambling, …); its samples
 //! sit at ((i + uₖ.x)/W, (j + uₖ.y)/W). Every pixel's value is the lecture's
 //! Pixel = Σₖ wₖ·Sampleₖ / Σₖ wₖ, with wₖ = w(d) for the pixel filter w in **pixel units**
-//! (d = offset of the sample from the pixel centre, times W).
+//! (d = offset of the sample from the pixel centre, times W), its denominator floored at
+//! c·Σₖ |wₖ| as every reconstruction's (module docs of [`super`]): a pixel filter with
+//! negative lobes (Lanczos, Mitchell) over a few random samples per pixel would otherwise
+//! divide by a Σw near 0.
 //!
 //! **Samples are shared with neighbouring pixels**: a pixel gathers every sample (of any pixel)
 //! within the filter support, so a filter wider than ½ pixel (tent of radius 1, Gaussian,
@@ -156,7 +159,7 @@ where
     check_size("w", w, 1, MAX_W)?;
     check_size("spp", spp, 1, MAX_SPP)?;
     let support = check_support(kernel)?;
-    let mut acc = Accum::new(w, kernel, support, 1.0);
+    let mut acc = Accum::new(w, kernel, support, 1.0)?;
     let n = w * w * spp;
     check_work("supersampling", splat_work(n, acc.r_px(), w) + n as u128)?;
     let wf = w as f64;

@@ -137,6 +137,13 @@ impl Panel for ZonePlatePanel {
                     ),
                 );
             }
+            ui.small(format!(
+                "normaliser: Σw with floor c·Σ|w| (c = {:.3}) · {} pixels floored",
+                d.exact.floor, d.exact.floored
+            ))
+            .on_hover_text(
+                "each pixel is Σw·f / max(Σw, c·Σ|w|): where a kernel's negative lobes cancel                  (sparse samples), the plain Σw could approach 0; c is half the kernel's own                  ratio ∫∫w/∫∫|w|, so grids and dense samples are divided by Σw as before",
+            );
         }
         if let Some(Ok(NodeValue::Error(e))) = cx.result(NodeKind::Error).map(|r| &r.value) {
             let low = e.low_frequency.map_or(String::new(), |l| {

@@ -157,6 +157,31 @@ pub fn filter_ui(ui: &mut egui::Ui, f2: &mut crate::core::filter::Filter2D) {
     if let Filter::Mitchell(m) = f2.filter {
         bc_picker(ui, f2, m.b, m.c);
     }
+    if let Some(why) = reconstruction_refusal(f2) {
+        // The kernel stays selectable (its panels show both domains), but the reconstruction
+        // panels show this refusal instead of an image.
+        ui.colored_label(Color32::from_rgb(200, 120, 0), why);
+    }
+}
+
+/// [`Filter2D::reconstruction_refusal`](crate::core::filter::Filter2D::reconstruction_refusal)
+/// of the last filter asked about, cached: it integrates the kernel, and the controls are
+/// drawn every frame.
+fn reconstruction_refusal(f2: &crate::core::filter::Filter2D) -> Option<String> {
+    use std::cell::RefCell;
+    type Cached = Option<(crate::core::filter::Filter2D, Option<String>)>;
+    thread_local!(static LAST: RefCell<Cached> = const { RefCell::new(None) });
+    LAST.with(|last| {
+        let mut last = last.borrow_mut();
+        match &*last {
+            Some((f, why)) if f == f2 => why.clone(),
+            _ => {
+                let why = f2.reconstruction_refusal();
+                *last = Some((*f2, why.clone()));
+                why
+            }
+        }
+    })
 }
 
 /// A square (B, C) ∈ [0,1]² picker with the B + 2C = 1 line (Mitchell–Netravali's family of
