@@ -331,3 +331,56 @@ fn the_app_s_statistics_carry_psa_s_measures_up_to_their_size_limit() {
         }
     }
 }
+
+/// A square grid's cells are cocircular quads: PSA's CGAL triangulation splits them all by the
+/// same diagonal (symbolic perturbation), and every point's neighbour ring is then the same
+/// hexagon of bonds, whose six-fold sum has modulus 2: the order is exactly 2/6 = 1/3. Before
+/// the tie-break `delaunator` split cells both ways: 0.313 at 32 × 32, 0.323 at 64 × 64.
+#[test]
+fn bond_orientational_order_of_a_square_grid_is_exactly_one_third() {
+    use samplescope::core::pattern::Pattern;
+    for n in [16, 64, 256, 1024, 4096] {
+        let grid = Pattern::from_name("grid").unwrap().generate(n, 1).unwrap();
+        assert_eq!(grid.len(), n);
+        let boo = psa::bond_orientational_order(&grid, &Cancel::never()).unwrap();
+        assert!((boo - 1.0 / 3.0).abs() < 1e-12, "n = {n}: {boo}");
+        // Independent of the order in which the points are given.
+        let mut rev = grid.clone();
+        rev.reverse();
+        rev.rotate_left(n / 3);
+        let again = psa::bond_orientational_order(&rev, &Cancel::never()).unwrap();
+        assert_eq!(again.to_bits(), boo.to_bits(), "n = {n}");
+    }
+    // A 12 × 12 grid at an offset and with cells of another size (still all cocircular).
+    let pts: Vec<glam::DVec2> = (0..144)
+        .map(|i| glam::DVec2::new((i % 12) as f64 / 12.0, (i / 12) as f64 / 12.0 + 0.01))
+        .collect();
+    let boo = psa::bond_orientational_order(&pts, &Cancel::never()).unwrap();
+    assert!((boo - 1.0 / 3.0).abs() < 1e-12, "{boo}");
+}
+
+/// A hexagonal lattice on the torus: 26 columns and 30 rows (rows offset by half a cell) make
+/// triangles equilateral to 0.08 % (30/26 ≈ 2/√3), so every ring is a near-regular hexagon of
+/// bonds with 6θ ≈ 0 and the order is 1 up to that distortion (≈ 10⁻⁵); its quads are not
+/// cocircular, so the tie-break leaves them alone. PSA's own near-hexagonal set (32 × 32 rows,
+/// 0.957333) is checked in `psa_statistics_match_psa_b042eea`.
+#[test]
+fn bond_orientational_order_of_the_hexagonal_lattice_is_one() {
+    let (c, r) = (26, 30);
+    let pts: Vec<glam::DVec2> = (0..c * r)
+        .map(|k| {
+            let (i, j) = (k % c, k / c);
+            let shift = if j % 2 == 1 { 0.5 } else { 0.0 };
+            glam::DVec2::new(
+                (i as f64 + shift + 0.25) / c as f64,
+                (j as f64 + 0.5) / r as f64,
+            )
+        })
+        .collect();
+    let boo = psa::bond_orientational_order(&pts, &Cancel::never()).unwrap();
+    assert!((boo - 1.0).abs() < 1e-4, "{boo}");
+    let mut rev = pts.clone();
+    rev.reverse();
+    let again = psa::bond_orientational_order(&rev, &Cancel::never()).unwrap();
+    assert!((again - boo).abs() < 1e-15, "{again} vs {boo}");
+}

@@ -83,7 +83,9 @@
 //! bond directions p_i → q_k and a plain mean; both give the same value for every lattice,
 //! e.g. 1 for the hexagonal lattice and 1/3 for a square lattice with one diagonal per cell,
 //! but differ on irregular sets.) The triangulation is toroidal, as PSA's: the points and
-//! their periodic copies in a band [−w, 1 + w]² are triangulated ([`delaunator`]); w starts at
+//! their periodic copies in a band [−w, 1 + w]² are triangulated ([`crate::core::torus::delaunay`]:
+//! `delaunator`, then made unique on cocircular points by CGAL's symbolic perturbation, which
+//! PSA's CGAL triangulation uses, so that a square grid gives exactly 1/3 as PSA does); w starts at
 //! PSA's 4/√N and doubles (up to 2, with copies p + (a, b), a, b ∈ −2…2) until every
 //! triangle around an original point has its circumdisc's bounding box inside the band, which
 //! makes it a Delaunay triangle of the infinite periodic set (`pattern/optimize.rs` gives the
@@ -584,7 +586,7 @@ fn toroidal_rings(points: &[DVec2], w: f64, accept: bool) -> Option<Vec<Vec<DVec
     use delaunator::{next_halfedge, EMPTY};
     let n = points.len();
     let all = crate::core::torus::with_periodic_copies(points, w, true);
-    let tri = delaunator::triangulate(&all);
+    let tri = crate::core::torus::delaunay(&all);
     let at = |i: usize| DVec2::new(all[i].x, all[i].y);
     // One halfedge ending at each original point.
     let mut inedge = vec![EMPTY; n];
