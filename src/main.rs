@@ -46,10 +46,22 @@ enum Command {
 fn main() -> ExitCode {
     let cli = match Cli::try_parse() {
         Ok(c) => c,
-        Err(e) => {
-            let code = if e.use_stderr() { 2 } else { 0 };
+        Err(e) if e.use_stderr() => {
             let _ = e.print();
-            return ExitCode::from(code);
+            return ExitCode::from(2);
+        }
+        // --help and --version: their text is the output, so a failed write is a failure
+        // (`--help > /dev/full`), as for every other output; a closed pipe ends quietly.
+        Err(e) => {
+            use std::io::Write as _;
+            let written = e.print().and_then(|()| std::io::stdout().flush());
+            return match written.map_err(cli::CliError::Output) {
+                Err(e) if !e.is_broken_pipe() => {
+                    eprintln!("error: {e}");
+                    ExitCode::from(e.exit_code())
+                }
+                _ => ExitCode::SUCCESS,
+            };
         }
     };
     let session = cli::session::Session::new(&cli.budget);

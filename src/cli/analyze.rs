@@ -43,11 +43,20 @@ pub struct AnalyzeArgs {
     #[arg(required_unless_present = "points", conflicts_with = "points")]
     pub pattern: Option<String>,
     /// Number of points (with a pattern).
-    #[arg(short = 'n', value_parser = parse_n, required_unless_present = "points")]
+    #[arg(
+        short = 'n',
+        value_parser = parse_n,
+        required_unless_present = "points",
+        conflicts_with = "points"
+    )]
     pub n: Option<usize>,
-    /// Seed (with a pattern).
-    #[arg(long, default_value_t = 0, conflicts_with = "points")]
-    pub seed: u64,
+    /// Seed (with a random pattern) [default: 0].
+    #[arg(long, conflicts_with = "points")]
+    pub seed: Option<u64>,
+    /// Keep the points placed when the pattern stops short of N (poisson-dart, poisson-bridson)
+    /// instead of failing.
+    #[arg(long, conflicts_with = "points")]
+    pub allow_fewer: bool,
     /// Pattern parameter `key=value`; repeatable.
     #[arg(long = "set", value_name = "KEY=VALUE", conflicts_with = "points")]
     pub set: Vec<String>,
@@ -87,13 +96,6 @@ pub struct AnalyzeArgs {
     pub json: bool,
 }
 
-fn io_err(path: &str) -> impl FnOnce(std::io::Error) -> CliError + '_ {
-    move |source| CliError::Io {
-        path: path.to_string(),
-        source,
-    }
-}
-
 /// A metric's error as a usage error (bad input), cancellation as cancellation.
 fn metrics_err(e: MetricsError) -> CliError {
     match e {
@@ -105,6 +107,7 @@ fn metrics_err(e: MetricsError) -> CliError {
 /// Runs `samplescope analyze`.
 pub fn run(args: &AnalyzeArgs, session: &Session) -> Result<(), CliError> {
     let cancel = &session.cancel;
+    let seed_arg = args.seed.unwrap_or(0);
     let mut timings: Vec<(String, f64)> = Vec::new();
     let req = SpectrumRequest {
         size: args.size,
@@ -128,7 +131,7 @@ pub fn run(args: &AnalyzeArgs, session: &Session) -> Result<(), CliError> {
                 args.realizations
             )));
         }
-        let file = std::fs::File::open(path).map_err(io_err(path))?;
+        let file = super::open_input(Path::new(path))?;
         let mode = if args.normalize {
             OutOfRange::NormalizeToBoundingBox
         } else {
@@ -147,7 +150,20 @@ pub fn run(args: &AnalyzeArgs, session: &Session) -> Result<(), CliError> {
     } else {
         let name = args.pattern.as_deref().unwrap_or_default();
         let n = args.n.unwrap_or(0);
-        (None, Some((pattern_from_args(name, &args.set)?, n)))
+        let pattern = pattern_from_args(name, &args.set)?;
+        super::check_seed(&pattern, args.seed, "--seed")?;
+        super::check_allow_fewer(&pattern, args.allow_fewer)?;
+        if args.realizations > 1 && !pattern.is_random() {
+            return Err(CliError::Usage(format!(
+                "--realizations {}: {} with these parameters is deterministic, so every \
+                 realization is the same point set and averaging them has no effect; leave it out",
+                args.realizations,
+                pattern.name()
+            )));
+        }
+        // Everything the generator would refuse is refused before the estimate and the budget.
+        pattern.validate(n)?;
+        (None, Some((pattern, n)))
     };
     req.validate().map_err(|e| CliError::Usage(e.to_string()))?;
     let n = match (&file_points, &generator) {
@@ -186,11 +202,8 @@ pub fn run(args: &AnalyzeArgs, session: &Session) -> Result<(), CliError> {
     let points = match (file_points, &generator) {
         (Some(pts), _) => pts,
         (None, Some((pattern, n))) => {
-            let g = pattern.generate_with(*n, args.seed, cancel)?;
-            if let Some(note) = &g.note {
-                eprintln!("note: {note}");
-            }
-            g.points
+            let g = pattern.generate_with(*n, seed_arg, cancel)?;
+            super::require_points(g, pattern, args.allow_fewer)?
         }
         (None, None) => Vec::new(),
     };
@@ -221,8 +234,8 @@ pub fn run(args: &AnalyzeArgs, session: &Session) -> Result<(), CliError> {
     };
 
     progress.stage(first + 2);
-    let first_seed = derive_seed(args.seed, 0);
-    let seed = args.seed;
+    let first_seed = derive_seed(seed_arg, 0);
+    let seed = seed_arg;
     let pts = points.clone();
     let (spec, report) = average_periodogram(
         &req,
@@ -264,7 +277,7 @@ pub fn run(args: &AnalyzeArgs, session: &Session) -> Result<(), CliError> {
                     m,
                     args.realizations,
                     req.method,
-                    args.seed
+                    seed_arg
                 ),
             ),
         ];

@@ -29,8 +29,9 @@ pub struct ConvergeArgs {
     pub integrand_set: Vec<String>,
     /// A new random instance of the integrand's family per realization (disk centre in
     /// [0.2,0.8]², r in [0.1,0.4]; gaussian centre in [0,1]², σ in [0.05,0.3]; heaviside p in
-    /// [0,1]², θ in [0°,360°); cosines a, b in [0.5,8]).
-    #[arg(long)]
+    /// [0,1]², θ in [0°,360°); cosines a, b in [0.5,8]). Not with --integrand-set (the drawn
+    /// instances replace the integrand's parameters) nor with bilinear (it has no family).
+    #[arg(long, conflicts_with = "integrand_set")]
     pub randomize: bool,
     /// Sample counts, comma-separated (e.g. 16,64,256,1024), each in 1..=1048576, at most 64.
     #[arg(long = "n", value_name = "N,N,…")]
@@ -38,10 +39,11 @@ pub struct ConvergeArgs {
     /// Realizations per N, in 1..=4096.
     #[arg(long, value_name = "R")]
     pub realizations: String,
-    /// Seed of the realizations' streams.
-    #[arg(long, default_value_t = 0)]
-    pub seed: u64,
-    /// No Cranley–Patterson rotation of deterministic patterns (every realization the same).
+    /// Seed of the realizations' streams [default: 0].
+    #[arg(long)]
+    pub seed: Option<u64>,
+    /// No Cranley–Patterson rotation of deterministic patterns (every realization the same);
+    /// refused with a random pattern, which is never shifted.
     #[arg(long = "no-shift")]
     pub no_shift: bool,
     /// Print one JSON object.
@@ -140,12 +142,39 @@ pub fn run(args: &ConvergeArgs, session: &Session) -> Result<(), CliError> {
             samplescope::core::integration::MAX_REALIZATIONS
         ))
     })?;
+    if args.randomize && matches!(integrand, Integrand::Bilinear(_)) {
+        return Err(CliError::Usage(
+            "--randomize: bilinear has no parameters, so there is no family to draw instances \
+             from and --randomize would have no effect; leave it out"
+                .into(),
+        ));
+    }
+    if args.no_shift && pattern.is_random() {
+        return Err(CliError::Usage(format!(
+            "--no-shift: {} (with these parameters) is a random pattern, and random patterns are \
+             never shifted (each realization draws new points), so --no-shift would have no \
+             effect; leave it out",
+            pattern.name()
+        )));
+    }
+    if let (Some(seed), false, true, false) = (
+        args.seed,
+        pattern.is_random(),
+        args.no_shift,
+        args.randomize,
+    ) {
+        return Err(CliError::Usage(format!(
+            "--seed {seed}: {} is deterministic and with --no-shift and without --randomize \
+             nothing is drawn at random, so --seed would have no effect; leave it out",
+            pattern.name()
+        )));
+    }
     let req = StudyRequest {
         pattern,
         integrand,
         ns,
         realizations,
-        seed: args.seed,
+        seed: args.seed.unwrap_or(0),
         shift: !args.no_shift,
         randomize: args.randomize,
     };

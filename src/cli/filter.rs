@@ -41,13 +41,14 @@ pub struct FilterArgs {
     #[arg(long)]
     pub json: bool,
     /// List every filter and preset with its parameters.
-    #[arg(long)]
+    #[arg(long, conflicts_with_all = ["kernel", "set", "mode", "response", "json"])]
     pub list: bool,
 }
 
 /// Runs `samplescope filter`.
 pub fn run(args: &FilterArgs, session: &Session) -> Result<(), CliError> {
     if args.list {
+        session.refuse_budget_flags("--list")?;
         out!("{}", list_text())?;
         return Ok(());
     }

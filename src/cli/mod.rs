@@ -11,7 +11,7 @@ pub mod session;
 
 use samplescope::core::filter::FilterError;
 use samplescope::core::params::{ParamError, ParamKind, ParamSpec, Params};
-use samplescope::core::pattern::{Pattern, PatternError};
+use samplescope::core::pattern::{Generated, Pattern, PatternError};
 
 /// An error of a subcommand.
 #[derive(Debug, thiserror::Error)]
@@ -43,6 +43,9 @@ pub enum CliError {
     /// program quietly instead, see `main`).
     #[error("writing to standard output: {0}")]
     Output(#[source] std::io::Error),
+    /// The environment failed us (exit status 1): an existing file could not be read.
+    #[error("{0}")]
+    Environment(String),
     /// Reading or writing a file failed (exit status 1).
     #[error("{path}: {source}")]
     Io {
@@ -84,7 +87,10 @@ impl CliError {
     /// The process exit status for this error.
     pub fn exit_code(&self) -> u8 {
         match self {
-            CliError::Io { .. } | CliError::Gui(_) | CliError::Output(_) => 1,
+            CliError::Io { .. }
+            | CliError::Environment(_)
+            | CliError::Gui(_)
+            | CliError::Output(_) => 1,
             CliError::Cancelled => 130,
             _ => 2,
         }
@@ -101,32 +107,147 @@ pub fn pattern_from_args(name: &str, settings: &[String]) -> Result<Pattern, Cli
 /// Applies `key=value` settings (from `flag`, e.g. `--set`) to any parameter set through its
 /// descriptors: enum values unquoted (`shape=square`), booleans `true`/`false`, lists
 /// `amps=[0.5,0.25]`. Enum settings go first, so that a parameter that exists only for one
-/// option (`beta` with `window=kaiser`) may be given in any order. Every value is checked;
-/// the error names the owner, the field and the allowed range.
+/// option (`beta` with `window=kaiser`) may be given in any order. Each value is checked
+/// against its own range as it is applied; the constraints between fields (a band-pass's
+/// `low < high`) are checked once, after every setting, so the order of the settings never
+/// matters. A key given twice is refused (the first would have no effect). Errors name the
+/// owner, the field and the allowed range; a field the user did not set is marked
+/// `(default)`.
 pub fn apply_settings(
     params: &mut impl Params,
     flag: &str,
     settings: &[String],
     list_hint: &str,
 ) -> Result<(), CliError> {
-    let mut pairs = Vec::with_capacity(settings.len());
+    let mut pairs: Vec<(&str, &str)> = Vec::with_capacity(settings.len());
     for s in settings {
         let (k, v) = s.split_once('=').ok_or_else(|| {
             CliError::Usage(format!(
-                "{flag} {s}: expected key=value (see `{list_hint}`)"
+                "{flag} {}: expected key=value (see `{list_hint}`)",
+                samplescope::core::params::fmt_text(s)
             ))
         })?;
-        pairs.push((k.trim(), v));
+        let k = k.trim();
+        if let Some((_, first)) = pairs.iter().find(|(key, _)| *key == k) {
+            return Err(CliError::Usage(format!(
+                "{flag} {k}: given twice ({k}={} and {k}={}): give each key once",
+                samplescope::core::params::fmt_text(first),
+                samplescope::core::params::fmt_text(v)
+            )));
+        }
+        pairs.push((k, v));
     }
     let is_choice = |p: &dyn Fn(&str) -> Option<ParamSpec>, k: &str| {
         matches!(p(k).map(|s| s.kind), Some(ParamKind::Choice { .. }))
     };
     let snapshot = params.clone();
     pairs.sort_by_key(|(k, _)| !is_choice(&|key| snapshot.spec(key), k));
+    let mut given = Vec::with_capacity(pairs.len());
     for (k, v) in pairs {
-        params.set(k, v)?;
+        given.push(params.set_field(k, v)?);
+    }
+    params.check_params().map_err(|e| match e {
+        ParamError::Invalid {
+            owner,
+            field,
+            value,
+            allowed,
+        } if !given.contains(&field) => ParamError::Invalid {
+            owner,
+            field,
+            value: format!("{value} (default)"),
+            allowed,
+        },
+        e => e,
+    })?;
+    Ok(())
+}
+
+/// Refuses a seed given explicitly (`flag`) for a deterministic pattern: it would have no
+/// effect (the pattern draws no random numbers).
+pub fn check_seed(pattern: &Pattern, seed: Option<u64>, flag: &str) -> Result<(), CliError> {
+    match seed {
+        Some(s) if !pattern.is_random() => Err(CliError::Usage(format!(
+            "{flag} {s}: {} with these parameters is deterministic (it draws no random numbers), \
+             so {flag} would have no effect; leave it out",
+            pattern.name()
+        ))),
+        _ => Ok(()),
+    }
+}
+
+/// Refuses `--allow-fewer` for a pattern that always places exactly N points (or refuses N).
+pub fn check_allow_fewer(pattern: &Pattern, allow_fewer: bool) -> Result<(), CliError> {
+    if allow_fewer && !pattern.may_place_fewer() {
+        return Err(CliError::Usage(format!(
+            "--allow-fewer: {} always places exactly N points, so --allow-fewer would have no \
+             effect (only poisson-dart and poisson-bridson can stop short)",
+            pattern.name()
+        )));
     }
     Ok(())
+}
+
+/// The points of a generation: all N of them; or, with `--allow-fewer`, those placed (a note
+/// on standard error says how many); otherwise a pattern that stopped short is bad input,
+/// naming the parameter that stopped it.
+pub fn require_points(
+    generated: Generated,
+    pattern: &Pattern,
+    allow_fewer: bool,
+) -> Result<Vec<glam::DVec2>, CliError> {
+    if allow_fewer {
+        if let Some(note) = &generated.note {
+            eprintln!("note: {note}");
+        }
+        return Ok(generated.points);
+    }
+    generated.require_all(pattern.name()).map_err(|e| match e {
+        e @ PatternError::TooFew { .. } => CliError::Usage(format!(
+            "{e}; or pass --allow-fewer to keep the points placed"
+        )),
+        e => CliError::Pattern(e),
+    })
+}
+
+/// Opens a file the user named for reading. A path that does not exist, is a directory or
+/// goes through something that is not a directory is bad input (status 2); any other failure
+/// (permissions, a device error) is the environment's (status 1). See the README's "Exit
+/// status".
+pub fn open_input(path: &std::path::Path) -> Result<std::fs::File, CliError> {
+    let file = std::fs::File::open(path).map_err(|e| input_error(path, e))?;
+    if file.metadata().is_ok_and(|m| m.is_dir()) {
+        return Err(CliError::Usage(format!(
+            "{}: is a directory, not a file",
+            path.display()
+        )));
+    }
+    Ok(file)
+}
+
+/// The [`CliError`] for a failure to open the input file `path`: bad input (2) when the file
+/// is not there, the environment's (1) otherwise.
+pub fn input_error(path: &std::path::Path, e: std::io::Error) -> CliError {
+    use std::io::ErrorKind as K;
+    match e.kind() {
+        K::NotFound | K::IsADirectory | K::NotADirectory | K::InvalidFilename => {
+            CliError::Usage(format!("{}: {e}", path.display()))
+        }
+        _ => CliError::Io {
+            path: path.display().to_string(),
+            source: e,
+        },
+    }
+}
+
+/// The [`CliError`] of a scene that cannot be loaded: bad input (status 2) unless reading an
+/// existing file failed ([`SceneError::is_environment`]).
+pub fn scene_error(e: samplescope::scene::SceneError) -> CliError {
+    if e.is_environment() {
+        CliError::Environment(e.to_string())
+    } else {
+        CliError::Usage(e.to_string())
+    }
 }
 
 /// Parses `-n`, accepting only a positive integer that fits in memory.

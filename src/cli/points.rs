@@ -2,7 +2,7 @@
 
 use super::out;
 use super::session::{write_output, Session};
-use super::{parse_n, pattern_from_args, CliError};
+use super::{check_allow_fewer, check_seed, parse_n, pattern_from_args, require_points, CliError};
 use samplescope::core::budget;
 use samplescope::core::params::Params;
 use samplescope::core::pattern::{sphere, Pattern};
@@ -18,9 +18,10 @@ pub struct PointsArgs {
     /// Number of points.
     #[arg(short = 'n', value_parser = parse_n, required_unless_present = "list")]
     pub n: Option<usize>,
-    /// Seed of the random stream (ignored by deterministic patterns).
-    #[arg(long, default_value_t = 0)]
-    pub seed: u64,
+    /// Seed of the random stream [default: 0] (refused with a deterministic pattern, which has
+    /// none).
+    #[arg(long)]
+    pub seed: Option<u64>,
     /// Pattern parameter, `key=value`; repeatable.
     #[arg(long = "set", value_name = "KEY=VALUE")]
     pub set: Vec<String>,
@@ -30,14 +31,22 @@ pub struct PointsArgs {
     /// Map the points onto the unit sphere (cylinder wrap + radial projection) and write `x,y,z`.
     #[arg(long)]
     pub sphere: bool,
-    /// List every pattern with its parameters, defaults and allowed ranges.
+    /// Keep the points placed when a pattern stops short of N (dart throwing's `max_misses`,
+    /// Bridson's `radius`) instead of failing; a note on standard error says how many.
     #[arg(long)]
+    pub allow_fewer: bool,
+    /// List every pattern with its parameters, defaults and allowed ranges.
+    #[arg(
+        long,
+        conflicts_with_all = ["pattern", "n", "seed", "set", "out", "sphere", "allow_fewer"]
+    )]
     pub list: bool,
 }
 
 /// Runs `samplescope points`.
 pub fn run(args: &PointsArgs, session: &Session) -> Result<(), CliError> {
     if args.list {
+        session.refuse_budget_flags("--list")?;
         out!("{}", list_text())?;
         return Ok(());
     }
@@ -47,23 +56,24 @@ pub fn run(args: &PointsArgs, session: &Session) -> Result<(), CliError> {
         ));
     };
     let pattern = pattern_from_args(name, &args.set)?;
+    check_seed(&pattern, args.seed, "--seed")?;
+    check_allow_fewer(&pattern, args.allow_fewer)?;
+    pattern.validate(n)?;
     let plan = vec![budget::pattern(&pattern, n), budget::csv(n, args.sphere)];
     let Some(progress) = session.admit(plan)? else {
         return Ok(());
     };
     let cancel = &session.cancel;
     progress.stage(0);
-    let generated = pattern.generate_observed(n, args.seed, cancel, &mut |r| {
+    let generated = pattern.generate_observed(n, args.seed.unwrap_or(0), cancel, &mut |r| {
         progress.steps_done(r.step, r.steps)
     })?;
-    if let Some(note) = &generated.note {
-        eprintln!("note: {note}");
-    }
+    let points = require_points(generated, &pattern, args.allow_fewer)?;
     progress.stage(1);
-    let mut text = String::with_capacity(generated.points.len() * 44);
+    let mut text = String::with_capacity(points.len() * 44);
     if args.sphere {
         text.push_str("x,y,z\n");
-        for (i, p) in generated.points.iter().enumerate() {
+        for (i, p) in points.iter().enumerate() {
             if i % 4096 == 0 {
                 cancel.check().map_err(|_| CliError::Cancelled)?;
             }
@@ -72,7 +82,7 @@ pub fn run(args: &PointsArgs, session: &Session) -> Result<(), CliError> {
         }
     } else {
         text.push_str("x,y\n");
-        for (i, p) in generated.points.iter().enumerate() {
+        for (i, p) in points.iter().enumerate() {
             if i % 4096 == 0 {
                 cancel.check().map_err(|_| CliError::Cancelled)?;
             }

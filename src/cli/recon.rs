@@ -46,9 +46,13 @@ pub struct ReconArgs {
     /// Samples per pixel: supersample with the pattern in every pixel instead.
     #[arg(long)]
     pub spp: Option<usize>,
-    /// Seed.
-    #[arg(long, default_value_t = 0)]
-    pub seed: u64,
+    /// Seed [default: 0] (refused with a deterministic pattern, which has none).
+    #[arg(long)]
+    pub seed: Option<u64>,
+    /// With -n: keep the samples placed when the pattern stops short of N (poisson-dart,
+    /// poisson-bridson) instead of failing. Not with --spp: every pixel needs all its samples.
+    #[arg(long, conflicts_with = "spp")]
+    pub allow_fewer: bool,
     /// Reconstruction filter (see `filter --list`).
     #[arg(long, default_value = "gaussian")]
     pub filter: String,
@@ -121,6 +125,9 @@ pub fn run(args: &ReconArgs, session: &Session) -> Result<(), CliError> {
     if let Some(why) = filter.reconstruction_refusal() {
         return Err(CliError::Usage(format!("--filter: {why}")));
     }
+    super::check_seed(&pattern, args.seed, "--seed")?;
+    super::check_allow_fewer(&pattern, args.allow_fewer)?;
+    let seed = args.seed.unwrap_or(0);
     let usage = |e: &dyn std::fmt::Display| CliError::Usage(e.to_string());
     // The sizes the estimates take are checked first (the same errors the core gives).
     let range = |field: &'static str, value: usize, max: usize| {
@@ -135,7 +142,7 @@ pub fn run(args: &ReconArgs, session: &Session) -> Result<(), CliError> {
             }))
         }
     };
-    range("w", args.size, MAX_W)?;
+    range("--size", args.size, MAX_W)?;
     let w = args.size;
     // Ok(spp): supersampling; Err(n): n scattered samples.
     let sampling = match (args.spp, args.n) {
@@ -149,14 +156,18 @@ pub fn run(args: &ReconArgs, session: &Session) -> Result<(), CliError> {
     };
     let mut plan = match sampling {
         Ok(spp) => {
-            range("spp", spp, MAX_SPP)?;
+            range("--spp", spp, MAX_SPP)?;
+            pattern.validate(spp)?;
             vec![budget::supersampling(&signal, w, spp, &pattern, &filter)]
         }
-        Err(n) => vec![
-            budget::pattern(&pattern, n),
-            budget::sampling(&signal, n),
-            budget::scattered(n, w, &filter),
-        ],
+        Err(n) => {
+            pattern.validate(n)?;
+            vec![
+                budget::pattern(&pattern, n),
+                budget::sampling(&signal, n),
+                budget::scattered(n, w, &filter),
+            ]
+        }
     };
     let after = plan.len();
     plan.push(budget::reference(&signal, w));
@@ -171,21 +182,16 @@ pub fn run(args: &ReconArgs, session: &Session) -> Result<(), CliError> {
     let t0 = Instant::now();
     let recon = match sampling {
         Ok(spp) => {
-            let provider = PatternProvider {
-                pattern,
-                seed: args.seed,
-            };
+            let provider = PatternProvider { pattern, seed };
             supersample(&signal, w, spp, &provider, &filter, cancel).map_err(|e| usage(&e))?
         }
         Err(n) => {
-            let g = pattern.generate_with(n, args.seed, cancel)?;
-            if let Some(note) = &g.note {
-                eprintln!("note: {note}");
-            }
+            let g = pattern.generate_with(n, seed, cancel)?;
+            let points = super::require_points(g, &pattern, args.allow_fewer)?;
             progress.stage(1);
-            let values = sample_signal(&signal, &g.points, cancel).map_err(|e| usage(&e))?;
+            let values = sample_signal(&signal, &points, cancel).map_err(|e| usage(&e))?;
             progress.stage(2);
-            reconstruct_scattered(&g.points, &values, w, &filter, cancel).map_err(|e| usage(&e))?
+            reconstruct_scattered(&points, &values, w, &filter, cancel).map_err(|e| usage(&e))?
         }
     };
     let recon_ms = t0.elapsed().as_secs_f64() * 1e3;
@@ -206,7 +212,7 @@ pub fn run(args: &ReconArgs, session: &Session) -> Result<(), CliError> {
                 "Parameters",
                 format!(
                     "signal={signal:?} pattern={pattern:?} n={:?} spp={:?} seed={} filter={filter:?} size={w}",
-                    args.n, args.spp, args.seed
+                    args.n, args.spp, seed
                 ),
             ),
         ];

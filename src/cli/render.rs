@@ -20,7 +20,7 @@ use samplescope::export::figure::{
 };
 use samplescope::export::ExportError;
 use samplescope::scene::graph::{NodeKind, NodeResult};
-use samplescope::scene::{figure, panels, Scene, SceneError};
+use samplescope::scene::{figure, panels, Scene};
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
@@ -33,18 +33,20 @@ pub struct RenderArgs {
     /// Output directory (created if missing).
     #[arg(long, value_name = "DIR")]
     pub out: PathBuf,
-    /// Figure scale, 1..=4: every figure is scale × its base size (text and lines too).
-    #[arg(long, default_value_t = 1)]
-    pub scale: u32,
+    /// Figure scale, 1..=4 [default: 1]: every figure is scale × its base size (text and lines
+    /// too). Not with `--format csv` alone (data has no size).
+    #[arg(long)]
+    pub scale: Option<u32>,
     /// Formats to write, comma-separated: png, svg, pdf, csv (the composites in each of png,
     /// svg and pdf asked for).
     #[arg(long, value_delimiter = ',', default_value = "png,svg,csv", value_enum)]
     pub format: Vec<Format>,
     /// Shape of the frame the composites are laid out to fill, W:H with W and H positive
     /// numbers and W/H in 0.1..=10 (e.g. 16:9, 4:3, 1:1, 9:16). The column and comparison
-    /// composites take the grid of panels that covers the largest part of such a frame.
-    #[arg(long, value_name = "W:H", default_value = "16:9", value_parser = parse_aspect)]
-    pub aspect: Aspect,
+    /// composites take the grid of panels that covers the largest part of such a frame
+    /// [default: 16:9]. Not with `--format csv` alone (no composite is drawn).
+    #[arg(long, value_name = "W:H", value_parser = parse_aspect)]
+    pub aspect: Option<Aspect>,
     /// Compute reference images even if the disk cache has them (and store nothing there).
     #[arg(long)]
     pub no_cache: bool,
@@ -145,15 +147,31 @@ fn evaluate(
 
 /// Runs `samplescope render`.
 pub fn run(args: &RenderArgs, session: &Session) -> Result<(), CliError> {
-    if !SCALES.contains(&args.scale) {
+    let scale = args.scale.unwrap_or(1);
+    if !SCALES.contains(&scale) {
         return Err(CliError::Usage(format!(
             "--scale = {}: must be an integer in {}..={}",
-            args.scale,
+            scale,
             SCALES.start(),
             SCALES.end()
         )));
     }
     let formats = formats(&args.format);
+    if formats.iter().all(|f| f.picture().is_none()) {
+        // CSV only: nothing is drawn, so the drawing's size and shape have no effect.
+        let given = [
+            args.scale.map(|s| format!("--scale {s}")),
+            args.aspect.map(|_| "--aspect".to_string()),
+        ];
+        if let Some(flag) = given.into_iter().flatten().next() {
+            return Err(CliError::Usage(format!(
+                "{flag} cannot be used with --format csv: CSV files hold the figures' data, \
+                 not pictures, so {flag} would have no effect; add png, svg or pdf to --format \
+                 or leave it out"
+            )));
+        }
+    }
+    let aspect = args.aspect.unwrap_or(Aspect::SLIDE);
     // The output directory is checked before any work: an existing file there is bad input.
     if args.out.exists() && !args.out.is_dir() {
         return Err(CliError::Usage(format!(
@@ -162,13 +180,21 @@ pub fn run(args: &RenderArgs, session: &Session) -> Result<(), CliError> {
         )));
     }
     let source = args.scene.display().to_string();
-    let scene = Scene::load(&args.scene).map_err(|e| match e {
-        SceneError::Io { path, message } => CliError::Io {
-            path,
-            source: std::io::Error::other(message),
-        },
-        other => CliError::Usage(other.to_string()),
-    })?;
+    let scene = Scene::load(&args.scene).map_err(super::scene_error)?;
+    // What a column's points node would refuse is refused before the estimate and the budget,
+    // with the words of that node's failure.
+    for (c, col) in scene.columns.iter().enumerate() {
+        if col.points.is_none() {
+            if let Err(e) = col.pattern.validate(scene.n) {
+                return Err(CliError::Usage(format!(
+                    "{source}: column {} ({}): {} node failed: {e}",
+                    c + 1,
+                    col.title(),
+                    NodeKind::Points.name()
+                )));
+            }
+        }
+    }
     let stem = args
         .scene
         .file_stem()
@@ -202,7 +228,7 @@ pub fn run(args: &RenderArgs, session: &Session) -> Result<(), CliError> {
         );
     }
     let composite = panels::comparison(&scene);
-    let s = args.scale;
+    let s = scale;
     for (c, (ctx, data)) in columns.iter().enumerate() {
         for kind in panels::available_in(&scene, c) {
             for &f in &formats {
@@ -224,12 +250,12 @@ pub fn run(args: &RenderArgs, session: &Session) -> Result<(), CliError> {
             continue;
         }
         for p in formats.iter().filter_map(|f| f.picture()) {
-            let bytes = column_file(&own, ctx, data, s, args.aspect, p).map_err(export_err)?;
+            let bytes = column_file(&own, ctx, data, s, aspect, p).map_err(export_err)?;
             write(&args.out.join(column_file_name(ctx, s, p)), &bytes, cancel)?;
         }
     }
     let pictures: Vec<FileFormat> = formats.iter().filter_map(|f| f.picture()).collect();
-    let (cw, ch) = comparison_size(&composite, &columns, s, args.aspect);
+    let (cw, ch) = comparison_size(&composite, &columns, s, aspect);
     if !composite.is_empty() && !pictures.is_empty() && cw * ch > MAX_COMPOSITE_PIXELS {
         eprintln!(
             "warning: comparison skipped: {} columns at --scale {s} would be {cw}×{ch} pixels, \
@@ -241,8 +267,7 @@ pub fn run(args: &RenderArgs, session: &Session) -> Result<(), CliError> {
             .first()
             .map_or(stem.as_str(), |(c, _)| c.scene_name.as_str());
         for p in pictures {
-            let bytes =
-                comparison_file(&composite, &columns, s, args.aspect, p).map_err(export_err)?;
+            let bytes = comparison_file(&composite, &columns, s, aspect, p).map_err(export_err)?;
             let file = comparison_file_name(name, scene.n, s, p);
             write(&args.out.join(file), &bytes, cancel)?;
         }

@@ -60,6 +60,9 @@ pub struct Session {
     /// The flag under `cancel`, which the signal handlers set.
     flag: Arc<AtomicBool>,
     estimate_only: bool,
+    /// The first budget flag given on the command line, if any (refused where no work is
+    /// estimated: `--list`).
+    budget_flag: Option<&'static str>,
 }
 
 impl Session {
@@ -77,6 +80,27 @@ impl Session {
             flag: flag.clone(),
             cancel: Cancel::from_flag(flag),
             estimate_only: args.estimate,
+            budget_flag: if args.estimate {
+                Some("--estimate")
+            } else if args.budget.is_some() {
+                Some("--budget")
+            } else if args.budget_memory.is_some() {
+                Some("--budget-memory")
+            } else {
+                None
+            },
+        }
+    }
+
+    /// Refuses `--estimate`, `--budget` and `--budget-memory` for `what` (e.g. `--list`), which
+    /// computes nothing: they would have no effect.
+    pub fn refuse_budget_flags(&self, what: &str) -> Result<(), CliError> {
+        match self.budget_flag {
+            Some(flag) => Err(CliError::Usage(format!(
+                "{flag} cannot be used with {what}: {what} computes nothing, so {flag} would have \
+                 no effect"
+            ))),
+            None => Ok(()),
         }
     }
 

@@ -20,12 +20,14 @@
 pub enum ParamKind {
     /// An integer in `min..=max`.
     Int { default: i64, min: i64, max: i64 },
-    /// A finite float in `[min, max]`, or in `(min, max]` when `min_exclusive`.
+    /// A finite float in `[min, max]`; an end marked exclusive is left out (`(min, max]`,
+    /// `[min, max)`), and the message prints that end with a parenthesis.
     Float {
         default: f64,
         min: f64,
         max: f64,
         min_exclusive: bool,
+        max_exclusive: bool,
     },
     /// One of a fixed list of names.
     Choice {
@@ -192,11 +194,13 @@ impl ParamSpec {
                 min,
                 max,
                 min_exclusive,
+                max_exclusive,
                 ..
             } => {
                 let open = if *min_exclusive { "(" } else { "[" };
+                let close = if *max_exclusive { ")" } else { "]" };
                 format!(
-                    "a finite number in {open}{}, {}]",
+                    "a finite number in {open}{}, {}{close}",
                     fmt_num(*min),
                     fmt_num(*max)
                 )
@@ -239,8 +243,13 @@ impl ParamSpec {
                 min,
                 max,
                 min_exclusive,
+                max_exclusive,
                 ..
-            } => v.is_finite() && v <= max && if min_exclusive { v > min } else { v >= min },
+            } => {
+                let above = if min_exclusive { v > min } else { v >= min };
+                let below = if max_exclusive { v < max } else { v <= max };
+                v.is_finite() && above && below
+            }
             ParamKind::List { min, max, .. } => v.is_finite() && v >= min && v <= max,
             _ => false,
         }
@@ -409,6 +418,19 @@ pub trait Params: Clone {
         Ok(())
     }
 
+    /// Sets `key` from text checked against its own descriptor only, not the joint
+    /// constraints: for applying several settings at once, in any order, before one
+    /// [`Params::check_params`] of the whole set (`low=0.4 high=0.5` on a band-pass whose
+    /// default `high` is below 0.4). Returns the parameter's static name.
+    fn set_field(&mut self, key: &str, text: &str) -> Result<&'static str, ParamError> {
+        let spec = self.lookup(key)?;
+        let v = spec
+            .parse(text)
+            .ok_or_else(|| spec.invalid(self.owner(), fmt_text(text)))?;
+        self.put(spec.name, v);
+        Ok(spec.name)
+    }
+
     /// Sets `key` from text (`--set key=value`); applied only if the whole set is then valid.
     fn set(&mut self, key: &str, text: &str) -> Result<(), ParamError> {
         let spec = self.lookup(key)?;
@@ -446,8 +468,9 @@ pub trait Params: Clone {
 ///
 /// Field kinds:
 /// - `int(default, min, max, "doc")`, stored as `u32`;
-/// - `float(default, min, max, "doc")` and `positive(default, max, "doc")` (in `(0, max]`),
-///   stored as `f64`;
+/// - `float(default, min, max, "doc")` (in `[min, max]`), `below(default, min, max, "doc")` (in
+///   `[min, max)`: `max` itself is refused, e.g. an offset modulo 1) and
+///   `positive(default, max, "doc")` (in `(0, max]`), stored as `f64`;
 /// - `choice(Type, "doc")`, stored as `Type` (a [`ChoiceParam`]), default `Type::default()`;
 /// - `flag(default, "doc")`, stored as `bool`;
 /// - `list(N, [defaults], min, max, "doc")`, stored as `[f64; N]`.
@@ -518,12 +541,14 @@ macro_rules! declare_params {
     (@ty int ($($a:tt)*)) => { u32 };
     (@ty float ($($a:tt)*)) => { f64 };
     (@ty positive ($($a:tt)*)) => { f64 };
+    (@ty below ($($a:tt)*)) => { f64 };
     (@ty choice ($t:ty, $doc:literal)) => { $t };
     (@ty flag ($($a:tt)*)) => { bool };
     (@ty list ($n:literal, $($a:tt)*)) => { [f64; $n] };
     (@default int ($d:expr, $min:expr, $max:expr, $doc:literal)) => { $d };
     (@default float ($d:expr, $min:expr, $max:expr, $doc:literal)) => { $d };
     (@default positive ($d:expr, $max:expr, $doc:literal)) => { $d };
+    (@default below ($d:expr, $min:expr, $max:expr, $doc:literal)) => { $d };
     (@default choice ($t:ty, $doc:literal)) => { <$t>::default() };
     (@default flag ($d:expr, $doc:literal)) => { $d };
     (@default list ($n:literal, [$($d:expr),*], $min:expr, $max:expr, $doc:literal)) => { [$($d),*] };
@@ -534,10 +559,13 @@ macro_rules! declare_params {
         $crate::core::params::ParamKind::Int { default: $d as i64, min: $min as i64, max: $max as i64 }
     };
     (@spec float ($d:expr, $min:expr, $max:expr, $doc:literal)) => {
-        $crate::core::params::ParamKind::Float { default: $d, min: $min, max: $max, min_exclusive: false }
+        $crate::core::params::ParamKind::Float { default: $d, min: $min, max: $max, min_exclusive: false, max_exclusive: false }
+    };
+    (@spec below ($d:expr, $min:expr, $max:expr, $doc:literal)) => {
+        $crate::core::params::ParamKind::Float { default: $d, min: $min, max: $max, min_exclusive: false, max_exclusive: true }
     };
     (@spec positive ($d:expr, $max:expr, $doc:literal)) => {
-        $crate::core::params::ParamKind::Float { default: $d, min: 0.0, max: $max, min_exclusive: true }
+        $crate::core::params::ParamKind::Float { default: $d, min: 0.0, max: $max, min_exclusive: true, max_exclusive: false }
     };
     (@spec choice ($t:ty, $doc:literal)) => {
         $crate::core::params::ParamKind::Choice {
@@ -554,6 +582,7 @@ macro_rules! declare_params {
     (@get int $e:expr) => { $crate::core::params::ParamValue::Int($e as i64) };
     (@get float $e:expr) => { $crate::core::params::ParamValue::Float($e) };
     (@get positive $e:expr) => { $crate::core::params::ParamValue::Float($e) };
+    (@get below $e:expr) => { $crate::core::params::ParamValue::Float($e) };
     (@get choice $e:expr) => {
         $crate::core::params::ParamValue::Choice($crate::core::params::ChoiceParam::name($e))
     };
@@ -566,6 +595,9 @@ macro_rules! declare_params {
         if let $crate::core::params::ParamValue::Float(x) = $v { $e = x; }
     };
     (@put positive $e:expr, $v:expr) => {
+        if let $crate::core::params::ParamValue::Float(x) = $v { $e = x; }
+    };
+    (@put below $e:expr, $v:expr) => {
         if let $crate::core::params::ParamValue::Float(x) = $v { $e = x; }
     };
     (@put choice $e:expr, $v:expr) => {

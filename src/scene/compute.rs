@@ -95,7 +95,11 @@ pub(super) fn points(ctx: &JobCtx) -> Output {
                 last = std::time::Instant::now();
             }
         })?;
-    Ok((points_value(g.points, g.note), None))
+    // A column never shows fewer points than the scene asks for: a pattern that stops short
+    // (dart throwing's max_misses, Bridson's radius) fails the column with the one line that
+    // names the parameter.
+    let points = g.require_all(col.pattern.name())?;
+    Ok((points_value(points, None), None))
 }
 
 /// How often an iterative pattern's points node publishes the points reached so far.

@@ -300,7 +300,11 @@ pub enum SceneError {
         value: String,
         allowed: String,
     },
-    /// The file could not be read.
+    /// The file is not there (or is a directory), or is not a scene's text: not UTF-8, a
+    /// NUL byte, too large. Bad input, as a malformed scene is.
+    #[error("{path}: {message}")]
+    File { path: String, message: String },
+    /// An existing file could not be read (permissions, a device error): the environment.
     #[error("{path}: {message}")]
     Io { path: String, message: String },
     /// A column's point file could not be read or holds a bad point (the error names the line).
@@ -328,6 +332,20 @@ impl std::fmt::Display for Location {
 }
 
 impl SceneError {
+    /// Whether the environment is at fault (exit status 1: an existing file could not be
+    /// read), rather than the input (status 2: a file that is not there, not text, malformed
+    /// or out of range). A column's point file follows the same rule.
+    pub fn is_environment(&self) -> bool {
+        match self {
+            SceneError::Io { .. } => true,
+            SceneError::Points {
+                error: crate::core::pointset::PointsFileError::Io { path, .. },
+                ..
+            } => std::fs::metadata(path).is_ok_and(|m| m.is_file()),
+            _ => false,
+        }
+    }
+
     /// The error with the location of its field in `text` (for [`SceneError::Invalid`]).
     pub fn located_in(mut self, text: &str) -> Self {
         if let SceneError::Invalid {
@@ -340,15 +358,29 @@ impl SceneError {
     }
 }
 
+/// The deepest nesting RON reads (its default recursion limit): deeper text is refused with
+/// one line at the place it goes too deep.
+pub const RON_NESTING: usize = 128;
+
 /// The largest scene file read (inline points included): 256 MiB.
 pub const MAX_SCENE_BYTES: u64 = 256 << 20;
+
+/// Why [`read_text_limited`] failed.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) enum ReadTextError {
+    /// Reading failed (the environment's fault).
+    Io(String),
+    /// The bytes are not a text file of the allowed size (the input's fault).
+    NotText(String),
+}
 
 /// Reads UTF-8 text of at most `max` bytes from `reader`, block by block: the first block
 /// holding a NUL byte or bytes that are not UTF-8 ends the read with the byte offset.
 pub(crate) fn read_text_limited(
     mut reader: impl std::io::Read,
     max: u64,
-) -> Result<String, String> {
+) -> Result<String, ReadTextError> {
+    use ReadTextError::{Io, NotText};
     let mut bytes: Vec<u8> = Vec::new();
     let mut block = vec![0u8; 64 * 1024];
     // Bytes before `checked` are known to be UTF-8 (a character may span two blocks).
@@ -358,36 +390,36 @@ pub(crate) fn read_text_limited(
             Ok(0) => break,
             Ok(n) => n,
             Err(e) if e.kind() == std::io::ErrorKind::Interrupted => continue,
-            Err(e) => return Err(e.to_string()),
+            Err(e) => return Err(Io(e.to_string())),
         };
         if bytes.len() as u64 + n as u64 > max {
-            return Err(format!(
+            return Err(NotText(format!(
                 "larger than {max} bytes: scene files are read up to that size"
-            ));
+            )));
         }
         if let Some(i) = block[..n].iter().position(|&b| b == 0) {
-            return Err(format!(
+            return Err(NotText(format!(
                 "byte {} is a NUL byte: not a scene file (RON text)",
                 bytes.len() + i
-            ));
+            )));
         }
         bytes.extend_from_slice(&block[..n]);
         match std::str::from_utf8(&bytes[checked..]) {
             Ok(_) => checked = bytes.len(),
             Err(e) if e.error_len().is_none() => checked += e.valid_up_to(),
             Err(e) => {
-                return Err(format!(
+                return Err(NotText(format!(
                     "byte {} is not UTF-8 text: not a scene file (RON text)",
                     checked + e.valid_up_to()
-                ))
+                )))
             }
         }
     }
     String::from_utf8(bytes).map_err(|e| {
-        format!(
+        NotText(format!(
             "byte {} is not UTF-8 text: the file ends inside a character",
             e.utf8_error().valid_up_to()
-        )
+        ))
     })
 }
 
@@ -572,13 +604,21 @@ impl Scene {
         source_name: &str,
         base_dir: Option<&std::path::Path>,
     ) -> Result<Scene, SceneError> {
+        // A byte-order mark (as some Windows editors write) is not part of the text.
+        let text = text.strip_prefix('\u{feff}').unwrap_or(text);
         let mut scene: Scene = ron::from_str(text).map_err(|e| SceneError::Parse {
             source_name: source_name.to_string(),
             line: e.span.start.line,
             column: e.span.start.col,
-            // RON writes names with dashes as raw identifiers (`r#n-rooks`); show them as
-            // they are written in a scene.
-            message: e.code.to_string().replace("`r#", "`"),
+            message: match e.code {
+                ron::Error::ExceededRecursionLimit => format!(
+                    "nested more than {RON_NESTING} levels deep: a scene nests a few levels \
+                     (scene, columns, pattern); look for brackets that are never closed"
+                ),
+                // RON writes names with dashes as raw identifiers (`r#n-rooks`); show them as
+                // they are written in a scene.
+                code => code.to_string().replace("`r#", "`"),
+            },
         })?;
         for (ci, col) in scene.columns.iter().enumerate() {
             if let Some(imp) = col.points.as_ref().filter(|p| !p.path.is_empty()) {
@@ -666,8 +706,26 @@ impl Scene {
             path: path.display().to_string(),
             message,
         };
-        let file = std::fs::File::open(path).map_err(|e| io(e.to_string()))?;
-        let text = read_text_limited(file, MAX_SCENE_BYTES).map_err(io)?;
+        let bad = |message: String| SceneError::File {
+            path: path.display().to_string(),
+            message,
+        };
+        let file = std::fs::File::open(path).map_err(|e| {
+            use std::io::ErrorKind as K;
+            match e.kind() {
+                K::NotFound | K::NotADirectory | K::IsADirectory | K::InvalidFilename => {
+                    bad(e.to_string())
+                }
+                _ => io(e.to_string()),
+            }
+        })?;
+        if file.metadata().is_ok_and(|m| m.is_dir()) {
+            return Err(bad("is a directory, not a scene file".into()));
+        }
+        let text = read_text_limited(file, MAX_SCENE_BYTES).map_err(|e| match e {
+            ReadTextError::Io(m) => io(m),
+            ReadTextError::NotText(m) => bad(m),
+        })?;
         Scene::from_ron_in(&text, &path.display().to_string(), path.parent())
     }
 

@@ -23,7 +23,9 @@ fn scene_from_dev_zero_and_dev_urandom_is_refused_at_the_first_block() {
     for (dev, what) in [("/dev/zero", "NUL byte"), ("/dev/urandom", "")] {
         let e = quick(|| Scene::load(Path::new(dev))).unwrap_err();
         match &e {
-            SceneError::Io { path, message } => {
+            // Not a scene's text: bad input (exit status 2), not an environment failure.
+            SceneError::File { path, message } => {
+                assert!(!e.is_environment());
                 assert_eq!(path, dev);
                 assert!(
                     message.contains(what) && message.contains("byte"),
@@ -51,7 +53,7 @@ fn scene_with_a_character_split_across_read_blocks_loads() {
     let cut = &text.as_bytes()[..text.len() - 2];
     std::fs::write(&path, cut).unwrap();
     match Scene::load(&path) {
-        Err(SceneError::Io { message, .. }) => {
+        Err(SceneError::File { message, .. }) => {
             assert!(message.contains("ends inside"), "{message}")
         }
         other => panic!("{other:?}"),

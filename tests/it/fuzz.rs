@@ -347,3 +347,209 @@ fn mutated_scene_texts_load_or_fail_cleanly_and_quickly() {
         refused.get()
     );
 }
+
+/// One argument group (a flag and its value stay together).
+fn group(words: &[&str]) -> Vec<String> {
+    words.iter().map(|w| w.to_string()).collect()
+}
+
+/// A command line that asks for something impossible or pointless: options that would have no
+/// effect together, a key set twice, a seed for a deterministic pattern, `--allow-fewer` for a
+/// pattern that never stops short, an N the pattern refuses hidden behind `--estimate` or a tiny
+/// `--budget`. With the word its refusal must name. The groups come in random order.
+fn invalid_combination() -> impl Strategy<Value = (Vec<String>, String)> {
+    use proptest::sample::select;
+    let seed = (0u64..1000).prop_map(|s| s.to_string());
+    let deterministic = select(
+        &[
+            "grid",
+            "halton",
+            "hammersley",
+            "van-der-corput",
+            "kronecker",
+        ][..],
+    );
+    let random = select(
+        &[
+            "random",
+            "jitter",
+            "nrooks",
+            "best-candidate",
+            "pmj02",
+            "lhs",
+        ][..],
+    );
+    const LIST_EXTRA: &[&[&str]] = &[
+        &["jitter"],
+        &["-n", "16"],
+        &["--seed", "2"],
+        &["--set", "amount=0.5"],
+        &["--out", "x.csv"],
+        &["--sphere"],
+        &["--allow-fewer"],
+        &["--estimate"],
+        &["--budget", "9"],
+    ];
+    const FILTER_LIST_EXTRA: &[&[&str]] = &[
+        &["gaussian"],
+        &["--set", "radius=1"],
+        &["--mode", "radial"],
+        &["--response", "r.csv"],
+        &["--json"],
+        &["--budget-memory", "1"],
+    ];
+    // (subcommand words, flag, key, two values)
+    type Twice = (
+        &'static [&'static str],
+        &'static str,
+        &'static str,
+        &'static str,
+        &'static str,
+    );
+    const TWICE: &[Twice] = &[
+        (
+            &["points", "jitter", "-n", "16"],
+            "--set",
+            "amount",
+            "0.5",
+            "0.25",
+        ),
+        (&["filter", "mitchell"], "--set", "b", "0.1", "0.2"),
+        (
+            &["recon", "-n", "64", "--size", "8"],
+            "--signal-set",
+            "k",
+            "100",
+            "200",
+        ),
+        (
+            &["recon", "-n", "64", "--size", "8"],
+            "--filter-set",
+            "sigma",
+            "0.4",
+            "0.5",
+        ),
+        (
+            &["analyze", "halton", "-n", "16"],
+            "--set",
+            "base_x",
+            "2",
+            "5",
+        ),
+    ];
+    let short_free = select(&["jitter", "grid", "sobol", "best-candidate", "halton"][..]);
+    const BAD_N: &[(&[&str], &str)] = &[
+        (&["fibonacci", "1000"], "n = 1000"),
+        (&["hex", "63"], "n = 63"),
+        (&["fibonacci", "4"], "n = 4"),
+        (&["rank1", "1"], "n = 1"),
+    ];
+    const HIDE: &[&[&str]] = &[
+        &["--estimate"],
+        &["--budget", "1e-9"],
+        &["--budget-memory", "1e-12"],
+    ];
+    let (list_extra, filter_list_extra) = (select(LIST_EXTRA), select(FILTER_LIST_EXTRA));
+    let (twice, bad_n, hide) = (select(TWICE), select(BAD_N), select(HIDE));
+    prop_oneof![
+        list_extra.prop_map(|e| {
+            let w = if e[0].starts_with("--") {
+                e[0]
+            } else {
+                "--list"
+            };
+            (vec![group(&["points", "--list"]), group(e)], w.to_string())
+        }),
+        filter_list_extra.prop_map(|e| {
+            let w = if e[0].starts_with("--") {
+                e[0]
+            } else {
+                "--list"
+            };
+            (vec![group(&["filter", "--list"]), group(e)], w.to_string())
+        }),
+        twice.prop_map(|(base, flag, key, a, b)| (
+            vec![
+                group(base),
+                group(&[flag, &format!("{key}={a}")]),
+                group(&[flag, &format!("{key}={b}")]),
+            ],
+            "twice".to_string()
+        )),
+        (
+            deterministic,
+            seed.clone(),
+            select(&["points", "analyze"][..])
+        )
+            .prop_map(|(p, s, sub)| (
+                vec![group(&[sub, p, "-n", "16"]), group(&["--seed", &s])],
+                format!("--seed {s}")
+            )),
+        (random, seed).prop_map(|(p, s)| (
+            vec![
+                group(&[
+                    "converge",
+                    "--pattern",
+                    p,
+                    "--integrand",
+                    "disk",
+                    "--n",
+                    "16"
+                ]),
+                group(&["--realizations", "2"]),
+                group(&["--no-shift"]),
+                group(&["--seed", &s]),
+            ],
+            "--no-shift".to_string()
+        )),
+        short_free.prop_map(|p| (
+            vec![group(&["points", p, "-n", "16"]), group(&["--allow-fewer"])],
+            "--allow-fewer".to_string()
+        )),
+        (bad_n, hide, select(&["points", "analyze"][..])).prop_map(|((pn, word), h, sub)| (
+            vec![group(&[sub, pn[0], "-n", pn[1]]), group(h)],
+            word.to_string()
+        )),
+    ]
+    .prop_flat_map(|(groups, word)| {
+        // The first group holds the subcommand; the others may come in any order.
+        let first = groups[0].clone();
+        let rest = groups[1..].to_vec();
+        (Just(first), Just(rest).prop_shuffle(), Just(word))
+    })
+    .prop_map(|(first, rest, word)| {
+        let mut args = first;
+        args.extend(rest.into_iter().flatten());
+        (args, word)
+    })
+}
+
+#[test]
+fn conflicting_and_pointless_options_are_refused_with_one_line_naming_them() {
+    let dir = temp_dir("combos");
+    runner(60, 13)
+        .run(&invalid_combination(), |(args, word)| {
+            let mut child = Command::new(env!("CARGO_BIN_EXE_samplescope"));
+            child.args(&args).current_dir(&dir).stdin(Stdio::null());
+            let o = child
+                .output()
+                .map_err(|e| TestCaseError::fail(e.to_string()))?;
+            let err = String::from_utf8_lossy(&o.stderr);
+            prop_assert_eq!(o.status.code(), Some(2), "{:?}: {}", args, err);
+            prop_assert!(o.stdout.is_empty(), "{:?}: wrote to stdout", args);
+            let first = err.lines().next().unwrap_or_default();
+            prop_assert!(
+                first.contains(&word),
+                "{:?}: {:?} not in {:?}",
+                args,
+                word,
+                first
+            );
+            prop_assert!(!err.contains("panicked"), "{:?}: {}", args, err);
+            Ok(())
+        })
+        .unwrap();
+    // Nothing was written by a refused command.
+    assert_eq!(std::fs::read_dir(&dir).unwrap().count(), 0);
+    let _ = std::fs::remove_dir_all(&dir);
+}

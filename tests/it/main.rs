@@ -52,6 +52,7 @@ mod spectrum_pair;
 mod spectrum_radial;
 mod theorem;
 mod ui;
+mod validation;
 
 /// The GUI app on an engine without a disk cache: UI tests neither read reference images a
 /// previous run left in the user's cache nor write there.

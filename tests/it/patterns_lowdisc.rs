@@ -586,11 +586,13 @@ fn non_prime_base_is_an_error_naming_the_field() {
         assert!(msg.starts_with(prefix), "{msg}");
         assert!(msg.contains("must be a prime in 2..=7919"), "{msg}");
     }
-    // Through the dispatcher's text interface the range check comes first.
+    // Through the dispatcher's text interface a base out of range or not prime is refused
+    // when it is set, with the generators' words.
     let mut p = Pattern::from_name("halton").unwrap();
     assert!(p.set("base_x", "8000").is_err());
-    p.set("base_x", "6").unwrap(); // in range, not prime: rejected at generation
-    assert!(p.generate(4, 0).is_err());
+    let e = p.set("base_x", "6").unwrap_err().to_string();
+    assert_eq!(e, "halton.base_x = 6: must be a prime in 2..=7919");
+    assert!(p.generate(4, 0).is_ok());
 }
 
 #[test]

@@ -223,11 +223,17 @@ fn dart_near_the_packing_bound_terminates_with_a_note() {
     let note = g.note.expect("a note when fewer points are placed");
     assert!(
         note.starts_with(&format!(
-            "placed {placed} of {n} points; gave up after 2000 consecutive misses at radius {r}"
+            "placed {placed} of {n} points; gave up after 2000 consecutive misses at radius {}",
+            samplescope::core::params::fmt_num(r)
         )),
         "{note}"
     );
     assert!(note.contains("relative radius r/d_max = 0.9500"), "{note}");
+    // The note names the parameters that would place the rest.
+    assert!(
+        note.ends_with("raise max_misses (now 2000) or lower radius"),
+        "{note}"
+    );
     assert!(min_distance(&g.points) >= r);
     // The dispatcher keeps the points and the note.
     let via = Pattern::PoissonDart(p)

@@ -138,12 +138,23 @@ fn scale_two_doubles_the_figures_and_format_selects_files() {
     let scene = dir.join("small.ron");
     std::fs::write(&scene, SCENE).unwrap();
     let out = dir.join("out");
+    // CSV alone draws nothing: a scale would have no effect and is refused.
     let o = render(&[
         scene.to_str().unwrap(),
         "--out",
         out.to_str().unwrap(),
         "--scale",
         "2",
+        "--format",
+        "csv",
+    ]);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(stderr(&o).contains("--scale 2 cannot be used with --format csv"));
+    assert!(!out.exists());
+    let o = render(&[
+        scene.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
         "--format",
         "csv",
     ]);
@@ -213,7 +224,8 @@ fn malformed_scene_exits_2_naming_line_and_column() {
 }
 
 #[test]
-fn missing_scene_exits_1_naming_the_path() {
+fn missing_scene_exits_2_naming_the_path() {
+    // A file the user names that is not there is bad input (see the README's exit status).
     let dir = temp_dir("missing");
     let missing = dir.join("nope.ron");
     let o = render(&[
@@ -221,7 +233,7 @@ fn missing_scene_exits_1_naming_the_path() {
         "--out",
         dir.join("o").to_str().unwrap(),
     ]);
-    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
     assert!(stderr(&o).contains("nope.ron"), "{}", stderr(&o));
 }
 

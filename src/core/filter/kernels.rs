@@ -614,6 +614,7 @@ fn float_spec(
             min,
             max,
             min_exclusive: false,
+            max_exclusive: false,
         },
     }
 }

@@ -179,15 +179,6 @@ pub enum StudyError {
     /// The pattern cannot make this N.
     #[error("--n {n}: {source}")]
     Pattern { n: usize, source: PatternError },
-    /// The pattern placed fewer than N points (e.g. dart throwing gave up).
-    #[error("--n {n}: {pattern} placed only {placed} of {n} points{note}")]
-    Short {
-        n: usize,
-        pattern: &'static str,
-        placed: usize,
-        /// "; " and the pattern's note, or empty.
-        note: String,
-    },
     /// The study was cancelled.
     #[error("cancelled")]
     Cancelled,
@@ -219,6 +210,12 @@ pub fn check_request(req: &StudyRequest) -> Result<(), StudyError> {
     }
     req.pattern.check_params()?;
     req.integrand.check_params()?;
+    // Every N the pattern would refuse is refused before any estimate or work.
+    for &n in &req.ns {
+        req.pattern
+            .validate(n)
+            .map_err(|source| StudyError::Pattern { n, source })?;
+    }
     Ok(())
 }
 
@@ -229,21 +226,15 @@ fn generate(
     seed: u64,
     cancel: &Cancel,
 ) -> Result<Vec<DVec2>, StudyError> {
-    let g = pattern
+    // A pattern that stops short of N (dart throwing) is [`PatternError::TooFew`], naming the
+    // parameter that stopped it.
+    pattern
         .generate_with(n, seed, cancel)
+        .and_then(|g| g.require_all(pattern.name()))
         .map_err(|e| match e {
             PatternError::Cancelled => StudyError::Cancelled,
             source => StudyError::Pattern { n, source },
-        })?;
-    if g.points.len() != n {
-        return Err(StudyError::Short {
-            n,
-            pattern: pattern.name(),
-            placed: g.points.len(),
-            note: g.note.map(|s| format!("; {s}")).unwrap_or_default(),
-        });
-    }
-    Ok(g.points)
+        })
 }
 
 /// x + u modulo 1 for x, u in [0, 1).

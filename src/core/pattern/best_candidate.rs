@@ -49,7 +49,7 @@ pub const CELLS_PER_POINT: f64 = 2.0;
 const STOP_REL: f64 = 1e-9;
 const STOP_ABS: f64 = 1e-12;
 
-fn check_m(p: &BestCandidate) -> Result<u64, PatternError> {
+pub(super) fn check_m(p: &BestCandidate) -> Result<u64, PatternError> {
     if p.m == 0 || p.m > 1000 {
         return Err(PatternError::InvalidParam {
             pattern: BestCandidate::NAME,

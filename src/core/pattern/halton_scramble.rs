@@ -62,7 +62,6 @@
 //! b_x^−a × b_y^−c (Chinese remainder theorem on i mod b_x^a, i mod b_y^c). Rounding cannot move a
 //! point out of its interval: R / b^K is at least 1/b^K ≥ 2⁻⁵³ below the next boundary, more than
 //! half an ulp.
-use super::lowdisc::check_prime_base;
 use super::radical_inverse::RadicalInverseIter;
 use super::*;
 use crate::core::rng::{derive_seed, splitmix64, Rng};
@@ -127,21 +126,8 @@ pub fn scrambled_halton_with(
     cancel: &Cancel,
 ) -> Result<Vec<DVec2>, PatternError> {
     check_n(n, MAX_N)?;
-    let bx = check_prime_base(NAME, "base_x", base_x)?;
-    let by = check_prime_base(NAME, "base_y", base_y)?;
-    if bx == by {
-        // The same rule and wording as `lowdisc::halton`.
-        return Err(PatternError::InvalidParam {
-            pattern: NAME,
-            field: "base_y",
-            value: base_y.to_string(),
-            allowed: format!(
-                "a prime in 2..={} different from base_x = {base_x} \
-                 (equal bases make x = y: every point would lie on the diagonal)",
-                super::radical_inverse::MAX_PRIME_BASE
-            ),
-        });
-    }
+    // The same rule and wording as `lowdisc::halton`.
+    let (bx, by) = super::lowdisc::check_halton_bases(NAME, base_x, base_y)?;
     let start = u64::from(skip);
     match scramble {
         HaltonScramble::None => fill(

@@ -152,22 +152,27 @@ pub fn hex_spacing(rows: usize, cols: usize) -> Result<f64, PatternError> {
     Ok(d)
 }
 
+/// The checks of [`hex`]: `n`, `amount` and `rows`; the lattice's (rows, columns).
+pub(super) fn check_hex(p: &Hex, n: usize) -> Result<(usize, usize), PatternError> {
+    check_n(n, MAX_N)?;
+    if !(p.amount.is_finite() && (0.0..=1.0).contains(&p.amount)) {
+        return Err(PatternError::InvalidParam {
+            pattern: Hex::NAME,
+            field: "amount",
+            value: crate::core::params::fmt_num(p.amount),
+            allowed: "a finite number in [0, 1]".into(),
+        });
+    }
+    hex_shape(p.rows, n)
+}
+
 /// The hexagonal lattice of the module docs: `rows` from [`hex_shape`] (0 = the even divisor of
 /// `n` closest to equilateral), optionally jittered by `amount` within each point's `a × h` cell.
 ///
 /// Errors: `n` outside `1..=MAX_N` or odd; `rows` not 0 or an even divisor of `n`; `amount` not a
 /// finite number in [0, 1].
 pub fn hex(p: &Hex, n: usize, seed: u64) -> Result<Vec<DVec2>, PatternError> {
-    check_n(n, MAX_N)?;
-    if !(p.amount.is_finite() && (0.0..=1.0).contains(&p.amount)) {
-        return Err(PatternError::InvalidParam {
-            pattern: Hex::NAME,
-            field: "amount",
-            value: p.amount.to_string(),
-            allowed: "a finite number in [0, 1]".into(),
-        });
-    }
-    let (rows, cols) = hex_shape(p.rows, n)?;
+    let (rows, cols) = check_hex(p, n)?;
     // x = (2i + 1 + [j odd]) / (2 cols), wrapped: one exact integer numerator, one division.
     let (x_den, y_den) = (2.0 * cols as f64, 2.0 * rows as f64);
     let mut rng = (p.amount > 0.0).then(|| Rng::new(seed));

@@ -141,6 +141,57 @@ fn fibonacci_error(n: usize) -> PatternError {
     }
 }
 
+/// The checks of [`rank1`]: `n` in 2..=[`MAX_N`] and `g` below `n`.
+pub(super) fn check_rank1(n: usize, g: u32) -> Result<(), PatternError> {
+    check_n(n, MAX_N)?;
+    if n < 2 {
+        return Err(PatternError::UnsupportedN {
+            pattern: RANK1_NAME,
+            n,
+            allowed: format!(
+                "an integer in 2..={MAX_N} (a rank-1 lattice needs a generator in 1..N)"
+            ),
+        });
+    }
+    if g != 0 && g as usize >= n {
+        return Err(PatternError::InvalidParam {
+            pattern: RANK1_NAME,
+            field: "g",
+            value: g.to_string(),
+            allowed: format!(
+                "0 (auto: the generator maximising the minimum distance) or an integer in 1..={} \
+                 (below n = {n})",
+                n - 1
+            ),
+        });
+    }
+    Ok(())
+}
+
+/// The checks of [`fibonacci`]: `n` a Fibonacci number in 2..=[`MAX_N`].
+pub(super) fn check_fibonacci(n: usize) -> Result<(), PatternError> {
+    match fibonacci_predecessor(n) {
+        Some(_) if n <= MAX_N => Ok(()),
+        _ => Err(fibonacci_error(n)),
+    }
+}
+
+/// The checks of [`kronecker`]: `n` and both offsets finite in [0, 1).
+pub(super) fn check_kronecker(n: usize, offset: DVec2) -> Result<(), PatternError> {
+    check_n(n, MAX_N)?;
+    for (field, v) in [("offset_x", offset.x), ("offset_y", offset.y)] {
+        if !(v.is_finite() && (0.0..1.0).contains(&v)) {
+            return Err(PatternError::InvalidParam {
+                pattern: KRONECKER_NAME,
+                field,
+                value: crate::core::params::fmt_num(v),
+                allowed: "a finite number in [0, 1)".into(),
+            });
+        }
+    }
+    Ok(())
+}
+
 /// The Korobov lattice x_i = (i/N, frac(i·g/N)), i = 0..N (module docs); `g = 0` uses
 /// [`best_generator`]. With `shift`, Cranley–Patterson rotated by a uniform vector from `seed`.
 ///
@@ -158,30 +209,11 @@ pub fn rank1_with(
     seed: u64,
     cancel: &Cancel,
 ) -> Result<Vec<DVec2>, PatternError> {
-    check_n(n, MAX_N)?;
-    if n < 2 {
-        return Err(PatternError::UnsupportedN {
-            pattern: RANK1_NAME,
-            n,
-            allowed: format!(
-                "an integer in 2..={MAX_N} (a rank-1 lattice needs a generator in 1..N)"
-            ),
-        });
-    }
+    check_rank1(n, g)?;
     let g = if g == 0 {
         best_generator_with(n, cancel)?
-    } else if (g as usize) < n {
-        g
     } else {
-        return Err(PatternError::InvalidParam {
-            pattern: RANK1_NAME,
-            field: "g",
-            value: g.to_string(),
-            allowed: format!(
-                "0 (auto: the generator maximising the minimum distance) or an integer in 1..={}",
-                n - 1
-            ),
-        });
+        g
     };
     Ok(korobov(n as u64, u64::from(g), shift, seed))
 }
@@ -405,17 +437,7 @@ fn to_fixed(s: f64) -> u128 {
 /// Errors: `n` outside 1..=[`MAX_N`]; an offset component not finite or outside [0, 1)
 /// ([`PatternError::InvalidParam`] on `kronecker.offset_x` / `offset_y`).
 pub fn kronecker(n: usize, offset: DVec2) -> Result<Vec<DVec2>, PatternError> {
-    check_n(n, MAX_N)?;
-    for (field, v) in [("offset_x", offset.x), ("offset_y", offset.y)] {
-        if !(v.is_finite() && (0.0..1.0).contains(&v)) {
-            return Err(PatternError::InvalidParam {
-                pattern: KRONECKER_NAME,
-                field,
-                value: v.to_string(),
-                allowed: "a finite number in [0, 1)".into(),
-            });
-        }
-    }
+    check_kronecker(n, offset)?;
     let [ax, ay] = r2_alpha_fixed();
     let (mut x, mut y) = (to_fixed(offset.x), to_fixed(offset.y));
     let mut out = Vec::with_capacity(n);

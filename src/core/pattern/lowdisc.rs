@@ -44,7 +44,7 @@ pub fn check_prime_base(
 
 /// Both Halton bases prime, and distinct: with equal bases the two coordinates are the same
 /// number, so every point lies on the diagonal x = y (the Halton construction needs coprime bases).
-fn check_halton_bases(
+pub(super) fn check_halton_bases(
     pattern: &'static str,
     base_x: u32,
     base_y: u32,
@@ -293,6 +293,25 @@ fn sobol_fill(
     out
 }
 
+/// The checks of [`sobol`]: `n` and `skip + n − 1 ≤ 2³² − 1`.
+pub(super) fn check_sobol(p: &Sobol, n: usize) -> Result<(), PatternError> {
+    check_n(n, MAX_N)?;
+    let last = u64::from(p.skip) + n as u64 - 1;
+    if last > u64::from(u32::MAX) {
+        return Err(PatternError::InvalidParam {
+            pattern: Sobol::NAME,
+            field: "skip",
+            value: p.skip.to_string(),
+            allowed: format!(
+                "an integer in 0..={} for n = {n}: the last index skip + n − 1 must be ≤ 2³² − 1 \
+                 (32-bit Sobol')",
+                u64::from(u32::MAX) + 1 - n as u64
+            ),
+        });
+    }
+    Ok(())
+}
+
 /// The Sobol' (0,2)-sequence: the first two Sobol' dimensions, 32-bit, points with indices
 /// i = skip + j, j = 0..n, optionally scrambled (Sobol' 1967).
 ///
@@ -313,20 +332,7 @@ fn sobol_fill(
 ///
 /// Errors: `n` outside 1..=[`MAX_N`]; `skip + n − 1 > 2³² − 1` (indices are 32-bit).
 pub fn sobol(p: &Sobol, n: usize, seed: u64) -> Result<Vec<DVec2>, PatternError> {
-    check_n(n, MAX_N)?;
-    let last = u64::from(p.skip) + n as u64 - 1;
-    if last > u64::from(u32::MAX) {
-        return Err(PatternError::InvalidParam {
-            pattern: Sobol::NAME,
-            field: "skip",
-            value: p.skip.to_string(),
-            allowed: format!(
-                "an integer in 0..={} for n = {n}: the last index skip + n − 1 must be ≤ 2³² − 1 \
-                 (32-bit Sobol')",
-                u64::from(u32::MAX) + 1 - n as u64
-            ),
-        });
-    }
+    check_sobol(p, n)?;
     let start = p.skip;
     Ok(match p.scramble {
         Scramble::None => sobol_fill(start, n, false, |x, y| (x, y)),

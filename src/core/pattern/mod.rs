@@ -88,6 +88,16 @@ pub enum PatternError {
         n: usize,
         max: f64,
     },
+    /// Fewer points than asked were placed (dart throwing gave up after `max_misses`,
+    /// Bridson's maximal set at `radius` holds fewer than n): `note` says how many and names
+    /// the parameter that prevents the rest.
+    #[error("{pattern}: {note}")]
+    TooFew {
+        pattern: &'static str,
+        placed: usize,
+        requested: usize,
+        note: String,
+    },
     /// The computation was cancelled.
     #[error("cancelled")]
     Cancelled,
@@ -150,6 +160,22 @@ pub struct Generated {
 }
 
 impl Generated {
+    /// The points if all `requested` were placed, else [`PatternError::TooFew`] naming
+    /// `pattern` and the parameter that stopped it (from the note).
+    pub fn require_all(self, pattern: &'static str) -> Result<Vec<DVec2>, PatternError> {
+        if self.points.len() >= self.requested {
+            return Ok(self.points);
+        }
+        Err(PatternError::TooFew {
+            pattern,
+            placed: self.points.len(),
+            requested: self.requested,
+            note: self.note.unwrap_or_else(|| {
+                format!("placed {} of {} points", self.points.len(), self.requested)
+            }),
+        })
+    }
+
     /// All requested points, no note.
     pub fn complete(points: Vec<DVec2>) -> Self {
         let requested = points.len();
@@ -224,6 +250,34 @@ declare_params! {
         y_dim: int(1, 0, 63, "dimension shown on y (0-based, < dims)"),
         amount: float(1.0, 0.0, 1.0, "jitter amount within the cell: 0 = centres, 1 = anywhere"),
     }
+    check(p) {
+        let dims = p.dims;
+        let below = |field: &'static str, v: u32| ParamError::Invalid {
+            owner: Lhs::NAME,
+            field,
+            value: v.to_string(),
+            allowed: format!("an integer in 0..={} (below dims = {dims})", dims.saturating_sub(1)),
+        };
+        if p.x_dim >= dims {
+            return Err(below("x_dim", p.x_dim));
+        }
+        if p.y_dim >= dims {
+            return Err(below("y_dim", p.y_dim));
+        }
+        if dims >= 2 && p.x_dim == p.y_dim {
+            return Err(ParamError::Invalid {
+                owner: Lhs::NAME,
+                field: "y_dim",
+                value: p.y_dim.to_string(),
+                allowed: format!(
+                    "an integer in 0..={} different from x_dim = {}",
+                    dims - 1,
+                    p.x_dim
+                ),
+            });
+        }
+        Ok(())
+    }
 }
 declare_params! {
     /// Multi-jittered sampling (Chiu, Shirley, Wang 1994).
@@ -269,6 +323,9 @@ declare_params! {
     VanDerCorput = "van-der-corput", "1D van der Corput sequence x_i = Φ_b(i), drawn at y = ½" {
         base: int(2, 2, 7919, "base b (a prime ≤ 7919, the 1000th prime)"),
     }
+    check(p) {
+        prime_param(VanDerCorput::NAME, "base", p.base)
+    }
 }
 declare_params! {
     /// The Halton sequence (Φ_{b1}(i), Φ_{b2}(i)).
@@ -278,11 +335,17 @@ declare_params! {
         skip: int(0, 0, u32::MAX, "index of the first point"),
         scramble: choice(halton_scramble::HaltonScramble, "none | permute (random digit permutations per digit position, pbrt-v4) | owen (nested uniform scrambling in each base)"),
     }
+    check(p) {
+        halton_bases(Halton::NAME, p.base_x, p.base_y)
+    }
 }
 declare_params! {
     /// The Hammersley point set (i/N, Φ_{p1}(i)).
     Hammersley = "hammersley", "Hammersley set x_i = (i/N, Φ_p1(i))" {
         p1: int(2, 2, 7919, "base p1 of y (a prime ≤ 7919; the lecture shows 2, 3, 5, 7, 11)"),
+    }
+    check(p) {
+        prime_param(Hammersley::NAME, "p1", p.p1)
     }
 }
 declare_params! {
@@ -292,11 +355,17 @@ declare_params! {
         base_y: int(3, 2, 7919, "base of y (a prime ≤ 7919)"),
         skip: int(0, 0, u32::MAX, "index of the first point"),
     }
+    check(p) {
+        halton_bases(HaltonZaremba::NAME, p.base_x, p.base_y)
+    }
 }
 declare_params! {
     /// Hammersley with the folded radical inverse.
     HammersleyZaremba = "hammersley-zaremba", "Hammersley–Zaremba: (i/N, folded Φ_p1(i))" {
         p1: int(2, 2, 7919, "base p1 of y (a prime ≤ 7919)"),
+    }
+    check(p) {
+        prime_param(HammersleyZaremba::NAME, "p1", p.p1)
     }
 }
 declare_params! {
@@ -332,8 +401,8 @@ declare_params! {
 declare_params! {
     /// The R2 sequence (Roberts 2018).
     Kronecker = "kronecker", "R2 sequence x_i = frac(s + i·α), α = (1/φ₂, 1/φ₂²), φ₂ the plastic number (Roberts 2018); progressive" {
-        offset_x: float(0.5, 0.0, ONE_MINUS_EPSILON, "offset s_x in [0, 1)"),
-        offset_y: float(0.5, 0.0, ONE_MINUS_EPSILON, "offset s_y in [0, 1)"),
+        offset_x: below(0.5, 0.0, 1.0, "offset s_x in [0, 1)"),
+        offset_y: below(0.5, 0.0, 1.0, "offset s_y in [0, 1)"),
     }
 }
 declare_params! {
@@ -354,6 +423,45 @@ declare_params! {
     Gbn = "gbn", "Gaussian blue noise (Ahmed, Ren, Wonka 2022): gradient descent on Σ exp(−d²/2σ²) over toroidal pairs" {
         iterations: int(optimize::GBN_DEFAULT_ITERATIONS, 0, optimize::GBN_MAX_ITERATIONS, "gradient steps"),
         sigma: float(0.0, 0.0, 1.0, "kernel width σ in mean spacings 1/√n; 0 = the default (1)"),
+    }
+}
+
+/// A radical-inverse base: a prime in 2..=7919 (the range of its descriptor holds every
+/// integer; primality is checked with the set, so `--set`, scene files and the GUI refuse a
+/// composite base before any generation, with the words of the generators).
+fn prime_param(owner: &'static str, field: &'static str, base: u32) -> Result<(), ParamError> {
+    lowdisc::check_prime_base(owner, field, base)
+        .map(drop)
+        .map_err(|e| param_error(owner, e))
+}
+
+/// Both Halton bases prime and different (equal bases put every point on the diagonal).
+fn halton_bases(owner: &'static str, base_x: u32, base_y: u32) -> Result<(), ParamError> {
+    lowdisc::check_halton_bases(owner, base_x, base_y)
+        .map(drop)
+        .map_err(|e| param_error(owner, e))
+}
+
+/// A generator's parameter error as a [`ParamError`] of `owner`.
+fn param_error(owner: &'static str, e: PatternError) -> ParamError {
+    match e {
+        PatternError::InvalidParam {
+            field,
+            value,
+            allowed,
+            ..
+        } => ParamError::Invalid {
+            owner,
+            field,
+            value,
+            allowed,
+        },
+        other => ParamError::Invalid {
+            owner,
+            field: "",
+            value: String::new(),
+            allowed: other.to_string(),
+        },
     }
 }
 
@@ -476,10 +584,20 @@ impl Pattern {
 
     /// `n` points in [0,1)²; a pure function of `(self, n, seed)`.
     ///
-    /// Patterns that may place fewer points than asked (dart throwing that gives up) return
-    /// those points; use [`Pattern::generate_with`] to read why.
+    /// Exactly `n` points or an error: a pattern that places fewer (dart throwing that gives
+    /// up, [`Pattern::may_place_fewer`]) is [`PatternError::TooFew`]. Use
+    /// [`Pattern::generate_with`] to keep the points placed.
     pub fn generate(&self, n: usize, seed: u64) -> Result<Vec<DVec2>, PatternError> {
-        Ok(self.generate_with(n, seed, &Cancel::never())?.points)
+        self.generate_with(n, seed, &Cancel::never())?
+            .require_all(self.name())
+    }
+
+    /// Whether the pattern can place fewer points than asked (its [`Generated`] then has a
+    /// note): dart throwing stops after `max_misses` consecutive misses, and Bridson's maximal
+    /// set at a given radius may hold fewer than n points. Every other pattern places exactly
+    /// n points or refuses n.
+    pub fn may_place_fewer(&self) -> bool {
+        matches!(self, Pattern::PoissonDart(_) | Pattern::PoissonBridson(_))
     }
 
     /// As [`Pattern::generate`], cancellable, and reporting how many points were placed.
@@ -490,6 +608,64 @@ impl Pattern {
         cancel: &Cancel,
     ) -> Result<Generated, PatternError> {
         self.generate_observed(n, seed, cancel, &mut |_| {})
+    }
+
+    /// Checks that `n` points of this pattern can be generated, without generating them:
+    /// every parameter against its descriptor and the constraints between them, `n` against
+    /// the pattern's own rules (a Fibonacci number, a divisor for `cols`, an even `n` for hex,
+    /// a radius the torus can hold). Cheap (at most O(√n)), so commands call it before
+    /// printing an estimate or checking the budget; [`Pattern::generate_observed`] calls it
+    /// first, and the generators return the same errors, so the two never disagree.
+    ///
+    /// Not checked (found only by generating): whether dart throwing or Bridson's method
+    /// actually place all `n` points ([`Generated::require_all`]).
+    pub fn validate(&self, n: usize) -> Result<(), PatternError> {
+        use crate::core::params::Params;
+        self.check_params()?;
+        check_n(n, MAX_N)?;
+        match self {
+            Pattern::Grid(p) => resolve_cols(Grid::NAME, p.cols, n).map(drop),
+            Pattern::Random(_) | Pattern::Pmj02(_) => Ok(()),
+            Pattern::Jitter(p) => {
+                stratified::check_amount(Jitter::NAME, p.amount)?;
+                resolve_cols(Jitter::NAME, p.cols, n).map(drop)
+            }
+            Pattern::NRooks(p) => stratified::check_amount(NRooks::NAME, p.amount),
+            Pattern::Lhs(p) => stratified::check_lhs(p, n),
+            Pattern::MultiJitter(p) => resolve_cols(MultiJitter::NAME, p.cols, n).map(drop),
+            Pattern::CorrelatedMultiJitter(p) => {
+                resolve_cols(CorrelatedMultiJitter::NAME, p.cols, n).map(drop)
+            }
+            Pattern::Hex(p) => hex::check_hex(p, n).map(drop),
+            Pattern::PoissonDart(p) => poisson::check_dart(p, n).map(drop),
+            Pattern::PoissonBridson(p) => poisson::check_bridson(p, n).map(drop),
+            Pattern::BestCandidate(p) => best_candidate::check_m(p).map(drop),
+            Pattern::VanDerCorput(p) => {
+                lowdisc::check_prime_base(VanDerCorput::NAME, "base", p.base).map(drop)
+            }
+            Pattern::Halton(p) => {
+                lowdisc::check_halton_bases(Halton::NAME, p.base_x, p.base_y).map(drop)
+            }
+            Pattern::Hammersley(p) => {
+                lowdisc::check_prime_base(Hammersley::NAME, "p1", p.p1).map(drop)
+            }
+            Pattern::HaltonZaremba(p) => {
+                lowdisc::check_halton_bases(HaltonZaremba::NAME, p.base_x, p.base_y).map(drop)
+            }
+            Pattern::HammersleyZaremba(p) => {
+                lowdisc::check_prime_base(HammersleyZaremba::NAME, "p1", p.p1).map(drop)
+            }
+            Pattern::Sobol(p) => lowdisc::check_sobol(p, n),
+            Pattern::Pmj02bn(p) => pmj::check_candidates(p.candidates),
+            Pattern::Fibonacci(_) => lattice::check_fibonacci(n),
+            Pattern::Rank1(p) => lattice::check_rank1(n, p.g),
+            Pattern::Kronecker(p) => {
+                lattice::check_kronecker(n, DVec2::new(p.offset_x, p.offset_y))
+            }
+            Pattern::Lloyd(p) => optimize::check_lloyd(n, p.iterations),
+            Pattern::Sot(p) => optimize::check_sot(n, p.iterations, p.directions),
+            Pattern::Gbn(p) => optimize::check_gbn(n, p.iterations, p.sigma).map(drop),
+        }
     }
 
     /// Whether the pattern is made by an optimiser that refines a whole point set step by step
@@ -509,7 +685,7 @@ impl Pattern {
         cancel: &Cancel,
         observe: &mut dyn FnMut(Refining<'_>),
     ) -> Result<Generated, PatternError> {
-        check_n(n, MAX_N)?;
+        self.validate(n)?;
         let mut step = |step: usize, steps: usize, points: &[DVec2]| {
             observe(Refining {
                 step,

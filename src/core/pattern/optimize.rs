@@ -181,6 +181,34 @@ fn torus_delta(a: DVec2, b: DVec2) -> DVec2 {
     DVec2::new(wrap(a.x - b.x), wrap(a.y - b.y))
 }
 
+/// The checks of [`sot`]: `n`, `iterations` and `directions`.
+pub(super) fn check_sot(n: usize, iterations: u32, directions: u32) -> Result<(), PatternError> {
+    check_n_max(n, MAX_N, "")?;
+    check_iterations(SOT, iterations, SOT_MAX_ITERATIONS)?;
+    if directions == 0 || directions > SOT_MAX_DIRECTIONS {
+        return Err(PatternError::InvalidParam {
+            pattern: SOT,
+            field: "directions",
+            value: directions.to_string(),
+            allowed: format!("an integer in 1..={SOT_MAX_DIRECTIONS}"),
+        });
+    }
+    Ok(())
+}
+
+/// The checks of [`lloyd`]: `n` (at most [`LLOYD_MAX_N`]) and `iterations`.
+pub(super) fn check_lloyd(n: usize, iterations: u32) -> Result<(), PatternError> {
+    check_n_max(n, LLOYD_MAX_N, LLOYD_WHY)?;
+    check_iterations(LLOYD, iterations, LLOYD_MAX_ITERATIONS)
+}
+
+/// The checks of [`gbn`]: `n`, `iterations` and `sigma`.
+pub(super) fn check_gbn(n: usize, iterations: u32, sigma: f64) -> Result<f64, PatternError> {
+    check_n_max(n, MAX_N, "")?;
+    check_iterations(GBN, iterations, GBN_MAX_ITERATIONS)?;
+    resolve_sigma(sigma, n)
+}
+
 fn check_n_max(n: usize, max: usize, why: &str) -> Result<(), PatternError> {
     if n == 0 || n > max {
         return Err(PatternError::InvalidN {
@@ -374,8 +402,7 @@ pub fn lloyd(
     cancel: &Cancel,
     progress: &mut dyn FnMut(usize, usize, &[DVec2]),
 ) -> Result<Vec<DVec2>, PatternError> {
-    check_n_max(n, LLOYD_MAX_N, LLOYD_WHY)?;
-    check_iterations(LLOYD, iterations, LLOYD_MAX_ITERATIONS)?;
+    check_lloyd(n, iterations)?;
     cancel.check()?;
     let mut points = white_noise(n, seed);
     for k in 0..iterations {
@@ -627,16 +654,7 @@ pub fn sot(
     cancel: &Cancel,
     progress: &mut dyn FnMut(usize, usize, &[DVec2]),
 ) -> Result<Vec<DVec2>, PatternError> {
-    check_n_max(n, MAX_N, "")?;
-    check_iterations(SOT, iterations, SOT_MAX_ITERATIONS)?;
-    if directions == 0 || directions > SOT_MAX_DIRECTIONS {
-        return Err(PatternError::InvalidParam {
-            pattern: SOT,
-            field: "directions",
-            value: directions.to_string(),
-            allowed: format!("an integer in 1..={SOT_MAX_DIRECTIONS}"),
-        });
-    }
+    check_sot(n, iterations, directions)?;
     cancel.check()?;
     let mut rng = Rng::new(seed);
     let mut points: Vec<DVec2> = (0..n)
@@ -701,7 +719,7 @@ fn resolve_sigma(sigma: f64, n: usize) -> Result<f64, PatternError> {
         return Err(PatternError::InvalidParam {
             pattern: GBN,
             field: "sigma",
-            value: format!("{sigma}"),
+            value: crate::core::params::fmt_num(sigma),
             allowed:
                 "0 (default: 1, the mean spacing) or a number in (0, 1] (σ in mean spacings 1/√n)"
                     .into(),
@@ -852,9 +870,7 @@ pub fn gbn(
     cancel: &Cancel,
     progress: &mut dyn FnMut(usize, usize, &[DVec2]),
 ) -> Result<Vec<DVec2>, PatternError> {
-    check_n_max(n, MAX_N, "")?;
-    check_iterations(GBN, iterations, GBN_MAX_ITERATIONS)?;
-    let s = resolve_sigma(sigma, n)?;
+    let s = check_gbn(n, iterations, sigma)?;
     cancel.check()?;
     let mut points = white_noise(n, seed);
     let step = 0.25 * s * s;

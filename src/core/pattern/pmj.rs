@@ -137,7 +137,7 @@ pub fn pmj02bn_naive(
     Ok(generate_naive(n, seed, candidates, cancel)?.points)
 }
 
-fn check_candidates(candidates: u32) -> Result<(), PatternError> {
+pub(super) fn check_candidates(candidates: u32) -> Result<(), PatternError> {
     if candidates == 0 || candidates > MAX_CANDIDATES {
         return Err(PatternError::InvalidParam {
             pattern: BN_NAME,

@@ -27,6 +27,7 @@
 //! - A. Lagae, P. Dutré, "A comparison of methods for generating Poisson disk distributions",
 //!   Computer Graphics Forum 27(1), 2008 (relative radius ρ).
 use super::*;
+use crate::core::params::fmt_num;
 use crate::core::rng::Rng;
 
 /// Fraction of the hexagonal packing distance used when `radius = 0`: r = 0.65 · d_max(n).
@@ -95,7 +96,7 @@ fn resolve_radius(pattern: &'static str, radius: f64, n: usize) -> Result<f64, P
         return Err(PatternError::InvalidParam {
             pattern,
             field: "radius",
-            value: format!("{radius}"),
+            value: fmt_num(radius),
             allowed: "a finite number in [0, 1] (0 = auto)".into(),
         });
     }
@@ -327,8 +328,9 @@ fn dart_grid(r: f64, n: usize) -> TorusGrid {
 
 fn dart_note(placed: usize, n: usize, misses: u32, r: f64) -> String {
     format!(
-        "placed {placed} of {n} points; gave up after {misses} consecutive misses at radius {r} \
-         (relative radius r/d_max = {:.4})",
+        "placed {placed} of {n} points; gave up after {misses} consecutive misses at radius {} \
+         (relative radius r/d_max = {:.4}): raise max_misses (now {misses}) or lower radius",
+        fmt_num(r),
         r / max_radius(n)
     )
 }
@@ -369,13 +371,8 @@ pub fn dart_naive(
     dart_impl(p, n, seed, cancel, false)
 }
 
-fn dart_impl(
-    p: &PoissonDart,
-    n: usize,
-    seed: u64,
-    cancel: &Cancel,
-    use_grid: bool,
-) -> Result<Generated, PatternError> {
+/// The checks of [`dart`]: `n`, `radius` (against `n`) and `max_misses`; the radius in use.
+pub(super) fn check_dart(p: &PoissonDart, n: usize) -> Result<f64, PatternError> {
     const NAME: &str = PoissonDart::NAME;
     check_n(n, MAX_N)?;
     let r = resolve_radius(NAME, p.radius, n)?;
@@ -387,6 +384,17 @@ fn dart_impl(
             allowed: "an integer in 1..=100000000".into(),
         });
     }
+    Ok(r)
+}
+
+fn dart_impl(
+    p: &PoissonDart,
+    n: usize,
+    seed: u64,
+    cancel: &Cancel,
+    use_grid: bool,
+) -> Result<Generated, PatternError> {
+    let r = check_dart(p, n)?;
     cancel.check()?;
     let r2 = r * r;
     let mut rng = Rng::new(seed);
@@ -438,6 +446,37 @@ pub fn bridson_min_radius() -> f64 {
     1.0 / (std::f64::consts::PI * MAX_N as f64).sqrt()
 }
 
+/// The checks of [`bridson`]: `n`, `radius` (against `n` and the largest set built) and `k`;
+/// the radius in use.
+pub(super) fn check_bridson(p: &PoissonBridson, n: usize) -> Result<f64, PatternError> {
+    const NAME: &str = PoissonBridson::NAME;
+    check_n(n, MAX_N)?;
+    let r = resolve_radius(NAME, p.radius, n)?;
+    let r_min = bridson_min_radius();
+    if r < r_min {
+        return Err(PatternError::InvalidParam {
+            pattern: NAME,
+            field: "radius",
+            value: fmt_num(p.radius),
+            allowed: format!(
+                "0 (auto) or in [{}, {}]: a maximal set of radius r holds at least \
+                 1/(π r²) points and at most {MAX_N} are built",
+                fmt_num(r_min),
+                fmt_num(max_radius(n).min(1.0))
+            ),
+        });
+    }
+    if p.k == 0 || p.k > 1000 {
+        return Err(PatternError::InvalidParam {
+            pattern: NAME,
+            field: "k",
+            value: p.k.to_string(),
+            allowed: "an integer in 1..=1000".into(),
+        });
+    }
+    Ok(r)
+}
+
 /// Bridson's fast Poisson-disk sampling (SIGGRAPH 2007) on the torus, thinned to exactly n points.
 ///
 /// Algorithm (toroidal variant): a first point uniform in [0,1)² starts the active list. While the
@@ -467,30 +506,7 @@ pub fn bridson(
     seed: u64,
     cancel: &Cancel,
 ) -> Result<Generated, PatternError> {
-    const NAME: &str = PoissonBridson::NAME;
-    check_n(n, MAX_N)?;
-    let r = resolve_radius(NAME, p.radius, n)?;
-    let r_min = bridson_min_radius();
-    if r < r_min {
-        return Err(PatternError::InvalidParam {
-            pattern: NAME,
-            field: "radius",
-            value: format!("{}", p.radius),
-            allowed: format!(
-                "0 (auto) or in [{r_min:.6e}, {}]: a maximal set of radius r holds at least \
-                 1/(π r²) points and at most {MAX_N} are built",
-                max_radius(n).min(1.0)
-            ),
-        });
-    }
-    if p.k == 0 || p.k > 1000 {
-        return Err(PatternError::InvalidParam {
-            pattern: NAME,
-            field: "k",
-            value: p.k.to_string(),
-            allowed: "an integer in 1..=1000".into(),
-        });
-    }
+    let r = check_bridson(p, n)?;
     cancel.check()?;
     let r2 = r * r;
     let four_r2 = 4.0 * r2;
@@ -562,8 +578,9 @@ pub fn bridson(
         Ok(Generated::complete(points))
     } else {
         let note = format!(
-            "placed {m} of {n} points: Bridson's maximal set at radius {r} (relative radius \
-             r/d_max = {:.4}) holds only {m} points; lower the radius",
+            "placed {m} of {n} points: Bridson's maximal set at radius {} (relative radius \
+             r/d_max = {:.4}) holds only {m} points: lower radius",
+            fmt_num(r),
             r / max_radius(n)
         );
         Ok(Generated {

@@ -36,14 +36,14 @@ fn offset(amount: f64, u: f64) -> f64 {
 }
 
 /// Checks a jitter amount: finite and in [0, 1].
-fn check_amount(pattern: &'static str, amount: f64) -> Result<(), PatternError> {
+pub(super) fn check_amount(pattern: &'static str, amount: f64) -> Result<(), PatternError> {
     if amount.is_finite() && (0.0..=1.0).contains(&amount) {
         Ok(())
     } else {
         Err(PatternError::InvalidParam {
             pattern,
             field: "amount",
-            value: amount.to_string(),
+            value: crate::core::params::fmt_num(amount),
             allowed: "a finite number in [0, 1]".into(),
         })
     }
@@ -271,16 +271,8 @@ pub fn lhs_points(
         .collect())
 }
 
-/// The 2D projection `(s_i[x_dim], s_i[y_dim])` of the `dims`-dimensional Latin hypercube of
-/// [`lhs_points`] (same seed, same bits). Only the two shown dimensions are generated, so the cost
-/// is O(n) whatever `dims`.
-///
-/// `x_dim` and `y_dim` must be distinct and below `dims`; the one exception is `dims = 1`, where
-/// `x_dim = y_dim = 0` shows the single dimension against itself (all points on the diagonal).
-///
-/// Errors: `n` outside `1..=MAX_N`; `dims` outside `1..=64`; `x_dim` or `y_dim` ≥ `dims`;
-/// `x_dim = y_dim` with `dims ≥ 2`; `amount` not a finite number in [0, 1].
-pub fn lhs(p: &Lhs, n: usize, seed: u64) -> Result<Vec<DVec2>, PatternError> {
+/// The checks of [`lhs`]: `n`, `dims`, `x_dim`, `y_dim` and `amount`.
+pub(super) fn check_lhs(p: &Lhs, n: usize) -> Result<(), PatternError> {
     check_n(n, MAX_N)?;
     let dims = p.dims as usize;
     if dims == 0 || dims > LHS_MAX_DIMS {
@@ -315,7 +307,20 @@ pub fn lhs(p: &Lhs, n: usize, seed: u64) -> Result<Vec<DVec2>, PatternError> {
             ),
         });
     }
-    check_amount(Lhs::NAME, p.amount)?;
+    check_amount(Lhs::NAME, p.amount)
+}
+
+/// The 2D projection `(s_i[x_dim], s_i[y_dim])` of the `dims`-dimensional Latin hypercube of
+/// [`lhs_points`] (same seed, same bits). Only the two shown dimensions are generated, so the cost
+/// is O(n) whatever `dims`.
+///
+/// `x_dim` and `y_dim` must be distinct and below `dims`; the one exception is `dims = 1`, where
+/// `x_dim = y_dim = 0` shows the single dimension against itself (all points on the diagonal).
+///
+/// Errors: `n` outside `1..=MAX_N`; `dims` outside `1..=64`; `x_dim` or `y_dim` ≥ `dims`;
+/// `x_dim = y_dim` with `dims ≥ 2`; `amount` not a finite number in [0, 1].
+pub fn lhs(p: &Lhs, n: usize, seed: u64) -> Result<Vec<DVec2>, PatternError> {
+    check_lhs(p, n)?;
     let xs = lhs_dim_coords(n, p.x_dim as usize, p.amount, seed);
     let ys = if p.y_dim == p.x_dim {
         xs.clone()

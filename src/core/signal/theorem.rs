@@ -154,6 +154,7 @@ fn param_spec(name: &'static str, doc: &'static str, default: f64, range: (f64, 
             min: range.0,
             max: range.1,
             min_exclusive: false,
+            max_exclusive: false,
         },
     }
 }

@@ -89,7 +89,7 @@ pub enum AspectError {
         value: String,
     },
     /// W/H is outside [`Aspect::RATIOS`].
-    #[error("{text:?}: W/H = {ratio}: must lie in 0.1..=10 (1:10 to 10:1)")]
+    #[error("{text:?}: W/H = {}: must lie in 0.1..=10 (1:10 to 10:1)", crate::core::params::fmt_num(*.ratio))]
     Ratio { text: String, ratio: f64 },
 }
 
@@ -127,7 +127,11 @@ impl FromStr for Aspect {
     type Err = AspectError;
 
     fn from_str(text: &str) -> Result<Aspect, AspectError> {
-        let format = || AspectError::Format { text: text.into() };
+        // User text in messages is cut to 40 characters, numbers to 6 significant digits.
+        let shown = crate::core::params::fmt_text(text);
+        let format = || AspectError::Format {
+            text: shown.clone(),
+        };
         let (a, b) = text.trim().split_once(':').ok_or_else(format)?;
         if b.contains(':') {
             return Err(format());
@@ -140,19 +144,16 @@ impl FromStr for Aspect {
             match s.parse::<f64>() {
                 Ok(v) if v.is_finite() && v > 0.0 => Ok(v),
                 _ => Err(AspectError::Side {
-                    text: text.into(),
+                    text: shown.clone(),
                     side: name,
-                    value: s.into(),
+                    value: crate::core::params::fmt_text(s),
                 }),
             }
         };
         let (w, h) = (side(a, "W")?, side(b, "H")?);
         let ratio = w / h;
         if !Aspect::RATIOS.contains(&ratio) {
-            return Err(AspectError::Ratio {
-                text: text.into(),
-                ratio,
-            });
+            return Err(AspectError::Ratio { text: shown, ratio });
         }
         Ok(Aspect { w, h })
     }

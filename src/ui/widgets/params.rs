@@ -255,7 +255,17 @@ pub fn param_ui(
             };
             changed.then_some(ParamValue::Int(v))
         }
-        (&ParamKind::Float { min, max, .. }, ParamValue::Float(mut v)) => {
+        (
+            &ParamKind::Float {
+                min,
+                max,
+                max_exclusive,
+                ..
+            },
+            ParamValue::Float(mut v),
+        ) => {
+            // An open upper end (`[0, 1)`) stops the widget at the largest value below it.
+            let max = if max_exclusive { next_below(max) } else { max };
             let log = min > 0.0 && max > 1000.0 * min;
             let changed = if !log && max - min > SLIDER_SPAN {
                 ui.horizontal(|ui| {
@@ -312,5 +322,16 @@ pub fn param_ui(
             changed.then_some(ParamValue::List(items))
         }
         _ => None,
+    }
+}
+
+/// The largest f64 below `x` (finite `x`; `f64::next_down` needs Rust 1.86).
+fn next_below(x: f64) -> f64 {
+    if x > 0.0 {
+        f64::from_bits(x.to_bits() - 1)
+    } else if x == 0.0 {
+        -f64::from_bits(1)
+    } else {
+        f64::from_bits(x.to_bits() + 1)
     }
 }
