@@ -338,6 +338,9 @@ fn joint_constraints_see_every_setting_in_any_order() {
     band.set_field("high", "0.5").unwrap();
     band.set_field("low", "0.4").unwrap();
     scene.filter.filter = band;
+    // A band-pass cannot reconstruct: show the kernel alone.
+    scene.effects.reconstruction = false;
+    scene.effects.convergence = false;
     let text = scene.to_ron();
     let loaded = samplescope::scene::Scene::from_ron(&text, "band.ron").unwrap();
     assert_eq!(loaded.filter.filter, band);
