@@ -64,6 +64,22 @@ fn main() -> ExitCode {
             };
         }
     };
+    // --scene and --points open the GUI: with a subcommand they would have no effect.
+    if let (Some(_), Some(flag)) = (
+        &cli.command,
+        [
+            (cli.scene.is_some(), "--scene"),
+            (cli.points.is_some(), "--points"),
+        ]
+        .into_iter()
+        .find_map(|(given, flag)| given.then_some(flag)),
+    ) {
+        eprintln!(
+            "error: {flag} before a subcommand opens the GUI's column, so with a subcommand it \
+             would have no effect (give `render SCENE.ron` or `analyze --points FILE` instead)"
+        );
+        return ExitCode::from(2);
+    }
     let session = cli::session::Session::new(&cli.budget);
     if cli.command.is_some() {
         session.stop_on_ctrl_c();

@@ -650,6 +650,14 @@ fn options_that_would_have_no_effect_are_refused_naming_the_conflict() {
             ],
             vec!["--aspect", "--format csv"],
         ),
+        (
+            vec!["--scene", scene, "points", "jitter", "-n", "4"],
+            vec!["--scene"],
+        ),
+        (
+            vec!["--points", csv, "analyze", "jitter", "-n", "4"],
+            vec!["--points"],
+        ),
     ];
     for (args, words) in cases {
         refused(&args, &words);
@@ -1016,4 +1024,35 @@ fn a_failed_write_of_help_version_or_a_list_exits_1() {
         .output()
         .unwrap();
     assert!(o.status.success());
+}
+
+#[test]
+fn the_gui_column_shows_the_line_instead_of_fewer_points() {
+    use egui_kittest::kittest::Queryable;
+    let mut h = egui_kittest::Harness::builder()
+        .with_size(eframe::egui::Vec2::new(1400.0, 1000.0))
+        .wgpu()
+        .build_eframe(|cc| crate::hermetic_app(cc));
+    crate::settle(&mut h, 1);
+    let mut s = samplescope::scene::Scene::builtin_default();
+    s.n = 64;
+    let mut p = Pattern::from_name("poisson-dart").unwrap();
+    p.set("max_misses", "1").unwrap();
+    s.columns[0].pattern = p;
+    h.state_mut().set_scene(s, "short".into());
+    crate::settle(&mut h, 2);
+    let points = &h.state().results[0][&samplescope::scene::graph::NodeKind::Points];
+    let e = points.value.as_ref().unwrap_err().to_string();
+    assert!(
+        e.contains("of 64 points") && e.contains("max_misses"),
+        "{e}"
+    );
+    // The pattern panel (and the panels that need the points) show the line.
+    let shown = h.query_all_by_label_contains("raise max_misses").count();
+    assert!(shown >= 1, "the line is not shown");
+    assert!(
+        h.query_all_by_label_contains("pattern: poisson-dart: placed")
+            .count()
+            == 1
+    );
 }
