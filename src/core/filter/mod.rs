@@ -264,7 +264,7 @@ pub fn check_omega_max(omega_max: f64) -> Result<(), FilterError> {
     if !omega_max.is_finite() || omega_max <= 0.0 || omega_max > MAX_OMEGA {
         return Err(FilterError::InvalidArgument {
             field: "omega_max",
-            value: format!("{omega_max}"),
+            value: crate::core::params::fmt_num(omega_max),
             allowed: format!("a finite number in (0, {MAX_OMEGA}] (cycles per sample)"),
         });
     }

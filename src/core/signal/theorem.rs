@@ -118,8 +118,12 @@ fn check(field: &'static str, value: f64, lo: f64, hi: f64) -> Result<(), Theore
     if !(value.is_finite() && value >= lo && value <= hi) {
         return Err(TheoremError::InvalidParam {
             field,
-            value: format!("{value}"),
-            allowed: format!("a finite number in [{lo}, {hi}]"),
+            value: crate::core::params::fmt_num(value),
+            allowed: format!(
+                "a finite number in [{}, {}]",
+                crate::core::params::fmt_num(lo),
+                crate::core::params::fmt_num(hi)
+            ),
         });
     }
     Ok(())
@@ -616,11 +620,12 @@ fn check_width_samples(signal: &Signal1D, rate: f64) -> Result<(), TheoremError>
         if w * rate > MAX_WIDTH_SAMPLES {
             return Err(TheoremError::InvalidParam {
                 field: "rate",
-                value: format!("{rate}"),
+                value: crate::core::params::fmt_num(rate),
                 allowed: format!(
-                    "at most {MAX_WIDTH_SAMPLES} samples across the {} ({w} units wide): rate ≤ {}",
+                    "at most {MAX_WIDTH_SAMPLES} samples across the {} ({} units wide): rate ≤ {}",
                     signal.name(),
-                    MAX_WIDTH_SAMPLES / w
+                    crate::core::params::fmt_num(w),
+                    crate::core::params::fmt_num(MAX_WIDTH_SAMPLES / w)
                 ),
             });
         }
@@ -808,9 +813,10 @@ pub fn samples(signal: &Signal1D, rate: f64, extent: f64) -> Result<Vec<[f64; 2]
     if 2.0 * n + 1.0 > MAX_SAMPLES as f64 {
         return Err(TheoremError::InvalidParam {
             field: "rate",
-            value: format!("{rate}"),
+            value: crate::core::params::fmt_num(rate),
             allowed: format!(
-                "at most {MAX_SAMPLES} samples in the window: 2·extent·rate + 1 ≤ {MAX_SAMPLES} (extent = {extent})"
+                "at most {MAX_SAMPLES} samples in the window: 2·extent·rate + 1 ≤ {MAX_SAMPLES} (extent = {})",
+                crate::core::params::fmt_num(extent)
             ),
         });
     }

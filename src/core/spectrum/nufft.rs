@@ -450,7 +450,7 @@ impl NufftPlan {
         if !(kernel.beta.is_finite() && kernel.beta > 0.0) {
             return Err(SpectrumError::InvalidParam {
                 field: "kernel.beta",
-                value: kernel.beta.to_string(),
+                value: crate::core::params::fmt_num(kernel.beta),
                 allowed: "a finite number > 0".into(),
             });
         }

@@ -60,23 +60,29 @@ fn validate(points: &[DVec2], bin_width: f64, r_max: f64) -> Result<usize, Spect
     if !(r_max.is_finite() && r_max > 0.0 && r_max <= 0.5) {
         return Err(SpectrumError::InvalidParam {
             field: "r_max",
-            value: r_max.to_string(),
+            value: crate::core::params::fmt_num(r_max),
             allowed: "a number in (0, 0.5] (larger discs leave the unit torus cell)".into(),
         });
     }
     if !(bin_width.is_finite() && bin_width > 0.0 && bin_width <= r_max * (1.0 + 1e-9)) {
         return Err(SpectrumError::InvalidParam {
             field: "bin_width",
-            value: bin_width.to_string(),
-            allowed: format!("a number in (0, r_max = {r_max}]"),
+            value: crate::core::params::fmt_num(bin_width),
+            allowed: format!(
+                "a number in (0, r_max = {}]",
+                crate::core::params::fmt_num(r_max)
+            ),
         });
     }
     let bins = (r_max / bin_width + 1e-9).floor();
     if bins > MAX_BINS as f64 {
         return Err(SpectrumError::InvalidParam {
             field: "bin_width",
-            value: bin_width.to_string(),
-            allowed: format!("at least r_max/{MAX_BINS} = {}", r_max / MAX_BINS as f64),
+            value: crate::core::params::fmt_num(bin_width),
+            allowed: format!(
+                "at least r_max/{MAX_BINS} = {}",
+                crate::core::params::fmt_num(r_max / MAX_BINS as f64)
+            ),
         });
     }
     Ok((bins as usize).max(1))
