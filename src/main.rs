@@ -91,10 +91,15 @@ fn main() -> ExitCode {
         Some(Command::Recon(args)) => cli::recon::run(&args, &session),
         Some(Command::Render(args)) => cli::render::run(&args, &session),
         Some(Command::Converge(args)) => cli::converge::run(&args, &session),
-        None => {
-            samplescope::ui::run_gui_with_points(cli.scene, cli.points.map(|p| (p, cli.normalize)))
+        // The arguments are checked before a window (and a display) is asked for.
+        None => cli::gui::check_inputs(cli.scene.as_deref(), cli.points.as_deref(), cli.normalize)
+            .and_then(|()| {
+                samplescope::ui::run_gui_with_points(
+                    cli.scene,
+                    cli.points.map(|p| (p, cli.normalize)),
+                )
                 .map_err(cli::CliError::Gui)
-        }
+            }),
     };
     // Results are line-buffered: a failure of the last flush is a failed write too.
     let result = result.and_then(|()| {
@@ -104,10 +109,11 @@ fn main() -> ExitCode {
     match result {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) if e.is_broken_pipe() => ExitCode::SUCCESS,
-        // Whatever error a computation stopped by Ctrl-C returned, it was the interruption.
+        // Whatever error a computation stopped by a signal returned, it was the interruption:
+        // 130 after SIGINT, 143 after SIGTERM.
         Err(_) if session.cancel.is_cancelled() => {
             eprintln!("interrupted");
-            ExitCode::from(cli::CliError::Cancelled.exit_code())
+            ExitCode::from(cli::session::interrupted_status())
         }
         Err(e) => {
             eprintln!("error: {e}");

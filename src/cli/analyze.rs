@@ -3,7 +3,7 @@
 //! function) and spectrum of a point set, with the time and accuracy of every stage.
 
 use super::outln;
-use super::session::{write_output, Session};
+use super::session::{check_outputs, write_output, Session};
 use super::{parse_n, pattern_from_args, CliError};
 use samplescope::core::budget;
 use samplescope::core::metrics::{self, psa, MetricsError};
@@ -122,6 +122,13 @@ pub fn run(args: &AnalyzeArgs, session: &Session) -> Result<(), CliError> {
         dc: DcMode::Show,
         ..SpectrumRequest::default()
     };
+    // Every output is checked before any work (and before a point file is read).
+    check_outputs(&[
+        ("--spectrum", args.spectrum.as_deref()),
+        ("--spectrum-data", args.spectrum_data.as_deref()),
+        ("--raps", args.raps.as_deref()),
+        ("--rdf", args.rdf.as_deref()),
+    ])?;
     let t0 = Instant::now();
     // A point file is read first (bounded and streamed): its size sets the estimates.
     let (file_points, generator) = if let Some(path) = &args.points {
@@ -254,6 +261,8 @@ pub fn run(args: &AnalyzeArgs, session: &Session) -> Result<(), CliError> {
     progress.stage(first + 3);
     let bins = radial_average(&spec).map_err(|e| CliError::Usage(e.to_string()))?;
 
+    // Every output is made before any is written: a failure leaves none of them.
+    let mut files: Vec<(&String, Vec<u8>)> = Vec::new();
     if let Some(path) = &args.spectrum {
         let m = spec.m;
         let log = spec.to_log_image(true);
@@ -283,21 +292,21 @@ pub fn run(args: &AnalyzeArgs, session: &Session) -> Result<(), CliError> {
         ];
         let bytes = png_bytes(&values, m, m, lo, hi, Colormap::Viridis, &text)
             .map_err(|e| CliError::Usage(e.to_string()))?;
-        write_output(Path::new(path), &bytes, cancel)?;
+        files.push((path, bytes));
     }
     if let Some(path) = &args.spectrum_data {
         let mut s = String::from("kx,ky,power\n");
         for (kx, ky, p) in spec.to_csv_rows() {
             let _ = writeln!(s, "{kx},{ky},{p:?}");
         }
-        write_output(Path::new(path), s.as_bytes(), cancel)?;
+        files.push((path, s.into_bytes()));
     }
     if let Some(path) = &args.raps {
         let mut s = String::from("radius,power\n");
         for b in &bins {
             let _ = writeln!(s, "{:?},{:?}", b.radius, b.mean_power);
         }
-        write_output(Path::new(path), s.as_bytes(), cancel)?;
+        files.push((path, s.into_bytes()));
     }
     if let Some(path) = &args.rdf {
         let t0 = Instant::now();
@@ -310,7 +319,10 @@ pub fn run(args: &AnalyzeArgs, session: &Session) -> Result<(), CliError> {
             let (lo, hi) = (i as f64 * dr, (i + 1) as f64 * dr);
             let _ = writeln!(s, "{lo:?},{hi:?},{:?},{v:?}", 0.5 * (lo + hi) / d_hex);
         }
-        write_output(Path::new(path), s.as_bytes(), cancel)?;
+        files.push((path, s.into_bytes()));
+    }
+    for (path, bytes) in files {
+        write_output(Path::new(path), &bytes, cancel)?;
     }
     drop(progress);
 

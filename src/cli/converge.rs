@@ -2,7 +2,7 @@
 //! integral, as N grows: MSE, its standard error, variance and squared bias per N, and the
 //! log–log slope of the MSE.
 
-use super::session::{write_output, Session};
+use super::session::{check_outputs, write_output, Session};
 use super::{apply_settings, outln, pattern_from_args, CliError};
 use samplescope::core::budget;
 use samplescope::core::integration::{
@@ -186,6 +186,7 @@ pub fn run(args: &ConvergeArgs, session: &Session) -> Result<(), CliError> {
     if args.csv.is_some() {
         plan.push(budget::text_rows("CSV", req.ns.len()));
     }
+    check_outputs(&[("--csv", args.csv.as_deref())])?;
     let Some(progress) = session.admit(plan)? else {
         return Ok(());
     };

@@ -9,7 +9,7 @@
 //!   mode writes the 1D response H(ω); radial mode the Hankel profile H₂(ρ).
 //! - `--list`: every filter and preset with its parameters, defaults and allowed ranges.
 
-use super::session::{write_output, Session};
+use super::session::{check_outputs, write_output, Session};
 use super::CliError;
 use super::{out, outln};
 use samplescope::core::budget;
@@ -60,6 +60,7 @@ pub fn run(args: &FilterArgs, session: &Session) -> Result<(), CliError> {
     let filter = filter_from_args(name, &args.set)?;
     let mode = Mode2D::from_name(&args.mode)?;
     let f2 = Filter2D::new(filter, mode)?;
+    check_outputs(&[("--response", args.response.as_deref())])?;
     if session.admit(vec![budget::filter_metrics(&f2)])?.is_none() {
         return Ok(());
     }

@@ -4,6 +4,7 @@
 pub mod analyze;
 pub mod converge;
 pub mod filter;
+pub mod gui;
 pub mod points;
 pub mod recon;
 pub mod render;

@@ -1,7 +1,7 @@
 //! `samplescope points`: generate a pattern and write CSV.
 
 use super::out;
-use super::session::{write_output, Session};
+use super::session::{check_outputs, write_output, Session};
 use super::{check_allow_fewer, check_seed, parse_n, pattern_from_args, require_points, CliError};
 use samplescope::core::budget;
 use samplescope::core::params::Params;
@@ -59,6 +59,7 @@ pub fn run(args: &PointsArgs, session: &Session) -> Result<(), CliError> {
     check_seed(&pattern, args.seed, "--seed")?;
     check_allow_fewer(&pattern, args.allow_fewer)?;
     pattern.validate(n)?;
+    check_outputs(&[("--out", args.out.as_deref())])?;
     let plan = vec![budget::pattern(&pattern, n), budget::csv(n, args.sphere)];
     let Some(progress) = session.admit(plan)? else {
         return Ok(());

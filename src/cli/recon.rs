@@ -2,7 +2,7 @@
 //! error against the signal's reference image.
 
 use super::outln;
-use super::session::{write_output, Session};
+use super::session::{check_outputs, write_output, Session};
 use super::{parse_n, pattern_from_args, CliError};
 use samplescope::core::budget;
 use samplescope::core::filter::{Filter, Filter2D, Mode2D};
@@ -175,6 +175,7 @@ pub fn run(args: &ReconArgs, session: &Session) -> Result<(), CliError> {
     if args.out.is_some() {
         plan.push(budget::png(w, w));
     }
+    check_outputs(&[("--out", args.out.as_deref())])?;
     let Some(progress) = session.admit(plan)? else {
         return Ok(());
     };

@@ -22,7 +22,7 @@ use samplescope::export::ExportError;
 use samplescope::scene::graph::{NodeKind, NodeResult};
 use samplescope::scene::{figure, panels, Scene};
 use std::collections::HashMap;
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 use std::sync::Arc;
 
 /// Arguments of `samplescope render`.
@@ -100,10 +100,26 @@ fn export_err(e: ExportError) -> CliError {
     }
 }
 
-fn write(path: &Path, bytes: &[u8], cancel: &Cancel) -> Result<(), CliError> {
-    write_output(path, bytes, cancel)?;
-    outln!("{}", path.display())?;
-    Ok(())
+/// The files of a render, made before any is written: a failure while making one leaves
+/// none of them.
+#[derive(Default)]
+struct Files(Vec<(PathBuf, Vec<u8>)>);
+
+impl Files {
+    fn add(&mut self, path: PathBuf, bytes: Vec<u8>, cancel: &Cancel) -> Result<(), CliError> {
+        // Between figures: drawing one does not look at the token.
+        cancel.check().map_err(|_| CliError::Cancelled)?;
+        self.0.push((path, bytes));
+        Ok(())
+    }
+
+    fn write(self, cancel: &Cancel) -> Result<(), CliError> {
+        for (path, bytes) in self.0 {
+            write_output(&path, &bytes, cancel)?;
+            outln!("{}", path.display())?;
+        }
+        Ok(())
+    }
 }
 
 /// Evaluates every node the scene needs; the first failed node (in evaluation order) of any
@@ -179,6 +195,7 @@ pub fn run(args: &RenderArgs, session: &Session) -> Result<(), CliError> {
             args.out.display()
         )));
     }
+    samplescope::core::output::check_output_dir("--out", &args.out)?;
     let source = args.scene.display().to_string();
     let scene = Scene::load(&args.scene).map_err(super::scene_error)?;
     // What a column's points node would refuse is refused before the estimate and the budget,
@@ -217,10 +234,6 @@ pub fn run(args: &RenderArgs, session: &Session) -> Result<(), CliError> {
     let columns = figure::figure_columns(&scene, &results, &stem)
         .map_err(|e| CliError::Usage(e.to_string()))?;
 
-    std::fs::create_dir_all(&args.out).map_err(|source_err| CliError::Io {
-        path: args.out.display().to_string(),
-        source: source_err,
-    })?;
     if panels::available(&scene).is_empty() {
         eprintln!(
             "warning: {source} shows none of the panels render draws (pattern, spectrum, zone \
@@ -229,6 +242,7 @@ pub fn run(args: &RenderArgs, session: &Session) -> Result<(), CliError> {
     }
     let composite = panels::comparison(&scene);
     let s = scale;
+    let mut files = Files::default();
     for (c, (ctx, data)) in columns.iter().enumerate() {
         for kind in panels::available_in(&scene, c) {
             for &f in &formats {
@@ -242,7 +256,7 @@ pub fn run(args: &RenderArgs, session: &Session) -> Result<(), CliError> {
                         panel_csv(kind, ctx, data).map_err(export_err)?.into_bytes(),
                     ),
                 };
-                write(&args.out.join(name), &bytes, cancel)?;
+                files.add(args.out.join(name), bytes, cancel)?;
             }
         }
         let own = panels::composite_in(&scene, c);
@@ -251,7 +265,7 @@ pub fn run(args: &RenderArgs, session: &Session) -> Result<(), CliError> {
         }
         for p in formats.iter().filter_map(|f| f.picture()) {
             let bytes = column_file(&own, ctx, data, s, aspect, p).map_err(export_err)?;
-            write(&args.out.join(column_file_name(ctx, s, p)), &bytes, cancel)?;
+            files.add(args.out.join(column_file_name(ctx, s, p)), bytes, cancel)?;
         }
     }
     let pictures: Vec<FileFormat> = formats.iter().filter_map(|f| f.picture()).collect();
@@ -269,8 +283,12 @@ pub fn run(args: &RenderArgs, session: &Session) -> Result<(), CliError> {
         for p in pictures {
             let bytes = comparison_file(&composite, &columns, s, aspect, p).map_err(export_err)?;
             let file = comparison_file_name(name, scene.n, s, p);
-            write(&args.out.join(file), &bytes, cancel)?;
+            files.add(args.out.join(file), bytes, cancel)?;
         }
     }
-    Ok(())
+    std::fs::create_dir_all(&args.out).map_err(|source_err| CliError::Io {
+        path: args.out.display().to_string(),
+        source: source_err,
+    })?;
+    files.write(cancel)
 }

@@ -10,23 +10,46 @@
 //!   the ETA is drawn on standard error if it is a terminal (never into pipes or files). The
 //!   bar advances with the elapsed time within a stage, capped at the stage's estimate, and
 //!   jumps to the true position when the next stage starts.
-//! - **Ctrl-C** (and SIGTERM) sets the flag of the session's [`Cancel`] token, which every hot
-//!   loop of the core checks; the command then stops, the file being written (if any) is
-//!   removed, and the program exits with status 130. A second Ctrl-C ends it at once.
-//! - **Files** are written to a hidden `.NAME.partial` beside the target and renamed into
-//!   place ([`write_output`]), so an interrupted or failed write leaves no partial file.
+//! - **Signals.** SIGINT (Ctrl-C) and SIGTERM (what `timeout`, systemd and job schedulers send)
+//!   set the flag of the session's [`Cancel`] token, which every hot loop of the core checks;
+//!   the command then stops, the file being written (if any) is removed, and the program exits
+//!   with status 130 after SIGINT, 143 after SIGTERM (128 + the first signal's number). What
+//!   cannot look at the flag — a read blocked on a FIFO that never writes, a figure being
+//!   drawn — is ended by a watchdog thread: [`GRACE`] after the first signal, or at once on a
+//!   second one, it removes every partial file being written and exits with the same status.
+//! - **Files** go through [`samplescope::core::output`]: a hidden `.NAME.partial` beside the
+//!   target renamed into place ([`write_output`]), links followed, streams written through;
+//!   every output of a command is checked before any work ([`check_outputs`]).
 
 use super::CliError;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use samplescope::core::budget::{self, Budget, Estimate};
 use samplescope::core::cancel::Cancel;
-use std::path::{Path, PathBuf};
-use std::sync::atomic::{AtomicBool, Ordering};
+use samplescope::core::output::{self, OutputError};
+use std::path::Path;
+use std::sync::atomic::{AtomicBool, AtomicI32, AtomicUsize, Ordering};
 use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
 
 /// Commands estimated to take longer than this show a progress bar (on a terminal).
 pub const PROGRESS_SECONDS: f64 = 2.0;
+
+/// How long after the first SIGINT or SIGTERM the command may take to stop by itself before
+/// the watchdog ends the process.
+pub const GRACE: Duration = Duration::from_millis(1000);
+
+/// Signals received (SIGINT, SIGTERM), and the first one's number (0 before any).
+static SIGNALS: AtomicUsize = AtomicUsize::new(0);
+static FIRST_SIGNAL: AtomicI32 = AtomicI32::new(0);
+
+/// The exit status after an interruption: 128 + the first signal's number (130 for SIGINT,
+/// 143 for SIGTERM); 130 when the command was cancelled otherwise.
+pub fn interrupted_status() -> u8 {
+    match FIRST_SIGNAL.load(Ordering::SeqCst) {
+        s @ 1..=127 => 128 + s as u8,
+        _ => 130,
+    }
+}
 
 /// The budget flags, global to every subcommand.
 #[derive(clap::Args, Debug, Clone)]
@@ -104,16 +127,40 @@ impl Session {
         }
     }
 
-    /// From now on Ctrl-C and SIGTERM trip the session's token; a second one ends the process
-    /// with status 130. (Only subcommands call this: the GUI keeps the default handlers.)
+    /// From now on SIGINT (Ctrl-C) and SIGTERM trip the session's token, and a watchdog ends
+    /// the process [`GRACE`] after the first one (at once after a second) if the command has
+    /// not stopped by then. (Only subcommands call this: the GUI keeps the default handlers.)
     pub fn stop_on_ctrl_c(&self) {
         for signal in [signal_hook::consts::SIGINT, signal_hook::consts::SIGTERM] {
-            // Failing to install a handler only loses the clean stop: the default handler
-            // still ends the process.
-            let _ =
-                signal_hook::flag::register_conditional_shutdown(signal, 130, self.flag.clone());
-            let _ = signal_hook::flag::register(signal, self.flag.clone());
+            let flag = self.flag.clone();
+            let handler = move || {
+                // Atomic stores only: all a signal handler may do.
+                let _ =
+                    FIRST_SIGNAL.compare_exchange(0, signal, Ordering::SeqCst, Ordering::SeqCst);
+                SIGNALS.fetch_add(1, Ordering::SeqCst);
+                flag.store(true, Ordering::SeqCst);
+            };
+            // SAFETY: the handler only performs atomic operations, which are async-signal-safe.
+            // Failing to install it only loses the clean stop: the default handler still ends
+            // the process.
+            let _ = unsafe { signal_hook::low_level::register(signal, handler) };
         }
+        let _ = std::thread::Builder::new()
+            .name("signal watchdog".into())
+            .spawn(|| {
+                let mut first: Option<Instant> = None;
+                loop {
+                    std::thread::sleep(Duration::from_millis(20));
+                    let n = SIGNALS.load(Ordering::SeqCst);
+                    if n == 0 {
+                        continue;
+                    }
+                    let since = *first.get_or_insert_with(Instant::now);
+                    if n >= 2 || since.elapsed() >= GRACE {
+                        output::abandon(i32::from(interrupted_status()));
+                    }
+                }
+            });
     }
 
     /// Checks `plan` against the budget before any work. `Ok(Some(progress))`: go ahead,
@@ -261,43 +308,33 @@ impl Drop for Progress {
     }
 }
 
-/// The hidden file beside `path` that [`write_output`] writes first.
-pub fn partial_path(path: &Path) -> PathBuf {
-    let name = path
-        .file_name()
-        .map(|n| n.to_string_lossy().into_owned())
-        .unwrap_or_default();
-    path.with_file_name(format!(".{name}.partial"))
+/// Writes `bytes` to `path` whole or not at all ([`output::write_atomic`]: through a partial
+/// file renamed when complete and not cancelled, links followed, streams and `-` written
+/// through).
+pub fn write_output(path: &Path, bytes: &[u8], cancel: &Cancel) -> Result<(), CliError> {
+    output::write_atomic(path, bytes, cancel).map_err(CliError::from)
 }
 
-/// Writes `bytes` to `path` through [`partial_path`], renamed into place only when complete
-/// and not cancelled; on any failure or cancellation the partial file is removed.
-pub fn write_output(path: &Path, bytes: &[u8], cancel: &Cancel) -> Result<(), CliError> {
-    if cancel.is_cancelled() {
-        return Err(CliError::Cancelled);
+/// Checks every output a command was given (`(flag, path)`, unset ones skipped) before any
+/// work: exit 1 if one cannot be written (a missing or unwritable directory, a directory, a
+/// dangling link), 2 if two name the same file.
+pub fn check_outputs(outputs: &[(&str, Option<&str>)]) -> Result<(), CliError> {
+    let given: Vec<(&str, &Path)> = outputs
+        .iter()
+        .filter_map(|(flag, p)| p.map(|p| (*flag, Path::new(p))))
+        .collect();
+    output::check_outputs(&given).map_err(CliError::from)
+}
+
+impl From<OutputError> for CliError {
+    fn from(e: OutputError) -> Self {
+        match e {
+            OutputError::Cancelled => CliError::Cancelled,
+            OutputError::Io { path, source } => CliError::Io { path, source },
+            e if e.is_conflict() => CliError::Usage(e.to_string()),
+            e => CliError::Environment(e.to_string()),
+        }
     }
-    let io = |source| CliError::Io {
-        path: path.display().to_string(),
-        source,
-    };
-    // A device or a pipe (`--out /dev/null`, `--out /dev/stdout`) is written as it is: it
-    // holds no partial file, and renaming over it would replace it.
-    if std::fs::metadata(path).is_ok_and(|m| !m.is_file() && !m.is_dir()) {
-        return std::fs::write(path, bytes).map_err(io);
-    }
-    let partial = partial_path(path);
-    if let Err(e) = std::fs::write(&partial, bytes) {
-        let _ = std::fs::remove_file(&partial);
-        return Err(io(e));
-    }
-    if cancel.is_cancelled() {
-        let _ = std::fs::remove_file(&partial);
-        return Err(CliError::Cancelled);
-    }
-    std::fs::rename(&partial, path).map_err(|e| {
-        let _ = std::fs::remove_file(&partial);
-        io(e)
-    })
 }
 
 #[cfg(test)]

@@ -5,6 +5,7 @@ pub mod cancel;
 pub mod filter;
 pub mod integration;
 pub mod metrics;
+pub mod output;
 pub mod params;
 pub mod pattern;
 pub mod pointset;

@@ -63,8 +63,10 @@
 //! A race between a reader finding a damaged file and a writer replacing it can at worst delete
 //! the writer's fresh entry: a lost cache entry, never a wrong payload.
 
+use crate::core::cancel::Cancel;
+use crate::core::output::Partial;
 use std::fs::{self, File, OpenOptions};
-use std::io::{self, BufWriter, ErrorKind, Read, Write};
+use std::io::{self, ErrorKind, Read, Write};
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicU64, Ordering};
 use std::time::{Duration, SystemTime};
@@ -231,19 +233,20 @@ impl DiskCache {
         if size > self.max_bytes {
             return Ok(());
         }
-        let (temp, file) = self
-            .create_temp()
-            .map_err(|source| DiskCacheError::NotWritable {
-                path: self.dir.clone(),
-                source,
-            })?;
-        if let Err(source) = write_entry(file, kind, key, payload) {
-            let _ = fs::remove_file(&temp);
+        let path = self.entry_path(kind, key);
+        // The shared partial-file writer (removed on failure, on drop and on a signal).
+        let mut partial =
+            self.create_partial(&path)
+                .map_err(|source| DiskCacheError::NotWritable {
+                    path: self.dir.clone(),
+                    source,
+                })?;
+        let temp = partial.path().to_path_buf();
+        if let Err(source) = write_entry(partial.writer(), kind, key, payload) {
             return Err(DiskCacheError::Write { path: temp, source });
         }
-        let path = self.entry_path(kind, key);
-        if let Err(source) = fs::rename(&temp, &path) {
-            let _ = fs::remove_file(&temp);
+        if let Err(e) = partial.commit(&Cancel::never()) {
+            let source = e.unwrap_or_else(|| io::Error::other("cancelled"));
             return Err(DiskCacheError::Rename {
                 from: temp,
                 to: path,
@@ -270,6 +273,26 @@ impl DiskCache {
 
     fn entry_path(&self, kind: &str, key: &[u8; 32]) -> PathBuf {
         self.dir.join(format!("{kind}-{}{ENTRY_SUFFIX}", hex(key)))
+    }
+
+    /// A new, empty temporary file with a name no other writer uses, to be renamed onto
+    /// `target`.
+    fn create_partial(&self, target: &Path) -> io::Result<Partial> {
+        static NEXT: AtomicU64 = AtomicU64::new(0);
+        let pid = std::process::id();
+        let mut last = None;
+        for _ in 0..64 {
+            let n = NEXT.fetch_add(1, Ordering::Relaxed);
+            let temp = self
+                .dir
+                .join(format!("{TEMP_PREFIX}{pid}-p{n}{TEMP_SUFFIX}"));
+            match Partial::create_new(temp, target.to_path_buf()) {
+                Ok(p) => return Ok(p),
+                Err(e) if e.kind() == ErrorKind::AlreadyExists => last = Some(e),
+                Err(e) => return Err(e),
+            }
+        }
+        Err(last.unwrap_or_else(|| io::Error::other("no free temporary file name")))
     }
 
     /// A new, empty temporary file with a name no other writer uses.
@@ -447,7 +470,7 @@ fn read_entry(
     Ok(payload)
 }
 
-fn write_entry(file: File, kind: &str, key: &[u8; 32], payload: &[u8]) -> io::Result<()> {
+fn write_entry(w: &mut impl Write, kind: &str, key: &[u8; 32], payload: &[u8]) -> io::Result<()> {
     let mut header = Vec::with_capacity(FIXED_PREFIX + kind.len() + 8);
     header.extend_from_slice(&MAGIC);
     header.extend_from_slice(&FORMAT_VERSION.to_le_bytes());
@@ -458,12 +481,10 @@ fn write_entry(file: File, kind: &str, key: &[u8; 32], payload: &[u8]) -> io::Re
     let mut hasher = blake3::Hasher::new();
     hasher.update(&header);
     hasher.update(payload);
-    let mut w = BufWriter::new(file);
     w.write_all(&header)?;
     w.write_all(payload)?;
     w.write_all(hasher.finalize().as_bytes())?;
-    w.into_inner().map_err(|e| e.into_error())?;
-    Ok(())
+    w.flush()
 }
 
 /// Marks an entry as just used. Best effort: a read-only cache still serves hits.

@@ -3,6 +3,22 @@
 
 use super::ExportError;
 
+/// The longest metadata value written, in bytes: longer ones are cut (at a character
+/// boundary) and end in "…", so a figure's size does not grow with its text.
+pub const MAX_TEXT_BYTES: usize = 8192;
+
+/// `v` cut to at most [`MAX_TEXT_BYTES`] bytes.
+fn bounded(v: &str) -> String {
+    if v.len() <= MAX_TEXT_BYTES {
+        return v.to_string();
+    }
+    let mut end = MAX_TEXT_BYTES - '…'.len_utf8();
+    while !v.is_char_boundary(end) {
+        end -= 1;
+    }
+    format!("{}…", &v[..end])
+}
+
 /// Whether `text` can be stored in a tEXt chunk (Latin-1, no NUL).
 fn is_latin1(text: &str) -> bool {
     text.chars().all(|c| (c as u32) < 256 && c != '\0')
@@ -92,6 +108,7 @@ impl RowEncoder {
             enc.set_color(png::ColorType::Rgb);
             enc.set_depth(png::BitDepth::Eight);
             for (k, v) in text {
+                let v = &bounded(v);
                 if is_latin1(v) {
                     enc.add_text_chunk(k.clone(), v.clone())
                         .map_err(|e| png_err(&e))?;
@@ -179,6 +196,20 @@ mod tests {
         assert!(enc.rows(&[0; 12]).is_err(), "more rows than the image has");
         assert!(enc.finish(&[]).is_err(), "one row of two");
         assert!(png_rgb(2, 2, &[0; 11], &[]).is_err());
+    }
+
+    #[test]
+    fn metadata_values_are_bounded() {
+        let long = "é".repeat(3 * MAX_TEXT_BYTES);
+        let cut = bounded(&long);
+        assert!(
+            cut.len() <= MAX_TEXT_BYTES && cut.ends_with('…'),
+            "{}",
+            cut.len()
+        );
+        assert_eq!(bounded("short"), "short");
+        let png = png_rgb(1, 1, &[0, 0, 0], &[("Title".into(), long)]).unwrap();
+        assert!(png.len() < MAX_TEXT_BYTES + 1024, "{} bytes", png.len());
     }
 
     #[test]

@@ -777,6 +777,41 @@ impl Scene {
         ) -> Option<String> {
             (!r.contains(&v)).then(|| format!("an integer in {}..={}", r.start(), r.end()))
         }
+        // Free text first: its length bounds the work of laying it out and the metadata of
+        // every figure that carries it.
+        let text_len = |field: &str, text: &str, max: usize| {
+            let len = text.chars().count();
+            if len > max {
+                Err(invalid(
+                    field,
+                    format!("{len} characters"),
+                    &format!("at most {max} characters"),
+                ))
+            } else {
+                Ok(())
+            }
+        };
+        text_len("title", &self.title, limits::TITLE_CHARS)?;
+        text_len("notes", &self.notes, limits::NOTES_CHARS)?;
+        for (i, c) in self.columns.iter().enumerate() {
+            text_len(
+                &format!("columns[{i}].label"),
+                &c.label,
+                limits::LABEL_CHARS,
+            )?;
+            if let Some(imp) = &c.points {
+                text_len(
+                    &format!("columns[{i}].points.path"),
+                    &imp.path,
+                    limits::PATH_CHARS,
+                )?;
+                text_len(
+                    &format!("columns[{i}].points.source"),
+                    &imp.source,
+                    limits::PATH_CHARS,
+                )?;
+            }
+        }
         let ncols = self.columns.len();
         if !limits::COLUMNS.contains(&ncols) {
             return Err(invalid(
@@ -1057,4 +1092,13 @@ pub mod limits {
     pub const GRID: RangeInclusive<usize> = 2..=4096;
     /// Samples per pixel (`recon.mode: Supersample(spp: …)`).
     pub const SPP: RangeInclusive<usize> = 1..=1024;
+    /// Characters of the scene's `title` (drawn above the comparison, in every figure's
+    /// metadata).
+    pub const TITLE_CHARS: usize = 256;
+    /// Characters of the scene's `notes`.
+    pub const NOTES_CHARS: usize = 4096;
+    /// Characters of a column's `label`.
+    pub const LABEL_CHARS: usize = 128;
+    /// Characters of an imported point file's `path` and `source`.
+    pub const PATH_CHARS: usize = 4096;
 }

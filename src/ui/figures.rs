@@ -337,14 +337,11 @@ impl Snapshot {
             Made::File(name, bytes) => {
                 std::fs::create_dir_all(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
                 let path = dir.join(&name);
-                // Written beside it and renamed: a failed write leaves no partial figure.
-                let partial = dir.join(format!(".{name}.partial"));
-                let fail = |e: std::io::Error| {
-                    let _ = std::fs::remove_file(&partial);
-                    format!("{}: {e}", path.display())
-                };
-                std::fs::write(&partial, bytes).map_err(fail)?;
-                std::fs::rename(&partial, &path).map_err(fail)?;
+                // Written beside it and renamed (links followed): a failed write leaves no
+                // partial figure.
+                let never = crate::core::cancel::Cancel::never();
+                crate::core::output::write_atomic(&path, &bytes, &never)
+                    .map_err(|e| e.to_string())?;
                 Ok(Done::Written(path))
             }
             Made::Image(w, h, rgba, what) => Ok(Done::Clipboard(

@@ -553,3 +553,408 @@ fn conflicting_and_pointless_options_are_refused_with_one_line_naming_them() {
     assert_eq!(std::fs::read_dir(&dir).unwrap().count(), 0);
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// Where a generated output path leads.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum OutKind {
+    New,
+    Existing,
+    Link,
+    LinkToLink,
+    Dangling,
+    LinkToDevNull,
+    DevNull,
+    Dash,
+    Fifo,
+    Directory,
+    MissingDir,
+    LinkToDir,
+}
+
+const OUT_KINDS: &[OutKind] = &[
+    OutKind::New,
+    OutKind::Existing,
+    OutKind::Link,
+    OutKind::LinkToLink,
+    OutKind::Dangling,
+    OutKind::LinkToDevNull,
+    OutKind::DevNull,
+    OutKind::Dash,
+    OutKind::Fifo,
+    OutKind::Directory,
+    OutKind::MissingDir,
+    OutKind::LinkToDir,
+];
+
+/// Commands that write one output: the arguments before the path, and its flag.
+const WRITERS: &[(&[&str], &str)] = &[
+    (&["points", "grid", "-n", "16"], "--out"),
+    (&["points", "sobol", "-n", "64", "--sphere"], "--out"),
+    (&["filter", "box"], "--response"),
+    (&["analyze", "grid", "-n", "64"], "--raps"),
+    (&["analyze", "jitter", "-n", "64"], "--spectrum"),
+    (
+        &[
+            "converge",
+            "--pattern",
+            "random",
+            "--integrand",
+            "disk",
+            "--n",
+            "16",
+            "--realizations",
+            "4",
+        ],
+        "--csv",
+    ),
+    (&["recon", "-n", "256", "--size", "32"], "--out"),
+];
+
+/// Makes the output of `kind` in `dir`: the path to pass, and the regular file it should
+/// write when it writes one.
+#[cfg(unix)]
+fn make_output(dir: &std::path::Path, kind: OutKind) -> (String, Option<PathBuf>) {
+    use std::os::unix::fs::symlink;
+    let target = dir.join("target.out");
+    match kind {
+        OutKind::New => ("target.out".into(), Some(target)),
+        OutKind::Existing => {
+            std::fs::write(&target, "old").unwrap();
+            ("target.out".into(), Some(target))
+        }
+        OutKind::Link => {
+            std::fs::write(&target, "old").unwrap();
+            symlink("target.out", dir.join("link")).unwrap();
+            ("link".into(), Some(target))
+        }
+        OutKind::LinkToLink => {
+            std::fs::write(&target, "old").unwrap();
+            symlink("target.out", dir.join("link")).unwrap();
+            symlink(dir.join("link"), dir.join("link2")).unwrap();
+            ("link2".into(), Some(target))
+        }
+        OutKind::Dangling => {
+            symlink("target.out", dir.join("link")).unwrap();
+            ("link".into(), None)
+        }
+        OutKind::LinkToDevNull => {
+            symlink("/dev/null", dir.join("link")).unwrap();
+            ("link".into(), None)
+        }
+        OutKind::DevNull => ("/dev/null".into(), None),
+        OutKind::Dash => ("-".into(), None),
+        OutKind::Fifo => {
+            let ok = Command::new("mkfifo")
+                .arg(dir.join("fifo"))
+                .status()
+                .unwrap();
+            assert!(ok.success());
+            ("fifo".into(), None)
+        }
+        OutKind::Directory => {
+            std::fs::create_dir(dir.join("sub")).unwrap();
+            ("sub".into(), None)
+        }
+        OutKind::MissingDir => ("no/such/dir/out".into(), None),
+        OutKind::LinkToDir => {
+            std::fs::create_dir(dir.join("sub")).unwrap();
+            symlink("sub", dir.join("link")).unwrap();
+            ("link".into(), None)
+        }
+    }
+}
+
+/// Links, FIFOs, devices, `-`, directories and missing directories as the output of every
+/// command that writes one: the command succeeds or fails with 1 or 2, a link stays a link
+/// (its target written), a FIFO stays a FIFO (its reader gets the data), a device stays a
+/// device, and no partial file is ever left.
+#[cfg(unix)]
+#[test]
+fn generated_outputs_through_links_fifos_and_devices_never_replace_them() {
+    use std::os::unix::fs::FileTypeExt;
+    let base = temp_dir("outputs");
+    let case = std::cell::Cell::new(0);
+    runner(48, 23)
+        .run(
+            &(
+                proptest::sample::select(WRITERS),
+                proptest::sample::select(OUT_KINDS),
+            ),
+            |((args, flag), kind)| {
+                case.set(case.get() + 1);
+                let dir = base.join(case.get().to_string());
+                std::fs::create_dir_all(&dir).unwrap();
+                let (path, file) = make_output(&dir, kind);
+                // A FIFO's reader, released at the end if the command never opened it.
+                let reader = (kind == OutKind::Fifo).then(|| {
+                    let fifo = dir.join("fifo");
+                    std::thread::spawn(move || std::fs::read(fifo).map(|b| b.len()).unwrap_or(0))
+                });
+                let mut cmd: Vec<String> = args.iter().map(|s| s.to_string()).collect();
+                cmd.extend([flag.to_string(), path.clone()]);
+                let (code, err) = run(&dir, &cmd, Duration::from_secs(60))
+                    .map_err(|e| TestCaseError::fail(format!("{cmd:?}: {e}")))?;
+                let read = reader.map(|r| {
+                    use std::os::unix::fs::OpenOptionsExt;
+                    // O_NONBLOCK: opens only if the reader still waits, and so releases it.
+                    let _ = std::fs::OpenOptions::new()
+                        .write(true)
+                        .custom_flags(0o4000)
+                        .open(dir.join("fifo"));
+                    r.join().unwrap()
+                });
+                prop_assert!(
+                    matches!(code, Some(0) | Some(1) | Some(2)),
+                    "{cmd:?}: {code:?} {err}"
+                );
+                prop_assert!(!err.contains("panicked"), "{cmd:?}: {err}");
+                let expected_ok = !matches!(
+                    kind,
+                    OutKind::Dangling
+                        | OutKind::Directory
+                        | OutKind::MissingDir
+                        | OutKind::LinkToDir
+                );
+                prop_assert_eq!(
+                    code == Some(0),
+                    expected_ok,
+                    "{:?} {:?}: {}",
+                    cmd,
+                    kind,
+                    err
+                );
+                if !expected_ok {
+                    prop_assert_eq!(code, Some(1), "{:?}: {}", cmd, err);
+                    prop_assert!(err.lines().count() == 1 && err.contains(flag), "{err}");
+                }
+                for l in ["link", "link2"] {
+                    let p = dir.join(l);
+                    if p.exists() || std::fs::symlink_metadata(&p).is_ok() {
+                        prop_assert!(std::fs::symlink_metadata(&p)
+                            .unwrap()
+                            .file_type()
+                            .is_symlink());
+                    }
+                }
+                if let Some(f) = &file {
+                    let len = std::fs::metadata(f).map(|m| m.len()).unwrap_or(0);
+                    prop_assert!(len > 3, "{cmd:?}: {} holds {len} bytes", f.display());
+                }
+                if kind == OutKind::Dangling {
+                    prop_assert!(!dir.join("target.out").exists(), "no target made");
+                }
+                if let Some(n) = read {
+                    prop_assert!(n > 0, "{cmd:?}: the FIFO's reader got nothing");
+                    let t = std::fs::symlink_metadata(dir.join("fifo"))
+                        .unwrap()
+                        .file_type();
+                    prop_assert!(t.is_fifo());
+                }
+                prop_assert!(std::fs::metadata("/dev/null")
+                    .unwrap()
+                    .file_type()
+                    .is_char_device());
+                let partial: Vec<String> = walk(&dir)
+                    .into_iter()
+                    .filter(|n| n.ends_with(".partial"))
+                    .collect();
+                prop_assert!(partial.is_empty(), "{cmd:?}: {partial:?}");
+                Ok(())
+            },
+        )
+        .unwrap();
+    let _ = std::fs::remove_dir_all(&base);
+}
+
+/// Every file name under `dir`, recursively (links not followed).
+fn walk(dir: &std::path::Path) -> Vec<String> {
+    let mut out = Vec::new();
+    if let Ok(rd) = std::fs::read_dir(dir) {
+        for e in rd.flatten() {
+            out.push(e.file_name().to_string_lossy().into_owned());
+            if e.file_type().is_ok_and(|t| t.is_dir()) {
+                out.extend(walk(&e.path()));
+            }
+        }
+    }
+    out
+}
+
+/// Long commands, each stopped by SIGTERM or SIGINT after a generated delay: every one ends
+/// within a few seconds of the signal with 143 or 130, and leaves no file (whole or partial)
+/// in its directory. The families: a read blocked on a FIFO (a point file, a scene's point
+/// file), a long generation, a long reconstruction, a long render (figures being drawn).
+#[cfg(unix)]
+#[test]
+fn generated_signals_end_every_long_command_promptly_with_no_file() {
+    const LONG: &[&[&str]] = &[
+        &["analyze", "--points", "fifo", "--raps", "r.csv"],
+        &["render", "fifo.ron", "--out", "figs"],
+        &["points", "best-candidate", "-n", "40000", "--out", "o.csv"],
+        &[
+            "recon", "-n", "2000000", "--size", "2048", "--filter", "lanczos", "--out", "o.png",
+        ],
+        &[
+            "render",
+            "big.ron",
+            "--out",
+            "figs",
+            "--scale",
+            "4",
+            "--format",
+            "png,svg,pdf",
+            "--no-cache",
+        ],
+    ];
+    let base = temp_dir("signals");
+    let case = std::cell::Cell::new(0);
+    runner(10, 31)
+        .run(
+            &(
+                proptest::sample::select(LONG),
+                proptest::sample::select(&[("TERM", 143), ("INT", 130)][..]),
+                100u64..1500,
+            ),
+            |(args, (sig, status), delay)| {
+                case.set(case.get() + 1);
+                let dir = base.join(case.get().to_string());
+                std::fs::create_dir_all(&dir).unwrap();
+                let ok = Command::new("mkfifo")
+                    .arg(dir.join("fifo"))
+                    .status()
+                    .unwrap();
+                prop_assert!(ok.success());
+                std::fs::write(
+                    dir.join("fifo.ron"),
+                    "(columns: [(points: Some((path: \"fifo\")))], n: 16)",
+                )
+                .unwrap();
+                std::fs::write(
+                    dir.join("big.ron"),
+                    "(columns: [(pattern: (kind: \"random\"))], n: 1048576, \
+                     panels: (pattern: true, spectrum: false, zoneplate: false, filter: false))",
+                )
+                .unwrap();
+                let before = walk(&dir);
+                let mut child = Command::new(env!("CARGO_BIN_EXE_samplescope"))
+                    .args(["--budget", "100000"])
+                    .args(args)
+                    .current_dir(&dir)
+                    .env("SAMPLESCOPE_CACHE_DIR", dir.join("cache"))
+                    .stdin(Stdio::null())
+                    .stdout(Stdio::null())
+                    .stderr(Stdio::piped())
+                    .spawn()
+                    .unwrap();
+                std::thread::sleep(Duration::from_millis(delay));
+                let sent = Instant::now();
+                let kill = Command::new("kill")
+                    .args([format!("-{sig}"), child.id().to_string()])
+                    .status()
+                    .unwrap();
+                prop_assert!(kill.success());
+                let code = loop {
+                    if let Some(s) = child.try_wait().unwrap() {
+                        break s.code();
+                    }
+                    if sent.elapsed() > Duration::from_secs(10) {
+                        let _ = child.kill();
+                        let _ = child.wait();
+                        return Err(TestCaseError::fail(format!(
+                            "{args:?}: running 10 s after SIG{sig}"
+                        )));
+                    }
+                    std::thread::sleep(Duration::from_millis(10));
+                };
+                let took = sent.elapsed();
+                prop_assert_eq!(
+                    code,
+                    Some(status),
+                    "{:?} SIG{} after {} ms",
+                    args,
+                    sig,
+                    delay
+                );
+                prop_assert!(
+                    took < Duration::from_secs(3),
+                    "{args:?}: ended {took:?} after"
+                );
+                let mut after = walk(&dir);
+                after.retain(|n| !n.starts_with("cache") && !n.ends_with(".sscache"));
+                let mut before = before;
+                before.retain(|n| !n.starts_with("cache"));
+                after.sort();
+                before.sort();
+                prop_assert_eq!(after, before, "{:?}: files left", args);
+                Ok(())
+            },
+        )
+        .unwrap();
+    let _ = std::fs::remove_dir_all(&base);
+}
+
+/// Scene text fields of generated lengths and alphabets (words, one long word, multi-byte
+/// and combining characters): within its documented limit a field loads and its title lays
+/// out in two lines that fit, quickly; beyond it the scene is refused with one line naming
+/// the field, its length and the limit.
+#[test]
+fn generated_long_scene_text_is_laid_out_quickly_or_refused_in_one_line() {
+    use samplescope::scene::limits;
+    const ALPHABETS: &[&str] = &["word ", "x", "é", "e\u{301}", "Φ_p1 ", "\u{200b}"];
+    let fields: &[(&str, usize)] = &[
+        ("title", limits::TITLE_CHARS),
+        ("notes", limits::NOTES_CHARS),
+        ("label", limits::LABEL_CHARS),
+    ];
+    runner(60, 41)
+        .run(
+            &(
+                proptest::sample::select(fields),
+                proptest::sample::select(ALPHABETS),
+                prop_oneof![0usize..4, 0usize..=1, Just(100_000usize)],
+                -2i64..3,
+            ),
+            |((field, max), alphabet, pick, delta)| {
+                let len = match pick {
+                    100_000 => 100_000,
+                    0 | 1 => (max as i64 + delta).max(0) as usize,
+                    _ => (max as i64 * (pick as i64 + 1) + delta).max(0) as usize,
+                };
+                let text: String = alphabet.chars().cycle().take(len).collect();
+                let chars = text.chars().count();
+                let ron = match field {
+                    "label" => format!("(columns: [(label: \"{text}\")])"),
+                    f => format!("({f}: \"{text}\")"),
+                };
+                let start = Instant::now();
+                let loaded = Scene::from_ron(&ron, "long.ron");
+                match &loaded {
+                    Ok(scene) => {
+                        prop_assert!(chars <= max, "{field}: {chars} characters accepted");
+                        let lines = samplescope::export::figure::wrap(&scene.title, 1600, 32.0, 2);
+                        prop_assert!(lines.len() <= 2);
+                        for l in &lines {
+                            prop_assert!(samplescope::export::figure::text_width(l, 32.0) <= 1600);
+                        }
+                    }
+                    Err(e) => {
+                        let msg = e.to_string();
+                        prop_assert!(chars > max, "{field}: {chars} characters refused: {msg}");
+                        prop_assert!(msg.starts_with("long.ron:1:"), "{msg}");
+                        prop_assert!(
+                            msg.contains(&format!("must be at most {max} characters")),
+                            "{msg}"
+                        );
+                        prop_assert!(!msg.contains('\n') && msg.len() < 200, "{msg}");
+                    }
+                }
+                prop_assert!(
+                    start.elapsed() < Duration::from_secs(2),
+                    "{field} of {chars}: {:?}",
+                    start.elapsed()
+                );
+                Ok(())
+            },
+        )
+        .unwrap();
+}

@@ -10,6 +10,7 @@ mod bad_input;
 mod budget_cli;
 mod cli_points;
 mod converge;
+mod faults;
 mod figures;
 mod filter_cli;
 mod filter_metrics;

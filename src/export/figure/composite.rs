@@ -344,27 +344,53 @@ pub fn fill(w: u64, h: u64, aspect: Aspect) -> f64 {
 /// Width in pixels of `text` in the figures' font at `px` pixels (what the figures measure
 /// text with).
 pub fn text_width(text: &str, px: f64) -> u32 {
+    #[cfg(test)]
+    MEASURED.with(|m| m.set(m.get() + text.chars().count() as u64));
     match font() {
         Ok(f) => f.layout(text, px as f32).width.ceil() as u32,
         Err(_) => u32::MAX,
     }
 }
 
+#[cfg(test)]
+thread_local! {
+    /// Characters measured by [`text_width`] on this thread: the work of a layout.
+    static MEASURED: std::cell::Cell<u64> = const { std::cell::Cell::new(0) };
+}
+
 /// `text` shortened to fit `room` pixels at `px`, ending in "…" when shortened ("" when not
-/// even "…" fits).
+/// even "…" fits): the longest prefix that fits, found by doubling then bisecting the prefix
+/// length, so the work grows with what fits (bounded by `room`), not with the text's length.
 fn shorten(text: &str, room: u32, px: f64) -> String {
     if text_width(text, px) <= room {
         return text.to_string();
     }
     let chars: Vec<char> = text.chars().collect();
-    for keep in (0..chars.len()).rev() {
+    let candidate = |keep: usize| -> String {
         let head: String = chars[..keep].iter().collect();
-        let s = format!("{}…", head.trim_end_matches([' ', ',', '·', ';', ':', '-']));
-        if text_width(&s, px) <= room {
-            return s;
+        format!("{}…", head.trim_end_matches([' ', ',', '·', ';', ':', '-']))
+    };
+    let fits = |keep: usize| text_width(&candidate(keep), px) <= room;
+    if !fits(0) {
+        return String::new();
+    }
+    // Doubling: `lo` fits, `hi` does not (or is past the end; the whole text does not fit).
+    let (mut lo, mut hi) = (0usize, 1usize);
+    while hi < chars.len() && fits(hi) {
+        lo = hi;
+        hi = (hi * 2).min(chars.len());
+    }
+    let mut hi = hi.min(chars.len());
+    // Bisection between them (a prefix that fits stays the answer's lower bound).
+    while hi - lo > 1 {
+        let mid = lo + (hi - lo) / 2;
+        if fits(mid) {
+            lo = mid;
+        } else {
+            hi = mid;
         }
     }
-    String::new()
+    candidate(lo)
 }
 
 /// `text` in at most `max_lines` lines of at most `room` pixels at `px`, broken between
@@ -1131,6 +1157,33 @@ mod tests {
         // A tall frame stacks them.
         let l = s.choose("9:16".parse().unwrap());
         assert!(l.block_rows > l.block_cols, "{l}");
+    }
+
+    #[test]
+    fn title_layout_work_grows_linearly_with_the_text() {
+        // Characters measured while wrapping a title of `len` characters into two lines.
+        let work = |len: usize| {
+            let title = "Hammersley sequence ".repeat(len / 20);
+            MEASURED.with(|m| m.set(0));
+            let lines = wrap(&title, 1200, 24.0, 2);
+            assert_eq!(lines.len(), 2);
+            assert!(lines.iter().all(|l| text_width(l, 24.0) <= 1200));
+            // One word wider than a line on its own is shortened too.
+            let word = "x".repeat(len);
+            let one = wrap(&word, 1200, 24.0, 2);
+            assert!(one[0].ends_with('…') && text_width(&one[0], 24.0) <= 1200);
+            MEASURED.with(|m| m.get())
+        };
+        let (small, large) = (work(4_000), work(40_000));
+        // Linear: ten times the text, about ten times the work (quadratic would be 100×).
+        assert!(
+            large < 15 * small,
+            "4 000 chars: {small} measured, 40 000 chars: {large}"
+        );
+        assert!(
+            large < 40 * 40_000,
+            "{large} characters measured for 40 000"
+        );
     }
 
     #[test]
