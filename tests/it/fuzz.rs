@@ -766,6 +766,22 @@ fn generated_outputs_through_links_fifos_and_devices_never_replace_them() {
     let _ = std::fs::remove_dir_all(&base);
 }
 
+/// The exit code of `child` if it ends within `limit`; else it is killed and `None`.
+fn wait_at_most(mut child: std::process::Child, limit: Duration) -> Option<Option<i32>> {
+    let start = Instant::now();
+    loop {
+        match child.try_wait() {
+            Ok(Some(s)) => return Some(s.code()),
+            Ok(None) if start.elapsed() <= limit => std::thread::sleep(Duration::from_millis(10)),
+            _ => {
+                let _ = child.kill();
+                let _ = child.wait();
+                return None;
+            }
+        }
+    }
+}
+
 /// Every file name under `dir`, recursively (links not followed).
 fn walk(dir: &std::path::Path) -> Vec<String> {
     let mut out = Vec::new();
@@ -836,7 +852,7 @@ fn generated_signals_end_every_long_command_promptly_with_no_file() {
                 )
                 .unwrap();
                 let before = walk(&dir);
-                let mut child = Command::new(env!("CARGO_BIN_EXE_samplescope"))
+                let child = Command::new(env!("CARGO_BIN_EXE_samplescope"))
                     .args(["--budget", "100000"])
                     .args(args)
                     .current_dir(&dir)
@@ -851,21 +867,13 @@ fn generated_signals_end_every_long_command_promptly_with_no_file() {
                 let kill = Command::new("kill")
                     .args([format!("-{sig}"), child.id().to_string()])
                     .status()
-                    .unwrap();
-                prop_assert!(kill.success());
-                let code = loop {
-                    if let Some(s) = child.try_wait().unwrap() {
-                        break s.code();
-                    }
-                    if sent.elapsed() > Duration::from_secs(10) {
-                        let _ = child.kill();
-                        let _ = child.wait();
-                        return Err(TestCaseError::fail(format!(
-                            "{args:?}: running 10 s after SIG{sig}"
-                        )));
-                    }
-                    std::thread::sleep(Duration::from_millis(10));
+                    .is_ok_and(|s| s.success());
+                let Some(code) = wait_at_most(child, Duration::from_secs(10)) else {
+                    return Err(TestCaseError::fail(format!(
+                        "{args:?}: running 10 s after SIG{sig}"
+                    )));
                 };
+                prop_assert!(kill, "kill -{sig} failed");
                 let took = sent.elapsed();
                 prop_assert_eq!(
                     code,
