@@ -40,6 +40,16 @@
 //! | cell | star-discrepancy sweep | 0.65 |
 //! | pair | RDF pair distances (PSA statistics, `--rdf`), plus the transform's Bessel terms | [`PAIR_NS`], [`PSA_TERM_NS`] (parallel) |
 //!
+//! # Memory
+//!
+//! [`Estimate::bytes`] counts an operation's working set: its large buffers while they are alive
+//! together. A plan's peak ([`peak_bytes`]) is its largest operation plus [`RUNTIME_BYTES`] for
+//! the worker threads. The measured peak, `/usr/bin/time -v`'s maximum resident set minus that
+//! of a trivial command (`points random -n 1`), is within 2× of it for every pattern family and
+//! for `analyze`, `recon` and `converge` (`tests/it/budget_memory.rs` checks the worst ones; the
+//! binary fixes glibc's mmap threshold so that freed buffers are returned and the resident set
+//! follows the working set instead of growing with heap fragmentation, see `src/main.rs`).
+//!
 //! Touching freshly allocated memory costs about [`BYTE_NS`] per byte on that machine (page
 //! faults of a virtual machine), which the large images make visible.
 
@@ -238,8 +248,14 @@ pub fn total_seconds(plan: &[Estimate]) -> f64 {
     plan.iter().map(|e| e.seconds).sum()
 }
 
-/// The estimated peak bytes of a plan: the largest of its estimates.
+/// The estimated peak bytes of a plan: the largest of its estimates, plus [`RUNTIME_BYTES`]
+/// (what `/usr/bin/time -v` shows over a trivial command's resident set).
 pub fn peak_bytes(plan: &[Estimate]) -> f64 {
+    largest_bytes(plan) + RUNTIME_BYTES
+}
+
+/// The largest bytes of the estimates of a plan.
+fn largest_bytes(plan: &[Estimate]) -> f64 {
     plan.iter().map(|e| e.bytes).fold(0.0, f64::max)
 }
 
@@ -314,6 +330,15 @@ pub fn format_bytes(b: f64) -> String {
 
 // ---------------------------------------------------------------------------------------
 // Rates (CPU nanoseconds per unit on the reference machine; see the module docs).
+
+/// Bytes of a reconstruction's accumulator and output per pixel: the sums
+/// [Σw·v, Σw, Σ|w|, Σ|w|·v] (32), the pixel (8) and its zero-weight flag (1).
+pub const ACCUM_PIXEL_BYTES: f64 = 41.0;
+
+/// Memory that every command holding a parallel stage pays beyond its buffers: the worker
+/// threads' stacks and allocator arenas (measured: 1.7–1.9 MiB over a serial command's
+/// resident set on the reference machine, `/usr/bin/time -v`). Added once to a plan's peak.
+pub const RUNTIME_BYTES: f64 = 2.0 * 1024.0 * 1024.0;
 
 /// Cores of the reference machine: parallel loops divide their CPU time by this.
 pub const REFERENCE_CORES: f64 = 2.0;
@@ -508,15 +533,24 @@ fn pattern_cost(p: &Pattern, n: usize) -> (f64, Unit, f64, f64) {
         }
         Pattern::Lloyd(l) => {
             let updates = nf * f64::from(l.iterations);
-            // The replicated points' triangulation: ~n + 16√n vertices, ~2 triangles each.
-            let bytes = points_bytes + 120.0 * (nf + 16.0 * nf.sqrt());
+            // Per vertex of the replicated points (~n + 16√n): its copy (16 bytes), delaunator's
+            // triangles and halfedges (2 triangles × 2 × 24) and hull arrays (40), the
+            // circumcentres (2 × 24), the fan sums (34) and the cells (32): 266 bytes.
+            let bytes = points_bytes + 266.0 * (nf + 16.0 * nf.sqrt());
             let secs = updates * cpu(LLOYD_UPDATE_NS) + call + touch(bytes);
             (updates, Unit::PointUpdates, secs, bytes)
         }
         Pattern::Sot(s) => {
             let updates = nf * f64::from(s.iterations) * f64::from(s.directions);
             let log = nf.max(2.0).log2() / 10.0;
-            let bytes = points_bytes * 4.0;
+            // The points and the displacement sums (16 bytes each), one displacement per
+            // point for each direction of a batch of up to 16 in flight (8 bytes), and the
+            // sorted projections (16 bytes) of the directions being computed, one per core.
+            let batch = ((1u64 << 22) as f64 / nf.max(1.0))
+                .floor()
+                .clamp(1.0, 16.0)
+                .min(f64::from(s.directions.max(1)));
+            let bytes = nf * (32.0 + 8.0 * batch + 16.0 * REFERENCE_CORES);
             let secs = updates * log.max(1.0) * cpu(SOT_UPDATE_NS) / REFERENCE_CORES + call;
             (updates, Unit::PointUpdates, secs + touch(bytes), bytes)
         }
@@ -756,9 +790,9 @@ pub fn scattered(n: usize, w: usize, filter: &Filter2D) -> Estimate {
     let r_px = filter.support() * wf / nf.max(1.0).sqrt();
     let (taps, ns) = splat_cost(nf, r_px, w, filter);
     let pixels = wf * wf;
-    // Accumulator [Σwv, Σw] per pixel, the pixels and mask out; the tile-sorted samples and
-    // the points and values they came from.
-    let bytes = 25.0 * pixels + 52.0 * nf;
+    // Accumulator [Σwv, Σw, Σ|w|, Σ|w|v] per pixel, the pixels and mask out; the tile-sorted
+    // samples and the points and values they came from.
+    let bytes = ACCUM_PIXEL_BYTES * pixels + 52.0 * nf;
     let secs = parallel(ns + nf * SPLAT_BANDS * SPLAT_BAND_NS)
         + cpu(nf * SPLAT_SAMPLE_NS + pixels * PIXEL_NS)
         + touch(bytes);
@@ -803,10 +837,10 @@ pub fn supersampling(
     let samples = pixels * spp as f64;
     let (_, _, per_pixel, _) = pattern_cost(pattern, spp);
     let (_, splat_ns) = splat_cost(samples, filter.support(), w, filter);
-    // Batches of at most 2²¹ samples (positions and values, twice: the parts and their
-    // vector) beside the accumulator and the output.
-    let batch = (samples.min((1u64 << 21) as f64)) * 48.0;
-    let bytes = 25.0 * pixels + batch;
+    // Batches of at most 2²¹ samples (positions and values, 24 bytes) beside the accumulator
+    // and the output.
+    let batch = (samples.min((1u64 << 21) as f64)) * 24.0;
+    let bytes = ACCUM_PIXEL_BYTES * pixels + batch;
     let secs = pixels * per_pixel / REFERENCE_CORES
         + samples * parallel(eval_ns(signal))
         + cpu(splat_ns + samples * SUPERSAMPLE_SAMPLE_NS + pixels * PIXEL_NS)
@@ -900,7 +934,7 @@ pub fn convergence(
         samples,
         Unit::Samples,
         r.seconds + total_seconds(&runs),
-        r.bytes.max(peak_bytes(&runs)),
+        r.bytes.max(largest_bytes(&runs)),
     )
 }
 

@@ -8,6 +8,7 @@ use std::time::{Duration, Instant};
 
 mod bad_input;
 mod budget_cli;
+mod budget_memory;
 mod cli_points;
 mod converge;
 mod faults;
