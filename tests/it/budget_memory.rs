@@ -3,7 +3,7 @@
 //! cases that were furthest off.
 //!
 //! Before (release build, `/usr/bin/time -v`, resident set over `points random -n 1`'s):
-//! `points lloyd -n 100000 --set iterations=40` 144 MiB against an estimate of 14 MiB (glibc's
+//! `points lloyd -n 100000 --set iterations=40` 141 MiB against an estimate of 14 MiB (glibc's
 //! dynamic mmap threshold let the heap fragment, growing with the iterations, and the
 //! triangulation's model missed half of its buffers); `points sot -n 65536` 14 MiB against
 //! 4 MiB (the batch of displacements in flight); `converge --pattern lloyd … --n 4096,16384`
