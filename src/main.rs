@@ -12,8 +12,8 @@ struct Cli {
     /// Scene file (RON) to open in the GUI (default: the built-in default scene).
     #[arg(long, global = false)]
     scene: Option<std::path::PathBuf>,
-    /// Point file (CSV `x,y` with or without header, or PSA-style `x y` text with an optional
-    /// count line) shown in column 1 instead of its pattern.
+    /// Point file (CSV or `x y` text with an optional header or count line, pmj-cpp's
+    /// `(x, y),` rows, NumPy .npy, PSA .rps) shown in column 1 instead of its pattern.
     #[arg(long, global = false)]
     points: Option<std::path::PathBuf>,
     /// With --points: map the points' bounding box onto [0,1)² (aspect kept) instead of

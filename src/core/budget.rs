@@ -1129,6 +1129,21 @@ pub fn theorem() -> Estimate {
     )
 }
 
+/// The (0, k, 2)-net check of every power-of-two prefix of `n` points
+/// ([`crate::core::metrics::net_prefixes`]): Σₖ 2ᵏ·(k + 1) < 2N·(log₂ N + 1) cell counts.
+pub fn net_prefixes(n: usize) -> Estimate {
+    let nf = n as f64;
+    let cells = 2.0 * nf * (nf.max(1.0).log2().floor() + 1.0);
+    let bytes = 48.0 * nf;
+    Estimate::new(
+        format!("(0,k,2)-net check of the power-of-two prefixes of {n} points"),
+        cells,
+        Unit::Cells,
+        cpu(cells * TVALUE_NS) + touch(bytes),
+        bytes,
+    )
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -1,35 +1,113 @@
 //! Reading point sets written by samplescope and by other tools.
 //!
-//! Accepted formats, detected per file:
-//! - CSV with the header `x,y` (what `samplescope points` writes) or without a header;
-//! - PSA-style text: whitespace-separated `x y` per line, optionally preceded by a line
-//!   holding only the point count (checked against the number of points read).
+//! One reader for every entry point (`analyze --points`, the GUI's `--points` and file drop,
+//! a scene's `points: Some((path: …))`). The format is decided per file, by content first and
+//! extension second:
+//! - **NumPy `.npy`**: a file that starts with the magic `\x93NUMPY` (whatever its name).
+//!   Format versions 1.0, 2.0 and 3.0; `descr` float32 or float64, little- or big-endian
+//!   (`<f4`, `<f8`, `>f4`, `>f8`); `shape` `(N, 2)`; C or Fortran order. The header is at most
+//!   [`MAX_NPY_HEADER_BYTES`] (NumPy's own default limit); bytes after the data are refused.
+//! - **PSA `.rps`** (by extension, case-insensitive, as PSA itself decides): raw little-endian
+//!   float32 pairs `x y`, no header, N = bytes / 8; a size that is not a multiple of 8 is
+//!   refused as truncated.
+//! - **Text**, everything else: one point per line, the two coordinates separated by a comma,
+//!   spaces or tabs (`x,y`, `x, y`, `x y`, `x\ty`), optionally wrapped as pmj-cpp writes them,
+//!   `(x, y),` (or `[x, y],`). The first line that is not blank or a `#` comment may be a
+//!   header of two column names (`x,y`, `X Y`, `"u","v"`) or the point count alone (PSA's text
+//!   format; it must match the number of points). A file whose first bytes are not text gets
+//!   one line naming these formats ([`EXPECTED_FORMATS`]).
 //!
-//! Blank lines and lines starting with `#` are skipped. Points must lie in [0,1)²; a point
-//! outside gets an error naming its line, unless [`OutOfRange::NormalizeToBoundingBox`] asks
-//! to map the bounding box of the set onto [0,1)² (each axis scaled by the larger extent so
-//! the aspect ratio is kept, then clamped to at most 1 − 2⁻⁵³).
+//! **The closed square.** A coordinate exactly 1 (as `numpy.linspace(0, 1, n)` and tools that
+//! sample the closed square [0,1]² write) is taken as `1 − 2⁻⁵³`, the largest f64 below 1
+//! ([`ONE_MINUS_EPSILON`], what every pattern here is clamped to), and counted
+//! ([`PointsRead::on_closed_edge`]; `analyze` prints a note). On the torus, which every spectrum
+//! and distance here assumes, 1 and 0 are the same place, and `1 − 2⁻⁵³` is within 2⁻⁵³ of it:
+//! the periodogram at an integer frequency k changes by a phase of at most 2π·k·2⁻⁵³ (below
+//! 2·10⁻¹² for every |k| ≤ 2048 a spectrum here uses), toroidal distances by 2⁻⁵³. Wrapping to 0 would give
+//! the same toroidal values, but it would move the point across the whole square for the
+//! measures that are not periodic (star discrepancy, t-value, elementary intervals), where a
+//! closed-square point at x = 1 belongs to the last column, as `1 − 2⁻⁵³` keeps it. Anything
+//! above 1 or below 0 is outside and refused with its line (or point index), unless
+//! [`OutOfRange::NormalizeToBoundingBox`] maps the set's bounding box onto [0,1)² (each axis
+//! scaled by the larger extent so the aspect ratio is kept, then clamped to at most 1 − 2⁻⁵³).
+//! A bounding box that is a single point (one point, or all points equal) cannot be mapped
+//! and is refused ([`PointsFileError::DegenerateBoundingBox`]), never moved to (0, 0).
+//!
+//! **Bounded reads.** At most [`MAX_FILE_BYTES`] of text, lines of at most [`MAX_LINE_BYTES`],
+//! and [`crate::core::pattern::MAX_N`] points in every format; memory grows with the points
+//! actually read (a declared count or shape never sizes an allocation), so a huge, binary or
+//! endless input (`/dev/zero`, a FIFO that never ends) is refused without holding more than
+//! the points allowed.
 
 use crate::core::pattern::ONE_MINUS_EPSILON;
 use glam::DVec2;
+use std::io::Read;
+use std::path::Path;
 
 /// What to do with points outside [0,1)².
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum OutOfRange {
-    /// Report the first such point as an error (default).
+    /// Report the first such point as an error (default); a coordinate exactly 1 is taken as
+    /// `1 − 2⁻⁵³` (see the module docs).
     #[default]
     Reject,
     /// Map the set's bounding box onto the unit square (aspect kept).
     NormalizeToBoundingBox,
 }
 
-/// Why a point file could not be read. Lines are 1-based.
+/// The format a point file was read as.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum PointFormat {
+    /// Text rows (CSV, whitespace- or tab-separated, pmj-cpp's `(x, y),`, PSA's text).
+    Text,
+    /// NumPy `.npy`.
+    Npy,
+    /// PSA's raw `.rps` (little-endian float32 pairs).
+    Rps,
+}
+
+impl std::fmt::Display for PointFormat {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(match self {
+            PointFormat::Text => "text",
+            PointFormat::Npy => "NumPy .npy",
+            PointFormat::Rps => "PSA .rps",
+        })
+    }
+}
+
+/// Where a point stands in its file: a line of a text file, or the 1-based index of a point
+/// in a binary one.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Position {
+    /// A 1-based line of a text file.
+    Line(usize),
+    /// The 1-based index of a point in a `.npy` or `.rps` file.
+    Point(usize),
+}
+
+impl std::fmt::Display for Position {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Position::Line(l) => write!(f, "line {l}"),
+            Position::Point(i) => write!(f, "point {i}"),
+        }
+    }
+}
+
+/// What the reader accepts, for the error a file of another kind gets.
+pub const EXPECTED_FORMATS: &str = "expected text rows `x y`, `x,y` or `(x, y),`, \
+     NumPy .npy (float32/float64, shape (N, 2)) or PSA .rps (float32 pairs)";
+
+/// Why a point file could not be read. Lines and points are 1-based.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum PointsFileError {
     #[error("line {line}: {message}")]
     Malformed { line: usize, message: String },
-    #[error("line {line}: point ({x}, {y}) is outside [0,1)²; use the bounding-box normalisation to map it in")]
-    OutOfRange { line: usize, x: f64, y: f64 },
+    #[error(
+        "{at}: point ({x}, {y}) is outside [0,1]²; use the bounding-box normalisation to map it in"
+    )]
+    OutOfRange { at: Position, x: f64, y: f64 },
     #[error("line {line}: the count line says {declared} points but the file holds {found}")]
     CountMismatch {
         line: usize,
@@ -41,36 +119,67 @@ pub enum PointsFileError {
     #[error("too many points: {found} (at most {max})")]
     TooMany { found: usize, max: usize },
     /// A line is longer than [`MAX_LINE_BYTES`] (a binary or endless file).
-    #[error("line {line}: longer than {max} bytes: not a point file")]
+    #[error("line {line}: longer than {max} bytes: not a point file ({EXPECTED_FORMATS})")]
     LineTooLong { line: usize, max: usize },
     /// The bytes are not UTF-8 text.
-    #[error("line {line}: byte {offset} is not UTF-8 text: not a point file")]
+    #[error("line {line}: byte {offset} is not UTF-8 text: not a point file ({EXPECTED_FORMATS})")]
     NotUtf8 { line: usize, offset: u64 },
     /// The file is larger than [`MAX_FILE_BYTES`].
     #[error("larger than {max_bytes} bytes: point files are read up to that size")]
     TooLarge { max_bytes: u64 },
+    /// A `.npy` or `.rps` file whose header, size or values are wrong.
+    #[error("{format}: {message}")]
+    Binary {
+        format: PointFormat,
+        message: String,
+    },
+    /// The bounding-box normalisation was asked for a set whose bounding box is one point.
+    #[error("the bounding box of the {n} point(s) is the single point ({x}, {y}): there is no box to map onto [0,1)² (normalising would move every point to (0, 0))")]
+    DegenerateBoundingBox { n: usize, x: f64, y: f64 },
     /// The file could not be read.
     #[error("{path}: {message}")]
     Io { path: String, message: String },
 }
 
-/// The largest point file read: 1 GiB (16 777 216 points at up to 64 bytes a line).
+/// The largest text point file read: 1 GiB (16 777 216 points at up to 64 bytes a line).
 pub const MAX_FILE_BYTES: u64 = 1 << 30;
 /// The longest line accepted, in bytes (a longer one is not a point: a binary or endless file).
 pub const MAX_LINE_BYTES: usize = 4096;
+/// The longest `.npy` header read, in bytes (NumPy's own default `max_header_size`).
+pub const MAX_NPY_HEADER_BYTES: usize = 10_000;
 
-/// Reads and parses a point file (see [`read_points`]). Errors do not name the file; callers
-/// prefix its path.
+/// A point file as read: the points, its format, and how many points had a coordinate exactly
+/// 1 (taken as `1 − 2⁻⁵³`, see the module docs).
+#[derive(Debug, Clone, PartialEq)]
+pub struct PointsRead {
+    /// The points, in [0,1)².
+    pub points: Vec<DVec2>,
+    /// The format the file was read as.
+    pub format: PointFormat,
+    /// Points with x = 1 or y = 1 exactly (0 with the bounding-box normalisation).
+    pub on_closed_edge: usize,
+}
+
+/// Reads and parses a point file (see [`read_points_named`]). Errors do not name the file;
+/// callers prefix its path.
 pub fn read_points_file(
-    path: &std::path::Path,
+    path: &Path,
     out_of_range: OutOfRange,
 ) -> Result<Vec<DVec2>, PointsFileError> {
+    read_points_file_report(path, out_of_range).map(|r| r.points)
+}
+
+/// [`read_points_file`] with the format and the points on the closed edge.
+pub fn read_points_file_report(
+    path: &Path,
+    out_of_range: OutOfRange,
+) -> Result<PointsRead, PointsFileError> {
     let io = |e: std::io::Error| PointsFileError::Io {
         path: path.display().to_string(),
         message: e.to_string(),
     };
     let file = std::fs::File::open(path).map_err(io)?;
-    read_points(std::io::BufReader::new(file), out_of_range).map_err(|e| match e {
+    read_points_named(file, path, out_of_range).map_err(|e| match e {
         PointsFileError::Io { message, .. } => PointsFileError::Io {
             path: path.display().to_string(),
             message,
@@ -81,10 +190,16 @@ pub fn read_points_file(
 
 /// Maps the bounding box of `points` onto [0,1)², keeping the aspect ratio: every axis is
 /// scaled by 1/(the larger extent) after subtracting the lower corner, then clamped to at most
-/// 1 − 2⁻⁵³. A single point (zero extent) maps to the origin. Points must be finite; the
-/// arithmetic is done on halves, so coordinates spanning more than `f64::MAX` (e.g.
-/// −1e308 and 1e308) do not overflow.
-pub fn normalize_to_bounding_box(raw: &[DVec2]) -> Vec<DVec2> {
+/// 1 − 2⁻⁵³. Points must be finite; the arithmetic is done on halves, so coordinates spanning
+/// more than `f64::MAX` (e.g. −1e308 and 1e308) do not overflow.
+///
+/// Errors: no points ([`PointsFileError::Empty`]); a bounding box that is a single point (one
+/// point, or all equal: [`PointsFileError::DegenerateBoundingBox`]), which has no extent to
+/// scale by.
+pub fn normalize_to_bounding_box(raw: &[DVec2]) -> Result<Vec<DVec2>, PointsFileError> {
+    let Some(&first) = raw.first() else {
+        return Err(PointsFileError::Empty);
+    };
     let lo = raw
         .iter()
         .fold(DVec2::splat(f64::INFINITY), |a, p| a.min(*p));
@@ -95,13 +210,19 @@ pub fn normalize_to_bounding_box(raw: &[DVec2]) -> Vec<DVec2> {
     // Multiplying by the reciprocal gives the bits of (p − lo)·(1/extent) whenever that does
     // not overflow (scaling by ½ and 2 is exact); a subnormal extent divides instead.
     let half_extent = (hi * 0.5 - lo * 0.5).max_element();
+    if half_extent.is_nan() || half_extent <= 0.0 {
+        return Err(PointsFileError::DegenerateBoundingBox {
+            n: raw.len(),
+            x: first.x,
+            y: first.y,
+        });
+    }
     let inverse = 1.0 / half_extent;
-    raw.iter()
+    Ok(raw
+        .iter()
         .map(|p| {
             let half = *p * 0.5 - lo * 0.5;
-            let q = if half_extent.is_nan() || half_extent <= 0.0 {
-                DVec2::ZERO
-            } else if inverse.is_finite() {
+            let q = if inverse.is_finite() {
                 half * inverse
             } else {
                 half / half_extent
@@ -111,7 +232,7 @@ pub fn normalize_to_bounding_box(raw: &[DVec2]) -> Vec<DVec2> {
                 q.y.clamp(0.0, ONE_MINUS_EPSILON),
             )
         })
-        .collect()
+        .collect())
 }
 
 /// Parses the text of a point file (see [`read_points`]).
@@ -119,37 +240,158 @@ pub fn parse_points(text: &str, out_of_range: OutOfRange) -> Result<Vec<DVec2>, 
     read_points(text.as_bytes(), out_of_range)
 }
 
-/// Reads a point file as a stream (see the module docs for the formats), never holding more
-/// than one line besides the points.
-///
-/// Strict: a data line has exactly two fields (`x,y` or `x y`); extra columns and trailing
-/// separators are errors naming the line. A UTF-8 byte-order mark and CRLF line ends are
-/// accepted. Bounded: a line longer than [`MAX_LINE_BYTES`], text that is not UTF-8 (the
-/// error gives the byte offset), more than [`MAX_FILE_BYTES`] or more than
-/// [`crate::core::pattern::MAX_N`] points end the read at once, so a binary or endless input
-/// (`/dev/zero`, `/dev/urandom`) is refused after at most one line.
+/// Reads a point file without a name: `.npy` by its magic, otherwise text (see
+/// [`read_points_named`], which also knows `.rps` by the extension).
 pub fn read_points(
     reader: impl std::io::Read,
     out_of_range: OutOfRange,
 ) -> Result<Vec<DVec2>, PointsFileError> {
-    read_points_limited(
+    read_points_named(reader, Path::new(""), out_of_range).map(|r| r.points)
+}
+
+/// Reads a point file as a stream, deciding its format by content (the `.npy` magic) and by
+/// the extension of `name` (`.rps`; `.npy` without the magic is an error); see the module
+/// docs for the formats and limits.
+///
+/// Text is strict: a data line has exactly two fields; extra columns and trailing separators
+/// (other than the comma after pmj-cpp's `(x, y)`) are errors naming the line. A UTF-8
+/// byte-order mark and CRLF line ends are accepted. A line longer than [`MAX_LINE_BYTES`], text
+/// that is not UTF-8 (the error gives the byte offset), more than [`MAX_FILE_BYTES`] or more
+/// than [`crate::core::pattern::MAX_N`] points end the read at once, so a binary or endless
+/// input (`/dev/zero`, `/dev/urandom`) is refused after at most one line.
+pub fn read_points_named(
+    reader: impl std::io::Read,
+    name: &Path,
+    out_of_range: OutOfRange,
+) -> Result<PointsRead, PointsFileError> {
+    read_limited(
         reader,
+        name,
         out_of_range,
         MAX_FILE_BYTES,
         crate::core::pattern::MAX_N,
     )
 }
 
-/// [`read_points`] with other limits (bytes read, points kept).
-fn read_points_limited(
+fn io_error(e: std::io::Error) -> PointsFileError {
+    PointsFileError::Io {
+        path: String::new(),
+        message: e.to_string(),
+    }
+}
+
+/// Points as parsed, before the range check: each with where it stands in the file.
+struct Raw {
+    points: Vec<DVec2>,
+    /// The line of each point (text), or empty (binary: the index is the position).
+    lines: Vec<usize>,
+    format: PointFormat,
+}
+
+impl Raw {
+    fn position(&self, i: usize) -> Position {
+        match self.lines.get(i) {
+            Some(&l) => Position::Line(l),
+            None => Position::Point(i + 1),
+        }
+    }
+}
+
+/// [`read_points_named`] with other limits (bytes of text read, points kept).
+fn read_limited(
     reader: impl std::io::Read,
+    name: &Path,
     out_of_range: OutOfRange,
     max_bytes: u64,
     max: usize,
-) -> Result<Vec<DVec2>, PointsFileError> {
-    use std::io::{BufRead, Read};
+) -> Result<PointsRead, PointsFileError> {
+    let mut reader = reader;
+    // The first bytes decide: the .npy magic, whatever the name.
+    let mut head = [0u8; 6];
+    let mut got = 0;
+    while got < head.len() {
+        match reader.read(&mut head[got..]) {
+            Ok(0) => break,
+            Ok(k) => got += k,
+            Err(e) if e.kind() == std::io::ErrorKind::Interrupted => {}
+            Err(e) => return Err(io_error(e)),
+        }
+    }
+    let stream = (&head[..got]).chain(reader);
+    let ext = name
+        .extension()
+        .map(|e| e.to_string_lossy().to_ascii_lowercase());
+    let raw = if &head[..got] == NPY_MAGIC {
+        read_npy(stream, max)?
+    } else if ext.as_deref() == Some("npy") {
+        return Err(PointsFileError::Binary {
+            format: PointFormat::Npy,
+            message: format!(
+                "the file does not start with the NumPy magic `\\x93NUMPY` ({EXPECTED_FORMATS})"
+            ),
+        });
+    } else if ext.as_deref() == Some("rps") {
+        read_rps(stream, max)?
+    } else {
+        read_text(stream, max_bytes, max)?
+    };
+    finish(raw, out_of_range)
+}
+
+/// The range check (or the normalisation) every format shares.
+fn finish(raw: Raw, out_of_range: OutOfRange) -> Result<PointsRead, PointsFileError> {
+    if raw.points.is_empty() {
+        return Err(PointsFileError::Empty);
+    }
+    match out_of_range {
+        OutOfRange::Reject => {
+            let mut on_closed_edge = 0;
+            let edge = |v: f64| if v == 1.0 { ONE_MINUS_EPSILON } else { v };
+            for (i, p) in raw.points.iter().enumerate() {
+                let ok = |v: f64| (0.0..=1.0).contains(&v);
+                if !ok(p.x) || !ok(p.y) {
+                    return Err(PointsFileError::OutOfRange {
+                        at: raw.position(i),
+                        x: p.x,
+                        y: p.y,
+                    });
+                }
+                if p.x == 1.0 || p.y == 1.0 {
+                    on_closed_edge += 1;
+                }
+            }
+            let points = if on_closed_edge > 0 {
+                raw.points
+                    .iter()
+                    .map(|p| DVec2::new(edge(p.x), edge(p.y)))
+                    .collect()
+            } else {
+                raw.points
+            };
+            Ok(PointsRead {
+                points,
+                format: raw.format,
+                on_closed_edge,
+            })
+        }
+        OutOfRange::NormalizeToBoundingBox => Ok(PointsRead {
+            points: normalize_to_bounding_box(&raw.points)?,
+            format: raw.format,
+            on_closed_edge: 0,
+        }),
+    }
+}
+
+/// Reads text rows (see the module docs).
+fn read_text(
+    reader: impl std::io::Read,
+    max_bytes: u64,
+    max: usize,
+) -> Result<Raw, PointsFileError> {
+    use std::io::BufRead;
     let mut reader = std::io::BufReader::new(reader.take(max_bytes + 1));
-    let mut raw: Vec<(usize, DVec2)> = Vec::new();
+    let mut points: Vec<DVec2> = Vec::new();
+    let mut lines: Vec<usize> = Vec::new();
     let mut count_line: Option<(usize, usize)> = None;
     let mut first_content = true;
     let mut buf: Vec<u8> = Vec::with_capacity(128);
@@ -161,10 +403,7 @@ fn read_points_limited(
         let n = (&mut reader)
             .take(MAX_LINE_BYTES as u64 + 1)
             .read_until(b'\n', &mut buf)
-            .map_err(|e| PointsFileError::Io {
-                path: String::new(),
-                message: e.to_string(),
-            })?;
+            .map_err(io_error)?;
         if n == 0 {
             break;
         }
@@ -192,22 +431,24 @@ fn read_points_limited(
         if t.is_empty() || t.starts_with('#') {
             continue;
         }
-        let fields: Vec<&str> = if t.contains(',') {
-            t.split(',').map(str::trim).collect()
+        let body = unwrap_row(t).map_err(|message| PointsFileError::Malformed { line, message })?;
+        let fields: Vec<&str> = if body.contains(',') {
+            body.split(',').map(str::trim).collect()
         } else {
-            t.split_whitespace().collect()
+            body.split_whitespace().collect()
         };
         if first_content {
             first_content = false;
-            // A header (`x,y`) or a count line.
+            // A header (two column names) or a count line.
             if fields.iter().all(|f| f.parse::<f64>().is_err()) {
-                let lower: Vec<String> = fields.iter().map(|f| f.to_ascii_lowercase()).collect();
-                if lower.len() == 2 && lower[0] == "x" && lower[1] == "y" {
+                if fields.len() == 2 && fields.iter().all(|f| is_column_name(f)) {
                     continue;
                 }
                 return Err(PointsFileError::Malformed {
                     line,
-                    message: format!("expected a header `x,y`, a count or a point, found `{t}`"),
+                    message: format!(
+                        "expected a header of two column names (`x,y`), a count or a point, found `{t}`"
+                    ),
                 });
             }
             if fields.len() == 1 {
@@ -227,11 +468,11 @@ fn read_points_limited(
                 format!("a trailing separator after the coordinates in `{t}`")
             } else if fields.len() > 2 {
                 format!(
-                    "expected two coordinates `x y` or `x,y`, found {} fields in `{t}`",
+                    "expected two coordinates `x y`, `x,y` or `(x, y),`, found {} fields in `{t}`",
                     fields.len()
                 )
             } else {
-                format!("expected two coordinates `x y` or `x,y`, found `{t}`")
+                format!("expected two coordinates `x y`, `x,y` or `(x, y),`, found `{t}`")
             };
             return Err(PointsFileError::Malformed { line, message });
         }
@@ -249,44 +490,371 @@ fn read_points_limited(
             }
             xy[col] = v;
         }
-        if raw.len() >= max {
+        if points.len() >= max {
             return Err(PointsFileError::TooMany {
-                found: raw.len() + 1,
+                found: points.len() + 1,
                 max,
             });
         }
-        raw.push((line, DVec2::new(xy[0], xy[1])));
+        points.push(DVec2::new(xy[0], xy[1]));
+        lines.push(line);
     }
-    if raw.is_empty() {
+    if points.is_empty() {
         return Err(PointsFileError::Empty);
     }
     if let Some((line, declared)) = count_line {
-        if declared != raw.len() {
+        if declared != points.len() {
             return Err(PointsFileError::CountMismatch {
                 line,
                 declared,
-                found: raw.len(),
+                found: points.len(),
             });
         }
     }
-    match out_of_range {
-        OutOfRange::Reject => {
-            for (line, p) in &raw {
-                if !(0.0..1.0).contains(&p.x) || !(0.0..1.0).contains(&p.y) {
-                    return Err(PointsFileError::OutOfRange {
-                        line: *line,
-                        x: p.x,
-                        y: p.y,
-                    });
-                }
-            }
-            Ok(raw.into_iter().map(|(_, p)| p).collect())
-        }
-        OutOfRange::NormalizeToBoundingBox => {
-            let xy: Vec<DVec2> = raw.iter().map(|(_, p)| *p).collect();
-            Ok(normalize_to_bounding_box(&xy))
+    Ok(Raw {
+        points,
+        lines,
+        format: PointFormat::Text,
+    })
+}
+
+/// The inside of a row wrapped as pmj-cpp writes it, `(x, y),` (or `[x, y],`): the text
+/// between the brackets, which may be followed by one comma. Other rows are returned as they
+/// are.
+fn unwrap_row(t: &str) -> Result<&str, String> {
+    let close = match t.as_bytes()[0] {
+        b'(' => ')',
+        b'[' => ']',
+        _ => return Ok(t),
+    };
+    let Some(end) = t.rfind(close) else {
+        return Err(format!("`{t}` opens `{}` but never closes it", &t[..1]));
+    };
+    let rest = t[end + 1..].trim();
+    if !(rest.is_empty() || rest == ",") {
+        return Err(format!(
+            "`{rest}` after `{close}` in `{t}` (expected `(x, y)` with at most one comma after it)"
+        ));
+    }
+    Ok(&t[1..end])
+}
+
+/// Whether a header field is a column name: a letter or `_` first (after optional quotes),
+/// then letters, digits, `_`, `-`, `.` or spaces.
+fn is_column_name(f: &str) -> bool {
+    let f = f.trim_matches(|c| c == '"' || c == '\'');
+    let mut chars = f.chars();
+    chars.next().is_some_and(|c| c.is_alphabetic() || c == '_')
+        && chars.all(|c| c.is_alphanumeric() || matches!(c, '_' | '-' | '.' | ' '))
+}
+
+/// Reads exactly `buf.len()` bytes, or says how many came before the end.
+fn read_full(reader: &mut impl std::io::Read, buf: &mut [u8]) -> Result<usize, PointsFileError> {
+    let mut got = 0;
+    while got < buf.len() {
+        match reader.read(&mut buf[got..]) {
+            Ok(0) => break,
+            Ok(k) => got += k,
+            Err(e) if e.kind() == std::io::ErrorKind::Interrupted => {}
+            Err(e) => return Err(io_error(e)),
         }
     }
+    Ok(got)
+}
+
+/// Checks a coordinate read from a binary file: finite.
+fn binary_value(format: PointFormat, v: f64, i: usize, axis: char) -> Result<f64, PointsFileError> {
+    if v.is_finite() {
+        Ok(v)
+    } else {
+        Err(PointsFileError::Binary {
+            format,
+            message: format!("point {}: {axis} = {v} is not finite", i + 1),
+        })
+    }
+}
+
+/// Reads PSA's `.rps`: little-endian float32 pairs, no header (PSA: N = file size / 8).
+fn read_rps(reader: impl std::io::Read, max: usize) -> Result<Raw, PointsFileError> {
+    let format = PointFormat::Rps;
+    let mut reader = std::io::BufReader::new(reader);
+    let mut points = Vec::new();
+    let mut pair = [0u8; 8];
+    loop {
+        let got = read_full(&mut reader, &mut pair)?;
+        if got == 0 {
+            break;
+        }
+        if got < 8 {
+            let bytes = points.len() as u64 * 8 + got as u64;
+            return Err(PointsFileError::Binary {
+                format,
+                message: format!(
+                    "{bytes} bytes is not a whole number of float32 pairs (8 bytes each): the file is truncated"
+                ),
+            });
+        }
+        if points.len() >= max {
+            return Err(PointsFileError::TooMany {
+                found: points.len() + 1,
+                max,
+            });
+        }
+        let i = points.len();
+        let x = f32::from_le_bytes([pair[0], pair[1], pair[2], pair[3]]) as f64;
+        let y = f32::from_le_bytes([pair[4], pair[5], pair[6], pair[7]]) as f64;
+        points.push(DVec2::new(
+            binary_value(format, x, i, 'x')?,
+            binary_value(format, y, i, 'y')?,
+        ));
+    }
+    Ok(Raw {
+        points,
+        lines: Vec::new(),
+        format,
+    })
+}
+
+/// The magic a `.npy` file starts with.
+const NPY_MAGIC: &[u8] = b"\x93NUMPY";
+
+/// A `.npy` header's fields.
+#[derive(Debug, PartialEq)]
+struct NpyHeader {
+    /// 4 or 8.
+    width: usize,
+    big_endian: bool,
+    fortran: bool,
+    n: usize,
+}
+
+/// Reads a NumPy `.npy` file of shape (N, 2), float32 or float64.
+fn read_npy(reader: impl std::io::Read, max: usize) -> Result<Raw, PointsFileError> {
+    let format = PointFormat::Npy;
+    let err = |message: String| PointsFileError::Binary { format, message };
+    let mut reader = std::io::BufReader::new(reader);
+    let mut pre = [0u8; 8];
+    if read_full(&mut reader, &mut pre)? < 8 {
+        return Err(err("the file ends inside the magic and version".into()));
+    }
+    let (major, minor) = (pre[6], pre[7]);
+    let header_len = match major {
+        1 => {
+            let mut l = [0u8; 2];
+            if read_full(&mut reader, &mut l)? < 2 {
+                return Err(err("the file ends inside the header length".into()));
+            }
+            u16::from_le_bytes(l) as usize
+        }
+        2 | 3 => {
+            let mut l = [0u8; 4];
+            if read_full(&mut reader, &mut l)? < 4 {
+                return Err(err("the file ends inside the header length".into()));
+            }
+            u32::from_le_bytes(l) as usize
+        }
+        _ => {
+            return Err(err(format!(
+                "format version {major}.{minor}: must be 1.0, 2.0 or 3.0"
+            )))
+        }
+    };
+    if header_len > MAX_NPY_HEADER_BYTES {
+        return Err(err(format!(
+            "header of {header_len} bytes: at most {MAX_NPY_HEADER_BYTES} (NumPy's own limit)"
+        )));
+    }
+    let mut header = vec![0u8; header_len];
+    if read_full(&mut reader, &mut header)? < header_len {
+        return Err(err(format!(
+            "the file ends inside the {header_len}-byte header"
+        )));
+    }
+    let text = std::str::from_utf8(&header).map_err(|_| err("the header is not text".into()))?;
+    let h = parse_npy_header(text).map_err(|m| err(format!("header: {m}")))?;
+    if h.n == 0 {
+        return Err(PointsFileError::Empty);
+    }
+    if h.n > max {
+        return Err(PointsFileError::TooMany { found: h.n, max });
+    }
+    // Grows with the values actually read: the declared shape never sizes an allocation.
+    let total = 2 * h.n;
+    let mut values: Vec<f64> = Vec::with_capacity(total.min(1 << 16));
+    let mut word = [0u8; 8];
+    let w = h.width;
+    while values.len() < total {
+        let got = read_full(&mut reader, &mut word[..w])?;
+        if got < w {
+            return Err(err(format!(
+                "the data ends after {} of the {} values of shape ({}, 2): the file is truncated",
+                values.len(),
+                total,
+                h.n
+            )));
+        }
+        let v = match (w, h.big_endian) {
+            (4, false) => f32::from_le_bytes([word[0], word[1], word[2], word[3]]) as f64,
+            (4, true) => f32::from_be_bytes([word[0], word[1], word[2], word[3]]) as f64,
+            (_, false) => f64::from_le_bytes(word),
+            (_, true) => f64::from_be_bytes(word),
+        };
+        values.push(v);
+    }
+    let mut extra = [0u8; 1];
+    if read_full(&mut reader, &mut extra)? > 0 {
+        return Err(err(format!(
+            "bytes after the {} values of shape ({}, 2): not what numpy.save writes",
+            total, h.n
+        )));
+    }
+    let mut points = Vec::with_capacity(h.n);
+    for i in 0..h.n {
+        let (x, y) = if h.fortran {
+            (values[i], values[h.n + i])
+        } else {
+            (values[2 * i], values[2 * i + 1])
+        };
+        points.push(DVec2::new(
+            binary_value(format, x, i, 'x')?,
+            binary_value(format, y, i, 'y')?,
+        ));
+    }
+    Ok(Raw {
+        points,
+        lines: Vec::new(),
+        format,
+    })
+}
+
+/// Parses the Python dict literal of a `.npy` header:
+/// `{'descr': '<f8', 'fortran_order': False, 'shape': (N, 2), }` (keys in any order, each
+/// once, no others, as NumPy requires).
+fn parse_npy_header(text: &str) -> Result<NpyHeader, String> {
+    let t = text.trim_end_matches(['\n', ' ', '\0']).trim_start();
+    let inner = t
+        .strip_prefix('{')
+        .and_then(|s| s.strip_suffix('}'))
+        .ok_or_else(|| format!("`{}`: must be a dict `{{…}}`", short(t)))?;
+    let (mut descr, mut fortran, mut shape) = (None, None, None);
+    let mut rest = inner.trim_start();
+    while !rest.is_empty() {
+        let (key, after) =
+            py_string(rest).ok_or_else(|| format!("`{}`: expected a quoted key", short(rest)))?;
+        let after = after
+            .trim_start()
+            .strip_prefix(':')
+            .ok_or_else(|| format!("`{key}`: expected `:` after the key"))?
+            .trim_start();
+        let after = match key {
+            "descr" if descr.is_none() => {
+                let (v, a) = py_string(after)
+                    .ok_or_else(|| "descr: expected a quoted type such as '<f8'".to_string())?;
+                descr = Some(v);
+                a
+            }
+            "fortran_order" if fortran.is_none() => {
+                if let Some(a) = after.strip_prefix("True") {
+                    fortran = Some(true);
+                    a
+                } else if let Some(a) = after.strip_prefix("False") {
+                    fortran = Some(false);
+                    a
+                } else {
+                    return Err("fortran_order: must be True or False".into());
+                }
+            }
+            "shape" if shape.is_none() => {
+                let a = after
+                    .strip_prefix('(')
+                    .ok_or_else(|| "shape: expected a tuple `(N, 2)`".to_string())?;
+                let end = a
+                    .find(')')
+                    .ok_or_else(|| "shape: the tuple is not closed".to_string())?;
+                let dims: Result<Vec<usize>, _> = a[..end]
+                    .split(',')
+                    .map(str::trim)
+                    .filter(|s| !s.is_empty())
+                    .map(|s| s.parse::<usize>())
+                    .collect();
+                let dims = dims.map_err(|_| format!("shape ({}): must be (N, 2)", &a[..end]))?;
+                shape = Some(dims);
+                &a[end + 1..]
+            }
+            "descr" | "fortran_order" | "shape" => return Err(format!("`{key}` is given twice")),
+            other => {
+                return Err(format!(
+                "unknown key `{other}`: a .npy header holds exactly descr, fortran_order and shape"
+            ))
+            }
+        };
+        let after = after.trim_start();
+        rest = match after.strip_prefix(',') {
+            Some(r) => r.trim_start(),
+            None if after.is_empty() => after,
+            None => {
+                return Err(format!(
+                    "`{}`: expected `,` between the entries",
+                    short(after)
+                ))
+            }
+        };
+    }
+    let descr = descr.ok_or("descr is missing")?;
+    let fortran = fortran.ok_or("fortran_order is missing")?;
+    let shape = shape.ok_or("shape is missing")?;
+    let (width, big_endian) = match descr {
+        "<f8" => (8, false),
+        "<f4" => (4, false),
+        ">f8" => (8, true),
+        ">f4" => (4, true),
+        other => {
+            return Err(format!(
+                "descr '{other}': must be float32 or float64 ('<f4', '<f8', '>f4' or '>f8')"
+            ))
+        }
+    };
+    let n = match shape.as_slice() {
+        [n, 2] => *n,
+        dims => {
+            let d: Vec<String> = dims.iter().map(|d| d.to_string()).collect();
+            return Err(format!("shape ({}): must be (N, 2)", d.join(", ")));
+        }
+    };
+    Ok(NpyHeader {
+        width,
+        big_endian,
+        fortran,
+        n,
+    })
+}
+
+/// A Python string literal in single or double quotes at the start of `s` (no escapes, which
+/// no key or type name of a `.npy` header holds), and the text after it.
+fn py_string(s: &str) -> Option<(&str, &str)> {
+    let q = s.chars().next().filter(|c| *c == '\'' || *c == '"')?;
+    let end = s[1..].find(q)? + 1;
+    Some((&s[1..end], &s[end + 1..]))
+}
+
+/// At most 40 characters of `s`, control characters escaped, for one-line messages.
+fn short(s: &str) -> String {
+    let mut out: String = s
+        .chars()
+        .take(40)
+        .flat_map(|c| {
+            let escaped: Vec<char> = if c.is_control() {
+                c.escape_debug().collect()
+            } else {
+                vec![c]
+            };
+            escaped
+        })
+        .collect();
+    if s.chars().count() > 40 {
+        out.push('…');
+    }
+    out
 }
 
 #[cfg(test)]
@@ -315,7 +883,13 @@ mod tests {
             }
         );
         let e = parse_points("0.1 0.2\n1.5 0.2\n", OutOfRange::Reject).unwrap_err();
-        assert!(matches!(e, PointsFileError::OutOfRange { line: 2, .. }));
+        assert!(matches!(
+            e,
+            PointsFileError::OutOfRange {
+                at: Position::Line(2),
+                ..
+            }
+        ));
         let e = parse_points("3\n0.1 0.2\n", OutOfRange::Reject).unwrap_err();
         assert!(matches!(
             e,
@@ -392,7 +966,8 @@ mod tests {
         );
         // Endless valid rows stop at the point limit, or at the byte limit.
         let endless = || std::io::Read::bytes(&b"0.5 0.5\n"[..]).cycle_bytes();
-        let e = read_points_limited(endless(), OutOfRange::Reject, 1 << 20, 1000).unwrap_err();
+        let name = Path::new("");
+        let e = read_limited(endless(), name, OutOfRange::Reject, 1 << 20, 1000).unwrap_err();
         assert_eq!(
             e,
             PointsFileError::TooMany {
@@ -400,7 +975,7 @@ mod tests {
                 max: 1000
             }
         );
-        let e = read_points_limited(endless(), OutOfRange::Reject, 800, 1000).unwrap_err();
+        let e = read_limited(endless(), name, OutOfRange::Reject, 800, 1000).unwrap_err();
         assert_eq!(e, PointsFileError::TooLarge { max_bytes: 800 });
     }
 

@@ -1,8 +1,8 @@
 //! Points imported from other tools, shown in a column instead of a generated pattern.
 //!
-//! A column with `points: Some(…)` takes its points from a file (CSV with or without the
-//! header `x,y`, or PSA-style `x y` text with an optional count line; see
-//! [`crate::core::pointset`]) or from the scene itself (inline). The file is read once, when
+//! A column with `points: Some(…)` takes its points from a file (any format
+//! [`crate::core::pointset`] reads: CSV or whitespace-separated text with an optional header
+//! or count line, pmj-cpp's `(x, y),` rows, NumPy `.npy`, PSA's `.rps`) or from the scene itself (inline). The file is read once, when
 //! the scene is loaded ([`ImportedPoints::resolve`]); from then on the points are part of the
 //! scene, so the compute graph never touches the file system and a saved scene keeps them.
 //!
@@ -74,7 +74,7 @@ impl ImportedPoints {
         } else if self.normalize && self.first_outside().is_some() {
             let raw: Vec<DVec2> = self.to_dvec();
             if raw.iter().all(|p| p.is_finite()) {
-                self.points = normalize_to_bounding_box(&raw)
+                self.points = normalize_to_bounding_box(&raw)?
                     .iter()
                     .map(|p| [p.x, p.y])
                     .collect();

@@ -117,7 +117,7 @@ impl PointImport {
                 rect.center(),
                 egui::Align2::CENTER_CENTER,
                 format!(
-                    "Drop a point file (CSV or x y text) on column {}",
+                    "Drop a point file (CSV, x y text, .npy or .rps) on column {}",
                     column + 1
                 ),
                 egui::FontId::proportional(18.0),

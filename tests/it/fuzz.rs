@@ -966,3 +966,237 @@ fn generated_long_scene_text_is_laid_out_quickly_or_refused_in_one_line() {
         )
         .unwrap();
 }
+
+/// A point file in one of the formats peers write, then mutated: `.npy` files with their
+/// header edited, a byte flipped, the header length changed or the data cut; PSA `.rps` cut at
+/// any byte; text rows with mixed separators (comma, spaces, tabs, semicolons), pmj-cpp's
+/// `(x, y),` wrappers, headers and count lines, under any extension.
+fn mutated_point_file() -> impl Strategy<Value = (String, Vec<u8>)> {
+    const HEADER_TOKENS: &[&str] = &[
+        "'<f8'",
+        "'<f4'",
+        "'>f8'",
+        "'<i8'",
+        "'|u1'",
+        "True",
+        "False",
+        "(16, 2)",
+        "(3,)",
+        "(16, 2, 1)",
+        "()",
+        "(99999999999999999999, 2)",
+        "(-1, 2)",
+        "'shape'",
+        "'descr'",
+        "'fortran_order'",
+        "{",
+        "}",
+        ",",
+        ":",
+        "'",
+        "\0",
+        "é",
+    ];
+    const NUMBERS: &[&str] = &[
+        "0",
+        "0.5",
+        "0.25",
+        "1",
+        "1.0",
+        "1.0000000000000002",
+        "-0",
+        "-0.0",
+        "0.999999999999",
+        "1e-300",
+        "nan",
+        "inf",
+        "-1",
+        "2",
+        "abc",
+        "",
+        "0x1",
+        "5e-324",
+    ];
+    const SEPARATORS: &[&str] = &[",", " ", "\t", ", ", " ,", ";", "  ", ",,", " \t "];
+    const FIRST_LINES: &[&str] = &[
+        "",
+        "x,y\n",
+        "x y\n",
+        "X\tY\n",
+        "\"x\",\"y\"\n",
+        "# comment\n",
+        "3\n",
+        "2\n",
+        "x,y,z\n",
+        "\u{feff}x,y\n",
+        "(x, y)\n",
+    ];
+    let npy = (
+        proptest::collection::vec((0.0f64..1.0, 0.0f64..1.0), 1..20),
+        any::<bool>(),
+        any::<bool>(),
+        1u8..4,
+        proptest::collection::vec(
+            (
+                0usize..400,
+                0usize..12,
+                0usize..4,
+                proptest::sample::select(HEADER_TOKENS),
+            ),
+            0..3,
+        ),
+    )
+        .prop_map(|(points, f32s, fortran, version, edits)| {
+            let descr = if f32s { "<f4" } else { "<f8" };
+            let header = format!(
+                "{{'descr': '{descr}', 'fortran_order': {}, 'shape': ({}, 2), }}",
+                if fortran { "True" } else { "False" },
+                points.len()
+            );
+            let mut bytes = b"\x93NUMPY".to_vec();
+            bytes.extend_from_slice(&[version, 0]);
+            if version == 1 {
+                bytes.extend_from_slice(&(header.len() as u16).to_le_bytes());
+            } else {
+                bytes.extend_from_slice(&(header.len() as u32).to_le_bytes());
+            }
+            let header_start = bytes.len();
+            bytes.extend_from_slice(header.as_bytes());
+            let values: Vec<f64> = if fortran {
+                points
+                    .iter()
+                    .map(|p| p.0)
+                    .chain(points.iter().map(|p| p.1))
+                    .collect()
+            } else {
+                points.iter().flat_map(|p| [p.0, p.1]).collect()
+            };
+            for v in values {
+                if f32s {
+                    bytes.extend_from_slice(&(v as f32).to_le_bytes());
+                } else {
+                    bytes.extend_from_slice(&v.to_le_bytes());
+                }
+            }
+            for (at, len, op, token) in edits {
+                match op {
+                    // Replace a span of the header by a token.
+                    0 => {
+                        let end = (header_start + header.len()).min(bytes.len());
+                        let a = (header_start + at % header.len()).min(end);
+                        let b = (a + len).min(end);
+                        bytes.splice(a..b, token.bytes());
+                    }
+                    // Flip a byte anywhere.
+                    1 => {
+                        let a = at % bytes.len();
+                        bytes[a] ^= 1 << (len % 8);
+                    }
+                    // Cut the file.
+                    2 => bytes.truncate(at % (bytes.len() + 1)),
+                    // Change the header length.
+                    _ => {
+                        if bytes.len() > 9 {
+                            bytes[8] = (at % 256) as u8;
+                        }
+                    }
+                }
+            }
+            ("f.npy".to_string(), bytes)
+        });
+    let rps = (
+        proptest::collection::vec(
+            prop_oneof![
+                0.0f32..1.0,
+                Just(1.0f32),
+                Just(f32::NAN),
+                Just(-0.0f32),
+                Just(1.5f32),
+                Just(f32::INFINITY)
+            ],
+            0..40,
+        ),
+        0usize..400,
+    )
+        .prop_map(|(values, cut)| {
+            let mut bytes: Vec<u8> = values.iter().flat_map(|v| v.to_le_bytes()).collect();
+            bytes.truncate(cut.min(bytes.len()));
+            ("f.rps".to_string(), bytes)
+        });
+    let text = (
+        proptest::sample::select(FIRST_LINES),
+        proptest::collection::vec(
+            (
+                proptest::sample::select(NUMBERS),
+                proptest::sample::select(SEPARATORS),
+                proptest::sample::select(NUMBERS),
+                0usize..4,
+                proptest::sample::select(&["\n", "\r\n", "\n\n", "\n# c\n"][..]),
+            ),
+            0..12,
+        ),
+        proptest::sample::select(&["txt", "csv", "tsv", "dat", "npy", "rps", ""][..]),
+    )
+        .prop_map(|(first, rows, ext)| {
+            let mut s = first.to_string();
+            for (x, sep, y, wrap, end) in rows {
+                let row = format!("{x}{sep}{y}");
+                s += &match wrap {
+                    0 => row,
+                    1 => format!("({row}),"),
+                    2 => format!("[{row}]"),
+                    _ => format!("({row}"),
+                };
+                s += end;
+            }
+            (format!("f.{ext}"), s.into_bytes())
+        });
+    prop_oneof![npy, rps, text]
+}
+
+#[test]
+fn mutated_point_files_in_peer_formats_read_or_fail_in_one_line() {
+    use samplescope::core::pointset::{read_points_named, OutOfRange};
+    let read = std::cell::Cell::new(0);
+    let refused = std::cell::Cell::new(0);
+    runner(1500, 13)
+        .run(
+            &(mutated_point_file(), any::<bool>()),
+            |((name, bytes), normalize)| {
+                let mode = if normalize {
+                    OutOfRange::NormalizeToBoundingBox
+                } else {
+                    OutOfRange::Reject
+                };
+                let start = Instant::now();
+                match read_points_named(&bytes[..], std::path::Path::new(&name), mode) {
+                    Ok(r) => {
+                        read.set(read.get() + 1);
+                        prop_assert!(!r.points.is_empty());
+                        prop_assert!(
+                            r.points
+                                .iter()
+                                .all(|p| (0.0..1.0).contains(&p.x) && (0.0..1.0).contains(&p.y)),
+                            "{name}: {:?}",
+                            r.points
+                        );
+                    }
+                    Err(e) => {
+                        refused.set(refused.get() + 1);
+                        let msg = e.to_string();
+                        prop_assert!(!msg.contains('\n'), "{name}: one line: {msg:?}");
+                        prop_assert!(!msg.is_empty());
+                    }
+                }
+                prop_assert!(start.elapsed() < Duration::from_secs(2));
+                Ok(())
+            },
+        )
+        .unwrap();
+    assert!(
+        read.get() > 100 && refused.get() > 300,
+        "read {}, refused {}",
+        read.get(),
+        refused.get()
+    );
+}

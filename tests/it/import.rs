@@ -4,7 +4,7 @@
 
 use glam::DVec2;
 use samplescope::core::cancel::Cancel;
-use samplescope::core::pointset::{read_points_file, OutOfRange, PointsFileError};
+use samplescope::core::pointset::{read_points_file, OutOfRange, PointsFileError, Position};
 use samplescope::engine::Evaluator;
 use samplescope::scene::graph::{NodeKind, NodeValue};
 use samplescope::scene::node::NodeError;
@@ -49,8 +49,8 @@ fn csv_with_and_without_header_parse() {
 #[test]
 fn point_outside_the_unit_square_names_its_line() {
     match read("outside-line-5.txt") {
-        Err(PointsFileError::OutOfRange { line, x, y }) => {
-            assert_eq!((line, x, y), (5, 1.25, 0.5));
+        Err(PointsFileError::OutOfRange { at, x, y }) => {
+            assert_eq!((at, x, y), (Position::Line(5), 1.25, 0.5));
         }
         other => panic!("{other:?}"),
     }
@@ -214,7 +214,13 @@ fn bad_points_in_scenes_name_column_and_line() {
     match Scene::from_ron_in(text, "s.ron", Some(data("").as_path())) {
         Err(SceneError::Points { column, error, .. }) => {
             assert_eq!(column, 0);
-            assert!(matches!(error, PointsFileError::OutOfRange { line: 5, .. }));
+            assert!(matches!(
+                error,
+                PointsFileError::OutOfRange {
+                    at: Position::Line(5),
+                    ..
+                }
+            ));
         }
         other => panic!("{other:?}"),
     }

@@ -19,6 +19,7 @@ mod filter_numerics;
 mod fuzz;
 mod import;
 mod integration_study;
+mod interop;
 mod metrics_common;
 mod metrics_l2;
 mod metrics_min_distance;

@@ -92,7 +92,7 @@ pub use star::{
     star_discrepancy, star_discrepancy_1d, star_discrepancy_1d_brute_force,
     star_discrepancy_brute_force, StarDiscrepancy, STAR_BRUTE_FORCE_MAX_N, STAR_EXACT_MAX_N,
 };
-pub use tvalue::{t_value, ElementaryViolation, TValue};
+pub use tvalue::{net_prefixes, t_value, ElementaryViolation, NetPrefixes, PrefixCheck, TValue};
 
 /// Why a statistic could not be computed. Every variant names the offending input.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]

@@ -168,6 +168,77 @@ pub fn t_value(points: &[DVec2], base: u32, cancel: &Cancel) -> Result<TValue, M
     })
 }
 
+/// One power-of-two prefix `points[..2^k]` checked as a (0, k, 2)-net in base 2.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+pub struct PrefixCheck {
+    /// The prefix length `2^k`.
+    pub n: usize,
+    /// `k`.
+    pub k: u32,
+    /// Whether every elementary interval of area `2^−k` (all shapes `2^−kx × 2^−(k−kx)`) holds
+    /// exactly one of the prefix's points.
+    pub is_net: bool,
+}
+
+/// The (0, k, 2)-net check of every power-of-two prefix of a sequence (what a progressive
+/// (0,2)-sequence such as Sobol' or pmj02, with or without Owen scrambling, must pass).
+#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
+pub struct NetPrefixes {
+    /// Every prefix `2^k ≤ N`, k = 0, 1, …, in order.
+    pub prefixes: Vec<PrefixCheck>,
+    /// The first prefix that is not a net and its first wrong interval (in order of `kx`, then
+    /// column, then row): `violation.t = 0`, `expected = 1`, `cell = (column, row)` counted from
+    /// the origin.
+    pub first_failure: Option<(PrefixCheck, ElementaryViolation)>,
+}
+
+/// Checks every power-of-two prefix `points[..2^k]` (`2^k ≤ N`) for the (0, k, 2)-net property
+/// in base 2: every elementary interval `[c·2^−kx, (c+1)·2^−kx) × [r·2^−ky, (r+1)·2^−ky)` with
+/// `kx + ky = k` holds exactly one point. Exact for every f64 in [0, 1) (`⌊x·2^k⌋` is exact in
+/// base 2). N need not be a power of two: the prefixes are checked up to the largest `2^k ≤ N`.
+/// Cost O(N log N) in all (the prefixes' sizes sum to below 2N).
+///
+/// Errors: empty or invalid points; cancellation.
+pub fn net_prefixes(points: &[DVec2], cancel: &Cancel) -> Result<NetPrefixes, MetricsError> {
+    validate(points)?;
+    let top = usize::BITS - 1 - points.len().leading_zeros(); // ⌊log2 N⌋
+    let pow: Vec<u64> = (0..=top).map(|k| 1u64 << k).collect();
+    let s = (1u64 << top) as f64;
+    // ⌊x·2^top⌋, then ⌊x·2^k⌋ = that >> (top − k).
+    let fine: Vec<(u64, u64)> = points[..1 << top]
+        .iter()
+        .map(|p| {
+            (
+                exact_floor_scaled(p.x, s, true),
+                exact_floor_scaled(p.y, s, true),
+            )
+        })
+        .collect();
+    let mut prefixes = Vec::with_capacity(top as usize + 1);
+    let mut first_failure = None;
+    let mut digits = Vec::with_capacity(fine.len());
+    for k in 0..=top {
+        let n = 1usize << k;
+        let shift = top - k;
+        digits.clear();
+        digits.extend(fine[..n].iter().map(|&(x, y)| (x >> shift, y >> shift)));
+        let violation = violation_at(&digits, &pow, k, 0, cancel)?;
+        let check = PrefixCheck {
+            n,
+            k,
+            is_net: violation.is_none(),
+        };
+        if let (true, Some(v)) = (first_failure.is_none(), violation) {
+            first_failure = Some((check, v));
+        }
+        prefixes.push(check);
+    }
+    Ok(NetPrefixes {
+        prefixes,
+        first_failure,
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
