@@ -18,7 +18,7 @@ use samplescope::engine::Evaluator;
 use samplescope::export::figure::{comparison_png, comparison_size, panel_png, Aspect};
 use samplescope::export::{flip_rows, png_bytes};
 use samplescope::model::Colormap;
-use samplescope::model::{ColumnData, FigureContext, PanelKind, ReconData};
+use samplescope::model::{ColumnData, FigureContext, FigureKind, ReconData};
 use samplescope::scene::{figure, Scene};
 use std::hint::black_box;
 use std::sync::Arc;
@@ -79,7 +79,7 @@ fn bench(c: &mut Criterion) {
         black_box(png_bytes(&values, W, W, 0.0, 1.0, Colormap::Greys, &[]).expect("valid image"));
     };
     let figure = |scale: u32| {
-        black_box(panel_png(PanelKind::Reconstruction, &ctx, &data, scale).expect("figure draws"));
+        black_box(panel_png(FigureKind::Reconstruction, &ctx, &data, scale).expect("figure draws"));
     };
     let mut g = c.benchmark_group("figure 512² zone plate");
     g.sample_size(20);
@@ -107,7 +107,7 @@ fn bench(c: &mut Criterion) {
 }
 
 /// The default scene evaluated (no disk cache) and prepared as `render` prepares it.
-fn default_comparison() -> (Vec<PanelKind>, Vec<(FigureContext, ColumnData)>) {
+fn default_comparison() -> (Vec<FigureKind>, Vec<(FigureContext, ColumnData)>) {
     let scene = Scene::default();
     let mut results = vec![std::collections::HashMap::new(); scene.columns.len()];
     Evaluator::new(samplescope::engine::cache::DEFAULT_BUDGET, None).evaluate(

@@ -1,5 +1,5 @@
 //! The plain data that views draw: images, point sets, spectra, curves, the per-node data
-//! structs the compute graph fills, the identities of the panels ([`PanelKind`]), a column's
+//! structs the compute graph fills, the identities of the figures ([`FigureKind`]), a column's
 //! data as the figures read it ([`ColumnData`]), the plain figure context ([`FigureContext`]),
 //! and the shared display vocabulary (the one [`Colormap`] with its CPU colorizer, the
 //! [`palette`], the dB conversion, the elementary-interval grid).
@@ -13,11 +13,11 @@ mod accuracy;
 mod colormap;
 mod column;
 mod context;
+mod figure_kind;
 mod filter;
 mod image;
 mod integration;
 pub mod palette;
-mod panel;
 mod points;
 mod recon;
 mod spectrum;
@@ -26,12 +26,12 @@ pub use accuracy::Accuracy;
 pub use colormap::{colorize, Colormap};
 pub use column::ColumnData;
 pub use context::{sanitize, FigureContext};
+pub use figure_kind::FigureKind;
 pub use filter::{amplitude_db, ResponseData, ResponseMetrics, DB_FLOOR};
 pub use image::{next_version, ImageData};
 pub use integration::{
     guide_line, IntegrationCurve, IntegrationData, IntegrationPlot, GUIDE_SLOPES,
 };
-pub use panel::PanelKind;
 pub use points::{elementary_grid, PointsData, StatsData, MAX_STRATA_LINES, STATS_PSA_MAX_N};
 pub use recon::{ConvergencePoint, ErrorData, ReconData, ReferenceData};
 pub use spectrum::{shared_spectrum_range, SpectrumData, SHARED_DECADES};

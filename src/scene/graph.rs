@@ -26,7 +26,7 @@
 use super::compute;
 use super::node::Output;
 use super::{panels, ReconMode, Scene};
-use crate::model::PanelKind;
+use crate::model::FigureKind;
 use serde::Serialize;
 
 pub use super::node::{
@@ -140,7 +140,7 @@ pub static NODES: [NodeDef; 11] = [
     NodeDef {
         kind: NodeKind::Points,
         shown: |s, c| {
-            panels::shows(s, c, PanelKind::Pattern) || panels::shows(s, c, PanelKind::Sphere)
+            panels::shows(s, c, FigureKind::Pattern) || panels::shows(s, c, FigureKind::Sphere)
         },
         inputs: |s, c| {
             let col = &s.columns[c];
@@ -156,7 +156,7 @@ pub static NODES: [NodeDef; 11] = [
     },
     NodeDef {
         kind: NodeKind::Statistics,
-        shown: |s, c| panels::shows(s, c, PanelKind::Pattern) && s.effects.statistics,
+        shown: |s, c| panels::shows(s, c, FigureKind::Pattern) && s.effects.statistics,
         inputs: |_, _| Inputs::new(NodeKind::Statistics, &[NodeKind::Points], ()),
         run: compute::statistics,
         disk_cached: false,
@@ -164,7 +164,7 @@ pub static NODES: [NodeDef; 11] = [
     },
     NodeDef {
         kind: NodeKind::Spectrum,
-        shown: |s, c| panels::shows(s, c, PanelKind::Spectrum),
+        shown: |s, c| panels::shows(s, c, FigureKind::Spectrum),
         // Realization 0 is the points node's set; realizations r > 0 are generated from the
         // pattern (an imported file has one realization: K does not matter, see `import`).
         inputs: |s, c| {
@@ -197,7 +197,7 @@ pub static NODES: [NodeDef; 11] = [
     },
     NodeDef {
         kind: NodeKind::Reconstruction,
-        shown: |s, c| panels::shows(s, c, PanelKind::Reconstruction),
+        shown: |s, c| panels::shows(s, c, FigureKind::Reconstruction),
         inputs: |s, c| {
             let col = &s.columns[c];
             let (f, w) = (&s.filter, s.recon.size);
@@ -223,7 +223,7 @@ pub static NODES: [NodeDef; 11] = [
     },
     NodeDef {
         kind: NodeKind::Reference,
-        shown: |s, c| panels::shows(s, c, PanelKind::Reference),
+        shown: |s, c| panels::shows(s, c, FigureKind::Reference),
         inputs: |s, _| Inputs::new(NodeKind::Reference, &[], (&s.signal, s.recon.size)),
         run: compute::reference,
         disk_cached: true,
@@ -232,7 +232,7 @@ pub static NODES: [NodeDef; 11] = [
     },
     NodeDef {
         kind: NodeKind::Error,
-        shown: |s, c| panels::shows(s, c, PanelKind::Error),
+        shown: |s, c| panels::shows(s, c, FigureKind::Error),
         inputs: |_, _| {
             Inputs::new(
                 NodeKind::Error,
@@ -247,7 +247,7 @@ pub static NODES: [NodeDef; 11] = [
     },
     NodeDef {
         kind: NodeKind::Response,
-        shown: |s, c| panels::shows(s, c, PanelKind::Response),
+        shown: |s, c| panels::shows(s, c, FigureKind::Response),
         inputs: |s, _| Inputs::new(NodeKind::Response, &[], s.filter),
         run: compute::response,
         disk_cached: false,
@@ -255,7 +255,7 @@ pub static NODES: [NodeDef; 11] = [
     },
     NodeDef {
         kind: NodeKind::Convergence,
-        shown: |s, c| panels::shows(s, c, PanelKind::Convergence),
+        shown: |s, c| panels::shows(s, c, FigureKind::Convergence),
         inputs: |s, c| {
             let col = &s.columns[c];
             Inputs::new(
@@ -271,7 +271,7 @@ pub static NODES: [NodeDef; 11] = [
     NodeDef {
         kind: NodeKind::Theorem,
         // Column-independent: keyed by its settings alone, listed for column 0 only.
-        shown: |s, c| panels::shows(s, c, PanelKind::TheoremSignal),
+        shown: |s, c| panels::shows(s, c, FigureKind::TheoremSignal),
         inputs: |s, _| Inputs::new(NodeKind::Theorem, &[], s.theorem),
         run: compute::theorem,
         disk_cached: false,

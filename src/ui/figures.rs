@@ -8,7 +8,7 @@
 //! written, or the error, in the top bar.
 
 use crate::export::figure::{self, FileFormat};
-use crate::model::{Colormap, ColumnData, FigureContext, PanelKind};
+use crate::model::{Colormap, ColumnData, FigureContext, FigureKind};
 use crate::scene::{self, Scene};
 use eframe::egui;
 use std::path::{Path, PathBuf};
@@ -21,7 +21,7 @@ const SLIDE: figure::Aspect = figure::Aspect::SLIDE;
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Target {
     /// One figure of one column.
-    Panel { column: usize, kind: PanelKind },
+    Panel { column: usize, kind: FigureKind },
     /// A column's visible panels side by side.
     Column { column: usize },
     /// Every column, one row each.
@@ -53,7 +53,7 @@ pub struct Request {
 struct PanelRect {
     rect: egui::Rect,
     column: usize,
-    kind: PanelKind,
+    kind: FigureKind,
 }
 
 /// The figure requests of one frame, and where each panel was drawn: owned by the app, lent to
@@ -77,12 +77,12 @@ impl FigureRequests {
     }
 
     /// Records where a panel of figure `kind` was drawn this frame.
-    pub fn panel_drawn(&mut self, rect: egui::Rect, column: usize, kind: PanelKind) {
+    pub fn panel_drawn(&mut self, rect: egui::Rect, column: usize, kind: FigureKind) {
         self.panels.push(PanelRect { rect, column, kind });
     }
 
     /// The panel under `pos` among those drawn this frame; clears the list for the next frame.
-    fn panel_at(&mut self, pos: Option<egui::Pos2>) -> Option<(usize, PanelKind)> {
+    fn panel_at(&mut self, pos: Option<egui::Pos2>) -> Option<(usize, FigureKind)> {
         let rects = std::mem::take(&mut self.panels);
         let pos = pos?;
         rects
@@ -92,7 +92,7 @@ impl FigureRequests {
     }
 
     /// A small "Save" menu for the figures of one panel: PNG 1×/2×/3×, SVG, CSV, clipboard.
-    pub fn panel_menu_ui(&mut self, ui: &mut egui::Ui, column: usize, kinds: &[PanelKind]) {
+    pub fn panel_menu_ui(&mut self, ui: &mut egui::Ui, column: usize, kinds: &[FigureKind]) {
         ui.menu_button("Save", |ui| {
             for &kind in kinds {
                 if kinds.len() > 1 {
@@ -470,7 +470,7 @@ mod tests {
         let png = Request {
             target: Target::Panel {
                 column: 0,
-                kind: PanelKind::Pattern,
+                kind: FigureKind::Pattern,
             },
             output: Output::Png { scale: 1 },
         };
@@ -559,7 +559,7 @@ mod tests {
         let p = written(Request {
             target: Target::Panel {
                 column: 0,
-                kind: PanelKind::TheoremSpectrum,
+                kind: FigureKind::TheoremSpectrum,
             },
             output: Output::Csv,
         });
@@ -592,7 +592,7 @@ mod tests {
             Request {
                 target: Target::Panel {
                     column: 1,
-                    kind: PanelKind::TheoremSignal,
+                    kind: FigureKind::TheoremSignal,
                 },
                 output: Output::Png { scale: 1 },
             },
@@ -622,14 +622,14 @@ mod tests {
     fn the_panel_under_the_pointer_is_found_once_per_frame() {
         let mut requests = FigureRequests::default();
         let rect = egui::Rect::from_min_size(egui::pos2(10.0, 10.0), egui::vec2(100.0, 100.0));
-        requests.panel_drawn(rect, 1, PanelKind::Spectrum);
+        requests.panel_drawn(rect, 1, FigureKind::Spectrum);
         assert_eq!(requests.panel_at(None), None);
-        requests.panel_drawn(rect, 1, PanelKind::Spectrum);
+        requests.panel_drawn(rect, 1, FigureKind::Spectrum);
         assert_eq!(requests.panel_at(Some(egui::pos2(500.0, 50.0))), None);
-        requests.panel_drawn(rect, 1, PanelKind::Spectrum);
+        requests.panel_drawn(rect, 1, FigureKind::Spectrum);
         assert_eq!(
             requests.panel_at(Some(egui::pos2(50.0, 50.0))),
-            Some((1, PanelKind::Spectrum))
+            Some((1, FigureKind::Spectrum))
         );
         // Cleared for the next frame.
         assert_eq!(requests.panel_at(Some(egui::pos2(50.0, 50.0))), None);

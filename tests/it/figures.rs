@@ -11,7 +11,7 @@ use samplescope::export::figure::{
     panel_rgba, panel_svg, text_width, Aspect, Layout, MAX_COMPOSITE_PIXELS, SCALES,
 };
 use samplescope::export::ExportError;
-use samplescope::model::{ColumnData, FigureContext, PanelKind, PointsData, ReconData};
+use samplescope::model::{ColumnData, FigureContext, FigureKind, PointsData, ReconData};
 use samplescope::scene::graph::{NodeKind, NodeResult};
 use samplescope::scene::{figure as scene_figure, panels, Scene};
 use std::collections::HashMap;
@@ -105,9 +105,9 @@ fn every_panel_png_decodes_at_base_size_times_scale() {
     let kinds = panels::available(&scene);
     assert_eq!(
         kinds.len(),
-        PanelKind::ALL
+        FigureKind::ALL
             .iter()
-            .filter(|&&k| !k.is_theorem() && k != PanelKind::Sphere)
+            .filter(|&&k| !k.is_theorem() && k != FigureKind::Sphere)
             .count(),
         "the scene shows every figure but the theorem's and the sphere's (tested on their own \
          scenes below)"
@@ -140,7 +140,7 @@ fn png_metadata_names_scene_pattern_n_seed_filter_signal_and_scale() {
     let scene = quick_scene();
     let cols = columns(&scene);
     let (ctx, data) = &cols[0];
-    let bytes = panel_png(PanelKind::Spectrum, ctx, data, 2).unwrap();
+    let bytes = panel_png(FigureKind::Spectrum, ctx, data, 2).unwrap();
     let (_, _, text) = decode(&bytes);
     assert_eq!(meta(&text, "scene"), "Figure test, jitter ω²");
     assert_eq!(meta(&text, "pattern"), "jitter");
@@ -168,7 +168,7 @@ fn svg_has_axes_text_metadata_and_embedded_images() {
     let scene = quick_scene();
     let cols = columns(&scene);
     let (ctx, data) = &cols[1];
-    let pattern = panel_svg(PanelKind::Pattern, ctx, data, 1).unwrap();
+    let pattern = panel_svg(FigureKind::Pattern, ctx, data, 1).unwrap();
     assert!(pattern.starts_with("<svg"));
     assert!(pattern.contains("width=\"480\" height=\"510\""));
     assert!(pattern.contains("<title>white noise, N = 256, seed 3</title>"));
@@ -187,12 +187,12 @@ fn svg_has_axes_text_metadata_and_embedded_images() {
         "one circle per point"
     );
 
-    let response = panel_svg(PanelKind::Response, ctx, data, 2).unwrap();
+    let response = panel_svg(FigureKind::Response, ctx, data, 2).unwrap();
     assert!(response.contains("ω (cycles per sample)"));
     assert!(response.contains("Nyquist, ω = 0.5"));
     assert!(response.contains("width=\"1280\" height=\"1020\""));
 
-    let spectrum = panel_svg(PanelKind::Spectrum, ctx, data, 1).unwrap();
+    let spectrum = panel_svg(FigureKind::Spectrum, ctx, data, 1).unwrap();
     assert_eq!(
         spectrum.matches("<image ").count(),
         2,
@@ -220,7 +220,7 @@ fn csv_round_trips_the_drawn_numbers() {
     let cols = columns(&scene);
     let (ctx, data) = &cols[0];
 
-    let points = parse_pairs(&panel_csv(PanelKind::Pattern, ctx, data).unwrap(), "x,y");
+    let points = parse_pairs(&panel_csv(FigureKind::Pattern, ctx, data).unwrap(), "x,y");
     let want: Vec<[f64; 2]> = data
         .points
         .as_ref()
@@ -233,22 +233,22 @@ fn csv_round_trips_the_drawn_numbers() {
 
     let spectrum = data.spectrum.as_ref().unwrap();
     let raps = parse_pairs(
-        &panel_csv(PanelKind::Raps, ctx, data).unwrap(),
+        &panel_csv(FigureKind::Raps, ctx, data).unwrap(),
         "radius,power",
     );
     assert_eq!(raps, spectrum.raps);
 
     let response = data.response.as_ref().unwrap();
-    let kernel = parse_pairs(&panel_csv(PanelKind::Kernel, ctx, data).unwrap(), "x,h");
+    let kernel = parse_pairs(&panel_csv(FigureKind::Kernel, ctx, data).unwrap(), "x,h");
     assert_eq!(kernel, response.kernel);
     let mag = parse_pairs(
-        &panel_csv(PanelKind::Response, ctx, data).unwrap(),
+        &panel_csv(FigureKind::Response, ctx, data).unwrap(),
         "omega,magnitude",
     );
     assert_eq!(mag, response.magnitude);
 
     let conv = parse_pairs(
-        &panel_csv(PanelKind::Convergence, ctx, data).unwrap(),
+        &panel_csv(FigureKind::Convergence, ctx, data).unwrap(),
         "spp,rmse",
     );
     let want: Vec<[f64; 2]> = data
@@ -261,7 +261,7 @@ fn csv_round_trips_the_drawn_numbers() {
     assert_eq!(conv, want);
 
     // Periodogram: M² rows of (kx, ky, log10 P), kx and ky in [−M/2, M/2).
-    let csv = panel_csv(PanelKind::Spectrum, ctx, data).unwrap();
+    let csv = panel_csv(FigureKind::Spectrum, ctx, data).unwrap();
     let mut lines = csv.lines();
     assert_eq!(lines.next(), Some("kx,ky,log10_power"));
     let rows: Vec<(i64, i64, f32)> = lines
@@ -283,7 +283,7 @@ fn csv_round_trips_the_drawn_numbers() {
 
     // Images: one row per line, top row first.
     let recon = data.reconstruction.as_ref().unwrap();
-    let csv = panel_csv(PanelKind::Reconstruction, ctx, data).unwrap();
+    let csv = panel_csv(FigureKind::Reconstruction, ctx, data).unwrap();
     let values: Vec<f32> = csv
         .lines()
         .flat_map(|l| l.split(',').map(|v| v.parse::<f32>().unwrap()))
@@ -326,7 +326,7 @@ fn scale_out_of_range_is_a_typed_error_naming_the_field_and_range() {
     let cols = columns(&scene);
     let (ctx, data) = &cols[0];
     for bad in [0, SCALES.end() + 1, 9] {
-        let e = panel_png(PanelKind::Pattern, ctx, data, bad).unwrap_err();
+        let e = panel_png(FigureKind::Pattern, ctx, data, bad).unwrap_err();
         assert!(
             matches!(e, ExportError::OutOfRange { field: "scale", .. }),
             "{e:?}"
@@ -336,8 +336,8 @@ fn scale_out_of_range_is_a_typed_error_naming_the_field_and_range() {
             msg.contains(&format!("scale = {bad}")) && msg.contains("1..=4"),
             "{msg}"
         );
-        assert!(panel_svg(PanelKind::Pattern, ctx, data, bad).is_err());
-        assert!(column_png(&[PanelKind::Pattern], ctx, data, bad, Aspect::SLIDE).is_err());
+        assert!(panel_svg(FigureKind::Pattern, ctx, data, bad).is_err());
+        assert!(column_png(&[FigureKind::Pattern], ctx, data, bad, Aspect::SLIDE).is_err());
     }
 }
 
@@ -346,7 +346,7 @@ fn missing_or_empty_data_is_an_error_naming_the_figure() {
     let scene = quick_scene();
     let ctx = scene_figure::context(&scene, 0, "x").unwrap();
     let none = ColumnData::default();
-    for kind in PanelKind::ALL {
+    for kind in FigureKind::ALL {
         let e = panel_png(kind, &ctx, &none, 1).unwrap_err();
         assert!(
             matches!(e, ExportError::EmptyData { .. }),
@@ -363,7 +363,7 @@ fn missing_or_empty_data_is_an_error_naming_the_figure() {
         })),
         ..Default::default()
     };
-    let e = panel_png(PanelKind::Pattern, &ctx, &empty, 1).unwrap_err();
+    let e = panel_png(FigureKind::Pattern, &ctx, &empty, 1).unwrap_err();
     assert!(e.to_string().contains("empty"), "{e}");
     assert!(column_png(&[], &ctx, &empty, 1, Aspect::SLIDE).is_err());
     assert!(scene_figure::context(&scene, 5, "x").is_err());
@@ -397,7 +397,7 @@ fn images_and_points_are_drawn_where_their_data_says() {
             }))),
             ..Default::default()
         };
-        let (w, h, rgba) = panel_rgba(PanelKind::Reconstruction, &ctx, &data, 1).unwrap();
+        let (w, h, rgba) = panel_rgba(FigureKind::Reconstruction, &ctx, &data, 1).unwrap();
         assert_eq!((w, h), (480, 510));
         let rgb: Vec<u8> = rgba
             .chunks(4)
@@ -407,7 +407,7 @@ fn images_and_points_are_drawn_where_their_data_says() {
             })
             .collect();
         let (_, decoded, _) =
-            decode(&panel_png(PanelKind::Reconstruction, &ctx, &data, 1).unwrap());
+            decode(&panel_png(FigureKind::Reconstruction, &ctx, &data, 1).unwrap());
         assert_eq!(rgb, decoded, "RGBA and PNG hold the same pixels");
         colours.push(plot_centre(&rgb));
     }
@@ -423,7 +423,7 @@ fn images_and_points_are_drawn_where_their_data_says() {
         })),
         ..Default::default()
     };
-    let (_, px, _) = decode(&panel_png(PanelKind::Pattern, &ctx, &one, 1).unwrap());
+    let (_, px, _) = decode(&panel_png(FigureKind::Pattern, &ctx, &one, 1).unwrap());
     let centre = plot_centre(&px);
     assert!(centre.iter().all(|&c| c < 60), "{centre:?}");
     let off = ((40 + 10 + 100) * 480 + 10 + 60 + 100) * 3;
@@ -438,11 +438,11 @@ fn composites_put_the_panels_of_every_column_in_the_grid_that_fills_the_frame() 
     assert_eq!(
         kinds,
         vec![
-            PanelKind::Pattern,
-            PanelKind::Spectrum,
-            PanelKind::Reconstruction,
-            PanelKind::Kernel,
-            PanelKind::Response
+            FigureKind::Pattern,
+            FigureKind::Spectrum,
+            FigureKind::Reconstruction,
+            FigureKind::Kernel,
+            FigureKind::Response
         ]
     );
     let (ctx, data) = &cols[0];
@@ -511,9 +511,9 @@ fn five_columns_of_three_figures_stand_side_by_side_at_16_9() {
     };
     // With equal panels five columns of three stacked figures are the 16:9 choice.
     let equal = [
-        PanelKind::Pattern,
-        PanelKind::Reconstruction,
-        PanelKind::Pattern,
+        FigureKind::Pattern,
+        FigureKind::Reconstruction,
+        FigureKind::Pattern,
     ];
     assert_eq!(comparison_layout(&equal, &cols, Aspect::SLIDE), stacked);
     let (w, h) = comparison_size(&equal, &cols, 1, Aspect::SLIDE);
@@ -535,7 +535,7 @@ fn locked_scales_draw_one_shared_colour_bar() {
     scene.panels.zoneplate = false;
     scene.panels.filter = false;
     let kinds = panels::comparison(&scene);
-    assert_eq!(kinds, vec![PanelKind::Pattern, PanelKind::Spectrum]);
+    assert_eq!(kinds, vec![FigureKind::Pattern, FigureKind::Spectrum]);
     let free = columns(&scene);
     let lock = locked(&scene);
     let (wf, _) = comparison_size(&kinds, &free, 1, Aspect::SLIDE);
@@ -575,7 +575,7 @@ fn comparison_titles_wrap_or_shorten_and_never_run_past_the_image() {
     cols[0].0.scene_title = long.into();
     cols[0].0.column_title = "a label far too long for the caption band of one figure".into();
     let kinds = panels::comparison(&scene);
-    assert_eq!(kinds, vec![PanelKind::Pattern]);
+    assert_eq!(kinds, vec![FigureKind::Pattern]);
     for scale in [1, 2] {
         let (w, h) = comparison_size(&kinds, &cols, scale, Aspect::SLIDE);
         assert_eq!(w, 480 * scale as u64);
@@ -613,16 +613,16 @@ fn file_names_carry_scene_pattern_n_seed_kind_and_scale() {
     let scene = quick_scene();
     let ctx = scene_figure::context(&scene, 0, "zone-plate-128-to-512").unwrap();
     assert_eq!(
-        panel_file_name(PanelKind::Spectrum, &ctx, Some(2), "png"),
+        panel_file_name(FigureKind::Spectrum, &ctx, Some(2), "png"),
         "zone-plate-128-to-512_jitter_n256_seed7_spectrum@2x.png"
     );
     let ctx = scene_figure::context(&scene, 1, "").unwrap();
     assert_eq!(
-        panel_file_name(PanelKind::Raps, &ctx, None, "csv"),
+        panel_file_name(FigureKind::Raps, &ctx, None, "csv"),
         "figure-test-jitter_random-white-noise_n256_seed3_raps.csv"
     );
     assert_eq!(
-        panel_file_name(PanelKind::Pattern, &ctx, Some(3), ""),
+        panel_file_name(FigureKind::Pattern, &ctx, Some(3), ""),
         "figure-test-jitter_random-white-noise_n256_seed3_pattern@3x"
     );
 }
@@ -660,25 +660,25 @@ fn theorem_view(data: &ColumnData) -> &TheoremView {
 #[test]
 fn theorem_figures_are_available_for_column_zero_only() {
     let scene = theorem_scene(SINC2);
-    assert_eq!(panels::available(&scene), PanelKind::THEOREM.to_vec());
+    assert_eq!(panels::available(&scene), FigureKind::THEOREM.to_vec());
     // The composites show the three plots of the sampling process, not the transform pair.
     let three = vec![
-        PanelKind::TheoremSignal,
-        PanelKind::TheoremSpectrum,
-        PanelKind::TheoremReconstructed,
+        FigureKind::TheoremSignal,
+        FigureKind::TheoremSpectrum,
+        FigureKind::TheoremReconstructed,
     ];
     assert_eq!(panels::composite(&scene), three);
     assert_eq!(panels::comparison(&scene), three);
     // With a second column (and the pattern panel), only column 0 has the theorem figures.
     let mut two = quick_scene();
     two.panels.theorem = true;
-    assert!(panels::available_in(&two, 0).contains(&PanelKind::TheoremSpectrum));
+    assert!(panels::available_in(&two, 0).contains(&FigureKind::TheoremSpectrum));
     assert!(!panels::available_in(&two, 1).iter().any(|k| k.is_theorem()));
     assert!(!panels::composite_in(&two, 1).iter().any(|k| k.is_theorem()));
     assert!(!panels::comparison(&two).iter().any(|k| k.is_theorem()));
     let cols = columns(&two);
-    assert!(figure(PanelKind::TheoremSignal).has_data(&cols[0].1));
-    assert!(!figure(PanelKind::TheoremSignal).has_data(&cols[1].1));
+    assert!(figure(FigureKind::TheoremSignal).has_data(&cols[0].1));
+    assert!(!figure(FigureKind::TheoremSignal).has_data(&cols[1].1));
     for (c, (_, data)) in cols.iter().enumerate() {
         for kind in panels::available_in(&two, c) {
             assert!(figure(kind).has_data(data), "column {c} lacks {kind:?}");
@@ -697,7 +697,7 @@ fn theorem_figures_decode_at_base_size_times_scale_and_repeat_byte_for_byte() {
         v.errors.pre_aliasing > 0.0,
         "2.5 < 2B: the replicas overlap"
     );
-    for kind in PanelKind::THEOREM {
+    for kind in FigureKind::THEOREM {
         for scale in [1, 2] {
             let bytes = panel_png(kind, ctx, data, scale).unwrap();
             assert_eq!(
@@ -730,7 +730,7 @@ fn theorem_figures_decode_at_base_size_times_scale_and_repeat_byte_for_byte() {
             assert!(meta(&text, "signal").contains("sinc-squared"));
             assert_eq!(meta(&text, "sampling rate"), "2.5 samples per unit");
             assert!(meta(&text, "filter").contains("tent"));
-            if kind == PanelKind::TheoremPair {
+            if kind == FigureKind::TheoremPair {
                 assert_eq!(
                     meta(&text, "Title"),
                     "transform pair box <-> sinc, scale a = 1, shift s = 0"
@@ -751,16 +751,16 @@ fn theorem_figures_decode_at_base_size_times_scale_and_repeat_byte_for_byte() {
         );
         assert_eq!(
             svg.contains(&caption),
-            kind != PanelKind::TheoremPair,
+            kind != FigureKind::TheoremPair,
             "{kind:?}"
         );
     }
     assert_eq!(
-        panel_file_name(PanelKind::TheoremSpectrum, ctx, Some(2), "png"),
+        panel_file_name(FigureKind::TheoremSpectrum, ctx, Some(2), "png"),
         "figure-test_theorem-spectrum@2x.png"
     );
     assert_eq!(
-        panel_file_name(PanelKind::TheoremSignal, ctx, None, "csv"),
+        panel_file_name(FigureKind::TheoremSignal, ctx, None, "csv"),
         "figure-test_theorem-signal.csv"
     );
 }
@@ -775,7 +775,7 @@ fn theorem_spectrum_draws_replicas_in_distinct_colours_nyquist_lines_and_a_legen
     let scene = theorem_scene(SINC2);
     let cols = columns(&scene);
     let (ctx, data) = &cols[0];
-    let (_, px, _) = decode(&panel_png(PanelKind::TheoremSpectrum, ctx, data, 1).unwrap());
+    let (_, px, _) = decode(&panel_png(FigureKind::TheoremSpectrum, ctx, data, 1).unwrap());
     // k = −2, −1, 1, 2 (green, orange, red, cyan) and the Nyquist red.
     for c in [
         [44, 160, 44],
@@ -786,7 +786,7 @@ fn theorem_spectrum_draws_replicas_in_distinct_colours_nyquist_lines_and_a_legen
     ] {
         assert!(has_colour(&px, c), "{c:?} missing");
     }
-    let svg = panel_svg(PanelKind::TheoremSpectrum, ctx, data, 1).unwrap();
+    let svg = panel_svg(FigureKind::TheoremSpectrum, ctx, data, 1).unwrap();
     for label in [
         "|F(ω)|",
         "F(ω + 1·f_s)",
@@ -797,7 +797,7 @@ fn theorem_spectrum_draws_replicas_in_distinct_colours_nyquist_lines_and_a_legen
         assert!(svg.contains(label), "legend lacks {label}");
     }
     // The reconstructed spectrum is drawn in the reconstruction's orange, not the replicas'.
-    let (_, px, _) = decode(&panel_png(PanelKind::TheoremReconstructed, ctx, data, 1).unwrap());
+    let (_, px, _) = decode(&panel_png(FigureKind::TheoremReconstructed, ctx, data, 1).unwrap());
     assert!(has_colour(&px, [230, 120, 20]));
     assert!(!has_colour(&px, [44, 160, 44]));
 }
@@ -832,7 +832,7 @@ fn theorem_csv_round_trips_the_plotted_numbers() {
     let v = theorem_view(data);
 
     let rows = parse_series(
-        &panel_csv(PanelKind::TheoremSignal, ctx, data).unwrap(),
+        &panel_csv(FigureKind::TheoremSignal, ctx, data).unwrap(),
         "series,x,value",
     );
     assert_eq!(series(&rows, "f"), v.signal);
@@ -844,7 +844,7 @@ fn theorem_csv_round_trips_the_plotted_numbers() {
     );
 
     let rows = parse_series(
-        &panel_csv(PanelKind::TheoremSpectrum, ctx, data).unwrap(),
+        &panel_csv(FigureKind::TheoremSpectrum, ctx, data).unwrap(),
         "series,omega,magnitude",
     );
     let sp = &v.spectrum;
@@ -856,14 +856,14 @@ fn theorem_csv_round_trips_the_plotted_numbers() {
     }
 
     let rows = parse_series(
-        &panel_csv(PanelKind::TheoremReconstructed, ctx, data).unwrap(),
+        &panel_csv(FigureKind::TheoremReconstructed, ctx, data).unwrap(),
         "series,omega,magnitude",
     );
     assert_eq!(series(&rows, "F"), sp.original);
     assert_eq!(series(&rows, "F_r"), sp.reconstructed);
 
     let rows = parse_series(
-        &panel_csv(PanelKind::TheoremPair, ctx, data).unwrap(),
+        &panel_csv(FigureKind::TheoremPair, ctx, data).unwrap(),
         "series,position,value",
     );
     let pp = &v.pair;
@@ -885,7 +885,7 @@ fn shah_pair_figure_draws_and_exports_its_impulses() {
     let cols = columns(&scene);
     let (ctx, data) = &cols[0];
     let pp = &theorem_view(data).pair;
-    let (info, px, text) = decode(&panel_png(PanelKind::TheoremPair, ctx, data, 1).unwrap());
+    let (info, px, text) = decode(&panel_png(FigureKind::TheoremPair, ctx, data, 1).unwrap());
     assert_eq!((info.width, info.height), (1000, 510));
     // Re in blue, and Im (non-zero: the shift) in the reconstruction's orange.
     assert!(has_colour(&px, [31, 119, 180]) && has_colour(&px, [230, 120, 20]));
@@ -894,7 +894,7 @@ fn shah_pair_figure_draws_and_exports_its_impulses() {
         "shah <-> shah, a = 1.5, s = 0.2"
     );
     let rows = parse_series(
-        &panel_csv(PanelKind::TheoremPair, ctx, data).unwrap(),
+        &panel_csv(FigureKind::TheoremPair, ctx, data).unwrap(),
         "series,position,value",
     );
     assert_eq!(series(&rows, "impulse_x"), pp.impulses_x);
@@ -913,14 +913,14 @@ fn theorem_figures_of_a_line_spectrum_draw_and_export_the_lines() {
     let (ctx, data) = &cols[0];
     let v = theorem_view(data);
     assert!(v.errors.periodic && v.errors.pre_aliasing > 0.0);
-    for kind in PanelKind::THEOREM {
+    for kind in FigureKind::THEOREM {
         let (info, px, text) = decode(&panel_png(kind, ctx, data, 1).unwrap());
         assert_eq!(info.width, base_size(kind).0);
         assert!(px.iter().any(|&p| p < 100));
         assert!(meta(&text, "pre-aliasing").contains("% of the signal's power"));
     }
     let rows = parse_series(
-        &panel_csv(PanelKind::TheoremSpectrum, ctx, data).unwrap(),
+        &panel_csv(FigureKind::TheoremSpectrum, ctx, data).unwrap(),
         "series,omega,magnitude",
     );
     assert!(series(&rows, "F").is_empty());
@@ -928,7 +928,7 @@ fn theorem_figures_of_a_line_spectrum_draw_and_export_the_lines() {
         assert_eq!(&series(&rows, &format!("line_{k}")), c, "k = {k}");
     }
     let rows = parse_series(
-        &panel_csv(PanelKind::TheoremReconstructed, ctx, data).unwrap(),
+        &panel_csv(FigureKind::TheoremReconstructed, ctx, data).unwrap(),
         "series,omega,magnitude",
     );
     assert_eq!(series(&rows, "F_r_line"), v.spectrum.reconstructed_lines);
@@ -942,7 +942,7 @@ fn missing_theorem_data_is_a_typed_error_naming_the_figure() {
     two.panels.theorem = true;
     let cols = columns(&two);
     let (ctx, data) = &cols[1];
-    for kind in PanelKind::THEOREM {
+    for kind in FigureKind::THEOREM {
         for e in [
             panel_png(kind, ctx, data, 1).unwrap_err(),
             panel_svg(kind, ctx, data, 1).unwrap_err(),
@@ -956,7 +956,7 @@ fn missing_theorem_data_is_a_typed_error_naming_the_figure() {
         }
     }
     // A column composite asking for them fails the same way.
-    let e = column_png(&PanelKind::THEOREM, ctx, data, 1, Aspect::SLIDE).unwrap_err();
+    let e = column_png(&FigureKind::THEOREM, ctx, data, 1, Aspect::SLIDE).unwrap_err();
     assert!(e.to_string().starts_with("theorem-signal"), "{e}");
 }
 
@@ -998,14 +998,14 @@ fn pattern_draws_the_elementary_interval_grid_when_the_column_asks() {
     let (x_10, y_half) = (70 + 40, 50 + 200); // x = 0.1, y = 0.5: on the horizontal
     let (plain_ctx, data) = four_points(None);
     let (_, plain, plain_text) =
-        decode(&panel_png(PanelKind::Pattern, &plain_ctx, &data, 1).unwrap());
+        decode(&panel_png(FigureKind::Pattern, &plain_ctx, &data, 1).unwrap());
     assert!(!blue_near(&plain, x_half, y_10));
     assert!(!blue_near(&plain, x_10, y_half));
     assert!(!plain_text.iter().any(|(k, _)| k == "elementary intervals"));
 
     // k = 1 with N = 4 = 2²: 2 × 2 boxes, one line each way through the centre.
     let (ctx, data) = four_points(Some(1));
-    let (_, grid, text) = decode(&panel_png(PanelKind::Pattern, &ctx, &data, 1).unwrap());
+    let (_, grid, text) = decode(&panel_png(FigureKind::Pattern, &ctx, &data, 1).unwrap());
     assert!(blue_near(&grid, x_half, y_10));
     assert!(blue_near(&grid, x_10, y_half));
     assert_eq!(
@@ -1014,7 +1014,7 @@ fn pattern_draws_the_elementary_interval_grid_when_the_column_asks() {
     );
     // k = 2: 4 × 1 boxes: verticals at 0.25, 0.5, 0.75 and no horizontal.
     let (ctx, data) = four_points(Some(2));
-    let (_, tall, _) = decode(&panel_png(PanelKind::Pattern, &ctx, &data, 1).unwrap());
+    let (_, tall, _) = decode(&panel_png(FigureKind::Pattern, &ctx, &data, 1).unwrap());
     assert!(blue_near(&tall, x_half, y_10));
     assert!(blue_near(&tall, 70 + 100, y_10));
     assert!(!blue_near(&tall, x_10, y_half));
@@ -1027,7 +1027,7 @@ fn pattern_draws_the_elementary_interval_grid_when_the_column_asks() {
         version: 0,
         note: None,
     }));
-    let (_, three, _) = decode(&panel_png(PanelKind::Pattern, &ctx, &data, 1).unwrap());
+    let (_, three, _) = decode(&panel_png(FigureKind::Pattern, &ctx, &data, 1).unwrap());
     assert!(!blue_near(&three, x_half, y_10));
 }
 
@@ -1047,10 +1047,10 @@ fn pattern_draws_the_strata_when_the_column_asks() {
     // x = 0.5, y = 0.1 lies on the middle vertical of a 2 × 2 grid, between the points.
     let (x_half, y_10) = (70 + 200, 50 + 360);
     let (mut ctx, data) = four_points(None);
-    let (_, plain, _) = decode(&panel_png(PanelKind::Pattern, &ctx, &data, 1).unwrap());
+    let (_, plain, _) = decode(&panel_png(FigureKind::Pattern, &ctx, &data, 1).unwrap());
     assert!(!grey_near(&plain, x_half, y_10));
     ctx.strata = Some((2, 2));
-    let (_, grid, text) = decode(&panel_png(PanelKind::Pattern, &ctx, &data, 1).unwrap());
+    let (_, grid, text) = decode(&panel_png(FigureKind::Pattern, &ctx, &data, 1).unwrap());
     assert!(grey_near(&grid, x_half, y_10));
     assert_eq!(meta(&text, "strata"), "2×2 cells");
 }
@@ -1096,7 +1096,7 @@ fn sphere_data() -> (FigureContext, ColumnData) {
         "sphere.ron",
     )
     .unwrap();
-    assert_eq!(panels::available(&scene), vec![PanelKind::Sphere]);
+    assert_eq!(panels::available(&scene), vec![FigureKind::Sphere]);
     columns(&scene).remove(0)
 }
 
@@ -1105,10 +1105,13 @@ fn sphere_figure_draws_discs_in_both_views_and_repeats_byte_for_byte() {
     let (ctx, data) = sphere_data();
     let n = data.points.as_ref().unwrap().points.len();
     assert_eq!(n, 256);
-    let bytes = panel_png(PanelKind::Sphere, &ctx, &data, 1).unwrap();
-    assert_eq!(bytes, panel_png(PanelKind::Sphere, &ctx, &data, 1).unwrap());
+    let bytes = panel_png(FigureKind::Sphere, &ctx, &data, 1).unwrap();
+    assert_eq!(
+        bytes,
+        panel_png(FigureKind::Sphere, &ctx, &data, 1).unwrap()
+    );
     let (info, px, text) = decode(&bytes);
-    assert_eq!((info.width, info.height), base_size(PanelKind::Sphere));
+    assert_eq!((info.width, info.height), base_size(FigureKind::Sphere));
     assert_eq!(meta(&text, "figure"), "sphere");
     assert!(meta(&text, "views").contains("front") && meta(&text, "mapping").contains("cylinder"));
     let w = info.width as usize;
@@ -1131,7 +1134,7 @@ fn sphere_figure_draws_discs_in_both_views_and_repeats_byte_for_byte() {
         assert!(dim > 10 * 128 / 2, "{x0}..{x1}: {dim} dimmed pixels");
     }
     // The CSV holds every point on the unit sphere.
-    let csv = panel_csv(PanelKind::Sphere, &ctx, &data).unwrap();
+    let csv = panel_csv(FigureKind::Sphere, &ctx, &data).unwrap();
     let lines: Vec<&str> = csv.lines().collect();
     assert_eq!(lines[0], "x,y,z");
     assert_eq!(lines.len(), n + 1);
@@ -1141,6 +1144,6 @@ fn sphere_figure_draws_discs_in_both_views_and_repeats_byte_for_byte() {
         assert!((r - 1.0).abs() < 1e-12, "{l}");
     }
     // At scale 2 the same picture, twice the size.
-    let (info, _, _) = decode(&panel_png(PanelKind::Sphere, &ctx, &data, 2).unwrap());
-    assert_eq!(info.width, 2 * base_size(PanelKind::Sphere).0);
+    let (info, _, _) = decode(&panel_png(FigureKind::Sphere, &ctx, &data, 2).unwrap());
+    assert_eq!(info.width, 2 * base_size(FigureKind::Sphere).0);
 }

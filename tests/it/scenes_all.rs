@@ -8,7 +8,7 @@
 use samplescope::core::cancel::Cancel;
 use samplescope::core::params::Params;
 use samplescope::engine::Evaluator;
-use samplescope::model::PanelKind;
+use samplescope::model::FigureKind;
 use samplescope::scene::graph::NodeKind;
 use samplescope::scene::{panels, Scene, BUILTIN};
 use std::collections::BTreeSet;
@@ -173,12 +173,12 @@ fn the_hammersley_scene_shows_every_p1_on_the_sphere_as_the_lecture_does() {
     for (c, col) in scene.columns.iter().enumerate() {
         assert_eq!(col.pattern.name(), "hammersley");
         p1s.push(col.pattern.get("p1").unwrap().to_string());
-        assert!(panels::available_in(&scene, c).contains(&PanelKind::Sphere));
+        assert!(panels::available_in(&scene, c).contains(&FigureKind::Sphere));
     }
     assert_eq!(p1s, ["2", "3", "5", "7", "11"]);
     // The comparison holds the square and the sphere of every column.
     let kinds = panels::comparison(&scene);
-    assert!(kinds.contains(&PanelKind::Pattern) && kinds.contains(&PanelKind::Sphere));
+    assert!(kinds.contains(&FigureKind::Pattern) && kinds.contains(&FigureKind::Sphere));
 }
 
 #[test]

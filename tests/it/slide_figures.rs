@@ -9,7 +9,7 @@ use samplescope::export::figure::{
     comparison_file, figure, figure_title, panel_file, panel_pdf, panel_png, panel_svg, Aspect,
     FileFormat, PT_PER_PX,
 };
-use samplescope::model::{ColumnData, FigureContext, PanelKind, PointsData};
+use samplescope::model::{ColumnData, FigureContext, FigureKind, PointsData};
 use samplescope::scene::graph::{NodeKind, NodeResult};
 use samplescope::scene::{figure as scene_figure, panels, Scene};
 use std::collections::HashMap;
@@ -42,7 +42,7 @@ fn columns() -> Vec<(FigureContext, ColumnData)> {
     scene_figure::figure_columns(&scene, &results, "slide").unwrap()
 }
 
-fn kinds() -> Vec<PanelKind> {
+fn kinds() -> Vec<FigureKind> {
     let scene = Scene::from_ron(SCENE, "slide.ron").unwrap();
     panels::available_in(&scene, 0)
 }
@@ -112,9 +112,9 @@ fn curves_are_antialiased() {
     let cols = columns();
     let (ctx, data) = &cols[0];
     for kind in [
-        PanelKind::Kernel,
-        PanelKind::Response,
-        PanelKind::TheoremSignal,
+        FigureKind::Kernel,
+        FigureKind::Response,
+        FigureKind::TheoremSignal,
     ] {
         let (w, h, px) = decode(&panel_png(kind, ctx, data, 1).unwrap());
         // Inside the plotting area, away from the axes: ink pixels that are blends of the
@@ -148,12 +148,16 @@ fn the_same_inputs_give_the_same_bytes_in_every_format() {
     let cols = columns();
     let (ctx, data) = &cols[1];
     for format in [FileFormat::Png, FileFormat::Svg, FileFormat::Pdf] {
-        for kind in [PanelKind::Pattern, PanelKind::Spectrum, PanelKind::Response] {
+        for kind in [
+            FigureKind::Pattern,
+            FigureKind::Spectrum,
+            FigureKind::Response,
+        ] {
             let a = panel_file(kind, ctx, data, 1, format).unwrap();
             let b = panel_file(kind, ctx, data, 1, format).unwrap();
             assert!(a == b, "{kind:?} {format:?}");
         }
-        let k = [PanelKind::Pattern, PanelKind::Spectrum];
+        let k = [FigureKind::Pattern, FigureKind::Spectrum];
         let a = comparison_file(&k, &cols, 1, Aspect::SLIDE, format).unwrap();
         let b = comparison_file(&k, &cols, 1, Aspect::SLIDE, format).unwrap();
         assert!(a == b, "comparison {format:?}");
@@ -172,7 +176,11 @@ fn dict<'a>(doc: &'a lopdf::Document, obj: &'a lopdf::Object) -> &'a lopdf::Dict
 fn pdf_has_one_page_of_the_figure_size_an_embedded_font_and_its_title() {
     let cols = columns();
     let (ctx, data) = &cols[1];
-    for kind in [PanelKind::Pattern, PanelKind::Spectrum, PanelKind::Response] {
+    for kind in [
+        FigureKind::Pattern,
+        FigureKind::Spectrum,
+        FigureKind::Response,
+    ] {
         let bytes = panel_pdf(kind, ctx, data, 1).unwrap();
         let doc = lopdf::Document::load_mem(&bytes).expect("lopdf parses the PDF");
         let pages = doc.get_pages();
@@ -262,7 +270,7 @@ fn unicode_map(doc: &lopdf::Document, font: &lopdf::Dictionary) -> Vec<char> {
 #[test]
 fn composites_are_written_in_every_format() {
     let cols = columns();
-    let k = [PanelKind::Pattern, PanelKind::Spectrum];
+    let k = [FigureKind::Pattern, FigureKind::Spectrum];
     let png = comparison_file(&k, &cols, 1, Aspect::SLIDE, FileFormat::Png).unwrap();
     let (w, h, px) = decode(&png);
     let svg = comparison_file(&k, &cols, 1, Aspect::SLIDE, FileFormat::Svg).unwrap();
@@ -315,7 +323,7 @@ fn markers_on_the_border_of_the_unit_square_are_drawn_whole() {
     let cols = columns();
     let ctx = &cols[0].0;
     let inside = points(&[[0.5, 0.5]]);
-    let (_, _, a) = decode(&panel_png(PanelKind::Pattern, ctx, &inside, 2).unwrap());
+    let (_, _, a) = decode(&panel_png(FigureKind::Pattern, ctx, &inside, 2).unwrap());
     let whole = marker_ink(&a);
     assert!(whole > 50.0, "a marker has ink: {whole}");
     for p in [
@@ -326,7 +334,7 @@ fn markers_on_the_border_of_the_unit_square_are_drawn_whole() {
         [0.0, 0.0],
         [1.0, 1.0],
     ] {
-        let (_, _, b) = decode(&panel_png(PanelKind::Pattern, ctx, &points(&[p]), 2).unwrap());
+        let (_, _, b) = decode(&panel_png(FigureKind::Pattern, ctx, &points(&[p]), 2).unwrap());
         let ink = marker_ink(&b);
         // The border marker's ink, less what the square's outline covers (a 2-pixel line
         // through its centre), is most of the whole marker's: not half of it.

@@ -169,7 +169,7 @@ fn save_menu_writes_the_panel_figure_with_scene_pattern_n_and_seed_in_its_name()
     let decoder = png::Decoder::new(std::io::Cursor::new(bytes));
     let reader = decoder.read_info().unwrap();
     let (w, h2) = (reader.info().width, reader.info().height);
-    let (bw, bh) = samplescope::export::figure::base_size(samplescope::model::PanelKind::Pattern);
+    let (bw, bh) = samplescope::export::figure::base_size(samplescope::model::FigureKind::Pattern);
     assert_eq!((w, h2), (2 * bw, 2 * bh));
     let text: Vec<_> = reader
         .info()
@@ -224,7 +224,7 @@ fn ctrl_s_saves_the_panel_under_the_pointer() {
 
 #[test]
 fn a_figure_saved_during_a_recompute_has_labels_and_pixels_of_one_scene() {
-    use samplescope::model::PanelKind;
+    use samplescope::model::FigureKind;
     use samplescope::ui::figures::{Done, Output, Request, Target};
     let mut h = harness();
     // A slow recompute: 64 spectrum realizations and a new N.
@@ -259,7 +259,7 @@ fn a_figure_saved_during_a_recompute_has_labels_and_pixels_of_one_scene() {
         let req = Request {
             target: Target::Panel {
                 column: 0,
-                kind: PanelKind::Pattern,
+                kind: FigureKind::Pattern,
             },
             output: Output::Png { scale: 1 },
         };

@@ -47,7 +47,7 @@ use super::drawing::{font, Drawing, Op, Rgba};
 use super::spectrum::{SharedBar, SpectrumWithoutBar};
 use super::{
     check_scale, context_metadata, encode, figure, rgb_to_rgba, ColumnData, Figure, FigureContext,
-    FileFormat, PanelKind, MAX_COMPOSITE_PIXELS,
+    FigureKind, FileFormat, MAX_COMPOSITE_PIXELS,
 };
 use crate::export::ExportError;
 use crate::model::Colormap;
@@ -436,10 +436,10 @@ fn room(width: u64, px: f64) -> u32 {
 /// The shared colour range of a comparison's periodograms, if every column has one and the
 /// same colour map, and there are several columns to share it.
 fn shared_range(
-    kinds: &[PanelKind],
+    kinds: &[FigureKind],
     columns: &[(FigureContext, ColumnData)],
 ) -> Option<((f32, f32), Colormap)> {
-    if columns.len() < 2 || !kinds.contains(&PanelKind::Spectrum) {
+    if columns.len() < 2 || !kinds.contains(&FigureKind::Spectrum) {
         return None;
     }
     let (first, _) = columns.first()?;
@@ -454,7 +454,7 @@ fn shared_range(
 
 /// A composite worked out before it is drawn.
 struct Plan {
-    kinds: Vec<PanelKind>,
+    kinds: Vec<FigureKind>,
     layout: Layout,
     scale: u32,
     /// Scaled sizes of the panels of a block.
@@ -466,7 +466,7 @@ struct Plan {
     bar_w: u64,
     block: (u64, u64),
     /// The scene's own figure right of the blocks, and its top-left corner (scaled).
-    side: Option<(PanelKind, (u64, u64))>,
+    side: Option<(FigureKind, (u64, u64))>,
     size: (u64, u64),
 }
 
@@ -474,11 +474,11 @@ struct Plan {
 /// title `title` (none for a column composite) and the scene's figure `side` right of the
 /// blocks.
 fn plan(
-    kinds: &[PanelKind],
+    kinds: &[FigureKind],
     blocks: usize,
     bar: Option<((f32, f32), Colormap)>,
     title: Option<&str>,
-    side: Option<PanelKind>,
+    side: Option<FigureKind>,
     scale: u32,
     aspect: Aspect,
 ) -> Plan {
@@ -486,7 +486,7 @@ fn plan(
     let without_bar: Vec<(u32, u32)> = kinds
         .iter()
         .map(|&k| match k {
-            PanelKind::Spectrum => SpectrumWithoutBar.base_size(),
+            FigureKind::Spectrum => SpectrumWithoutBar.base_size(),
             _ => figure(k).base_size(),
         })
         .collect();
@@ -498,7 +498,7 @@ fn plan(
     .base_size()
     .0 as u64;
     let shared = bar.and_then(|_| {
-        let i = kinds.iter().position(|&k| k == PanelKind::Spectrum)?;
+        let i = kinds.iter().position(|&k| k == FigureKind::Spectrum)?;
         Some((without_bar.as_slice(), i, bar_w))
     });
     let head1 = if title.is_some() { HEADING_H as u64 } else { 0 };
@@ -613,7 +613,7 @@ impl Plan {
             None => format!("{} · N = {} · seed {}", ctx.column_title, ctx.n, ctx.seed),
         };
         // Theorem panels in a mixed block keep their own setup and caption line.
-        let role = |k: PanelKind| {
+        let role = |k: FigureKind| {
             if k.is_theorem() && theorem.is_none() {
                 Role::Alone
             } else {
@@ -629,7 +629,7 @@ impl Plan {
             for &k in kinds {
                 check_scale(self.scale)?;
                 let panel = match (k, self.bar) {
-                    (PanelKind::Spectrum, Some(_)) => {
+                    (FigureKind::Spectrum, Some(_)) => {
                         render_drawing(&SpectrumWithoutBar, ctx, data, self.scale, role(k))?
                     }
                     _ => render_drawing(figure(k), ctx, data, self.scale, role(k))?,
@@ -649,7 +649,7 @@ impl Plan {
         let Some(((lo, hi), colormap)) = self.bar else {
             return Ok(());
         };
-        let Some(p) = self.kinds.iter().position(|&k| k == PanelKind::Spectrum) else {
+        let Some(p) = self.kinds.iter().position(|&k| k == FigureKind::Spectrum) else {
             return Ok(());
         };
         let l = self.layout;
@@ -705,7 +705,7 @@ impl Plan {
     }
 }
 
-fn panels_list(kinds: &[PanelKind]) -> String {
+fn panels_list(kinds: &[FigureKind]) -> String {
     kinds
         .iter()
         .map(|k| k.name())
@@ -721,29 +721,29 @@ fn no_panels(figure: &'static str) -> ExportError {
 }
 
 /// The layout [`column_png`] uses for figures `kinds` in a frame of `aspect`.
-pub fn column_layout(kinds: &[PanelKind], aspect: Aspect) -> Layout {
+pub fn column_layout(kinds: &[FigureKind], aspect: Aspect) -> Layout {
     plan(kinds, 1, None, None, None, 1, aspect).layout
 }
 
 /// (width, height) in pixels of [`column_png`] with figures `kinds` at `scale` in a frame of
 /// `aspect`.
-pub fn column_size(kinds: &[PanelKind], scale: u32, aspect: Aspect) -> (u64, u64) {
+pub fn column_size(kinds: &[FigureKind], scale: u32, aspect: Aspect) -> (u64, u64) {
     plan(kinds, 1, None, None, None, scale, aspect).size
 }
 
 /// The figure of the whole scene a comparison shows right of its columns: the integration
 /// study's plot (every column's curve on one plot, carried by column 0) when it was computed.
-fn side_figure(columns: &[(FigureContext, ColumnData)]) -> Option<PanelKind> {
+fn side_figure(columns: &[(FigureContext, ColumnData)]) -> Option<FigureKind> {
     let (_, data) = columns.first()?;
-    figure(PanelKind::Integration)
+    figure(FigureKind::Integration)
         .check(data)
         .is_ok()
-        .then_some(PanelKind::Integration)
+        .then_some(FigureKind::Integration)
 }
 
 /// The plan of the comparison of `columns`.
 fn comparison_plan(
-    kinds: &[PanelKind],
+    kinds: &[FigureKind],
     columns: &[(FigureContext, ColumnData)],
     scale: u32,
     aspect: Aspect,
@@ -764,7 +764,7 @@ fn comparison_plan(
 /// The layout [`comparison_png`] uses for `columns` with figures `kinds` in a frame of
 /// `aspect`.
 pub fn comparison_layout(
-    kinds: &[PanelKind],
+    kinds: &[FigureKind],
     columns: &[(FigureContext, ColumnData)],
     aspect: Aspect,
 ) -> Layout {
@@ -773,7 +773,7 @@ pub fn comparison_layout(
 
 /// The lines the comparison's title is drawn in at `scale` (each fits the figure's width).
 pub fn comparison_title_lines(
-    kinds: &[PanelKind],
+    kinds: &[FigureKind],
     columns: &[(FigureContext, ColumnData)],
     scale: u32,
     aspect: Aspect,
@@ -785,7 +785,7 @@ pub fn comparison_title_lines(
 /// `scale` in a frame of `aspect`; compare its product with [`MAX_COMPOSITE_PIXELS`] before
 /// asking for it.
 pub fn comparison_size(
-    kinds: &[PanelKind],
+    kinds: &[FigureKind],
     columns: &[(FigureContext, ColumnData)],
     scale: u32,
     aspect: Aspect,
@@ -794,7 +794,7 @@ pub fn comparison_size(
 }
 
 fn column_drawing(
-    kinds: &[PanelKind],
+    kinds: &[FigureKind],
     ctx: &FigureContext,
     data: &ColumnData,
     scale: u32,
@@ -811,7 +811,7 @@ fn column_drawing(
 }
 
 fn column_meta(
-    kinds: &[PanelKind],
+    kinds: &[FigureKind],
     ctx: &FigureContext,
     scale: u32,
     aspect: Aspect,
@@ -837,7 +837,7 @@ fn column_meta(
 /// a frame of `aspect` (the module docs give the rule), as a file in `format` with the
 /// column's metadata.
 pub fn column_file(
-    kinds: &[PanelKind],
+    kinds: &[FigureKind],
     ctx: &FigureContext,
     data: &ColumnData,
     scale: u32,
@@ -850,7 +850,7 @@ pub fn column_file(
 
 /// [`column_file`] as PNG.
 pub fn column_png(
-    kinds: &[PanelKind],
+    kinds: &[FigureKind],
     ctx: &FigureContext,
     data: &ColumnData,
     scale: u32,
@@ -861,7 +861,7 @@ pub fn column_png(
 
 /// [`column_file`]'s picture as (width, height, RGBA8), for the clipboard.
 pub fn column_rgba(
-    kinds: &[PanelKind],
+    kinds: &[FigureKind],
     ctx: &FigureContext,
     data: &ColumnData,
     scale: u32,
@@ -874,7 +874,7 @@ pub fn column_rgba(
 }
 
 fn comparison_drawing(
-    kinds: &[PanelKind],
+    kinds: &[FigureKind],
     columns: &[(FigureContext, ColumnData)],
     scale: u32,
     aspect: Aspect,
@@ -895,7 +895,7 @@ fn comparison_drawing(
 }
 
 fn comparison_meta(
-    kinds: &[PanelKind],
+    kinds: &[FigureKind],
     columns: &[(FigureContext, ColumnData)],
     scale: u32,
     aspect: Aspect,
@@ -943,7 +943,7 @@ fn comparison_meta(
 /// [`ExportError::TooLarge`] beyond [`MAX_COMPOSITE_PIXELS`] (in every format: a vector
 /// figure that large would not be readable either).
 pub fn comparison_file(
-    kinds: &[PanelKind],
+    kinds: &[FigureKind],
     columns: &[(FigureContext, ColumnData)],
     scale: u32,
     aspect: Aspect,
@@ -959,7 +959,7 @@ pub fn comparison_file(
 
 /// [`comparison_file`] as PNG.
 pub fn comparison_png(
-    kinds: &[PanelKind],
+    kinds: &[FigureKind],
     columns: &[(FigureContext, ColumnData)],
     scale: u32,
     aspect: Aspect,
@@ -969,7 +969,7 @@ pub fn comparison_png(
 
 /// [`comparison_file`]'s picture as (width, height, RGBA8), for the clipboard.
 pub fn comparison_rgba(
-    kinds: &[PanelKind],
+    kinds: &[FigureKind],
     columns: &[(FigureContext, ColumnData)],
     scale: u32,
     aspect: Aspect,

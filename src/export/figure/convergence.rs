@@ -7,13 +7,13 @@ use super::draw::{
 };
 use super::{Area, Figure};
 use crate::export::ExportError;
-use crate::model::{ColumnData, ConvergencePoint, FigureContext, PanelKind};
+use crate::model::{ColumnData, ConvergencePoint, FigureContext, FigureKind};
 use plotters::prelude::*;
 
 /// The convergence figure.
 pub(super) struct Convergence;
 
-const KIND: PanelKind = PanelKind::Convergence;
+const KIND: FigureKind = FigureKind::Convergence;
 
 /// Whether a point can be drawn on log–log axes.
 fn drawable(p: &ConvergencePoint) -> bool {
@@ -21,7 +21,7 @@ fn drawable(p: &ConvergencePoint) -> bool {
 }
 
 impl Figure for Convergence {
-    fn kind(&self) -> PanelKind {
+    fn kind(&self) -> FigureKind {
         KIND
     }
 

@@ -1,14 +1,14 @@
 //! The CSV writers the figures share (numbers in Rust's shortest round-trip form).
 
 use crate::export::ExportError;
-use crate::model::{ImageData, PanelKind};
+use crate::model::{FigureKind, ImageData};
 use std::fmt::Write as _;
 
 /// `header`, then one `x,y` line per point; an empty curve is an error.
 pub(super) fn curve(
     header: &str,
     points: &[[f64; 2]],
-    kind: PanelKind,
+    kind: FigureKind,
 ) -> Result<String, ExportError> {
     if points.is_empty() {
         return Err(ExportError::EmptyData {
@@ -24,7 +24,7 @@ pub(super) fn curve(
 }
 
 /// One image row per line, the top row first.
-pub(super) fn image_rows(image: &ImageData, kind: PanelKind) -> Result<String, ExportError> {
+pub(super) fn image_rows(image: &ImageData, kind: FigureKind) -> Result<String, ExportError> {
     if image.width == 0 || image.height == 0 {
         return Err(ExportError::EmptyData {
             figure: kind.name(),
@@ -49,7 +49,7 @@ pub(super) fn image_rows(image: &ImageData, kind: PanelKind) -> Result<String, E
 pub(super) fn series(
     header: &str,
     series: &[(String, &[[f64; 2]])],
-    kind: PanelKind,
+    kind: FigureKind,
 ) -> Result<String, ExportError> {
     if series.iter().all(|(_, c)| c.is_empty()) {
         return Err(ExportError::EmptyData {

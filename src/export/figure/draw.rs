@@ -13,7 +13,7 @@ use super::canvas::{ensure_font, Area, Canvas, Chart, PlacedImage, FONT, SUB};
 use super::drawing::Drawing;
 use super::{Figure, Rgb};
 use crate::export::ExportError;
-use crate::model::{palette, Colormap, ColumnData, FigureContext, ImageData, PanelKind};
+use crate::model::{palette, Colormap, ColumnData, FigureContext, FigureKind, ImageData};
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 use std::ops::Range;
@@ -110,7 +110,7 @@ pub struct Frame<'a, 'b> {
     pub(super) role: Role,
 }
 
-pub(super) fn draw_err(kind: PanelKind, e: impl std::fmt::Display) -> ExportError {
+pub(super) fn draw_err(kind: FigureKind, e: impl std::fmt::Display) -> ExportError {
     ExportError::Draw {
         figure: kind.name(),
         message: e.to_string(),
@@ -118,7 +118,7 @@ pub(super) fn draw_err(kind: PanelKind, e: impl std::fmt::Display) -> ExportErro
 }
 
 /// The error of a figure whose data was not computed.
-pub(super) fn missing(kind: PanelKind) -> ExportError {
+pub(super) fn missing(kind: FigureKind) -> ExportError {
     ExportError::EmptyData {
         figure: kind.name(),
         reason: "not computed (panel hidden, effect off, still running, or its node failed)".into(),
@@ -126,12 +126,12 @@ pub(super) fn missing(kind: PanelKind) -> ExportError {
 }
 
 /// The data of `kind`, or the error that it was not computed.
-pub(super) fn present<T>(kind: PanelKind, data: Option<&T>) -> Result<&T, ExportError> {
+pub(super) fn present<T>(kind: FigureKind, data: Option<&T>) -> Result<&T, ExportError> {
     data.ok_or_else(|| missing(kind))
 }
 
 /// The error of a figure whose data is there but empty.
-pub(super) fn empty(kind: PanelKind, what: &str) -> ExportError {
+pub(super) fn empty(kind: FigureKind, what: &str) -> ExportError {
     ExportError::EmptyData {
         figure: kind.name(),
         reason: what.into(),
@@ -193,7 +193,7 @@ pub(super) fn fitted_text(
     text: &str,
     start_px: f64,
     look: Look,
-    kind: PanelKind,
+    kind: FigureKind,
 ) -> Result<(), ExportError> {
     let (w, h) = area.dim_in_pixel();
     let room = w.saturating_sub(2 * look.u(MARGIN));
@@ -211,7 +211,7 @@ pub(super) fn fitting_px(
     room: u32,
     (start, step, floor): (f64, f64, f64),
     look: Look,
-    kind: PanelKind,
+    kind: FigureKind,
 ) -> Result<f64, ExportError> {
     let mut px = start;
     while px > floor {
@@ -235,7 +235,7 @@ pub(super) fn with_caption<'b>(
     body: &Area<'b>,
     caption: &str,
     look: Look,
-    kind: PanelKind,
+    kind: FigureKind,
 ) -> Result<Area<'b>, ExportError> {
     let (_, h) = body.dim_in_pixel();
     let (plot, band) = body.split_vertically(h - look.u(CAPTION_LINE));
@@ -251,7 +251,7 @@ pub(super) fn chart<'a, 'b>(
     x: Range<f64>,
     y: Range<f64>,
     look: Look,
-    kind: PanelKind,
+    kind: FigureKind,
 ) -> Result<Chart<'a, 'b>, ExportError> {
     ChartBuilder::on(area)
         .margin(look.u(MARGIN))
@@ -287,7 +287,7 @@ pub(super) fn axes(
     grid: bool,
     integer_ticks: bool,
     look: Look,
-    kind: PanelKind,
+    kind: FigureKind,
 ) -> Result<(), ExportError> {
     let (xs, ys) = (chart.x_range(), chart.y_range());
     let mut mesh = chart.configure_mesh();
@@ -318,7 +318,7 @@ pub(super) fn legend_box<'a, 'b: 'a>(
     ch: &mut Chart<'a, 'b>,
     position: SeriesLabelPosition,
     look: Look,
-    kind: PanelKind,
+    kind: FigureKind,
 ) -> Result<(), ExportError> {
     ch.configure_series_labels()
         .position(position)
@@ -474,7 +474,7 @@ pub(super) fn stems(
     radius: u32,
     label: &str,
     look: Look,
-    kind: PanelKind,
+    kind: FigureKind,
 ) -> Result<(), ExportError> {
     let de = |e| draw_err(kind, e);
     let stem = look.line(colour, 1);
@@ -500,7 +500,7 @@ pub(super) fn nyquist_lines(
     rate: f64,
     y: &Range<f64>,
     look: Look,
-    kind: PanelKind,
+    kind: FigureKind,
 ) -> Result<(), ExportError> {
     let red = look.line(NYQUIST, 1);
     let half = 0.5 * rate;
@@ -549,7 +549,7 @@ impl Frame<'_, '_> {
         &mut self,
         range: (Range<i32>, Range<i32>),
         img: Rgb,
-        kind: PanelKind,
+        kind: FigureKind,
     ) -> Result<(), ExportError> {
         let (xr, yr) = range;
         let w = (xr.end - xr.start).max(1) as u32;
@@ -567,7 +567,7 @@ impl Frame<'_, '_> {
     pub(super) fn image(
         &mut self,
         body: &Area<'_>,
-        kind: PanelKind,
+        kind: FigureKind,
         spec: ImageSpec<'_>,
     ) -> Result<(), ExportError> {
         let look = self.look;
@@ -632,7 +632,7 @@ pub(super) fn bar_axis(
     bar: &mut Chart<'_, '_>,
     desc: &str,
     look: Look,
-    kind: PanelKind,
+    kind: FigureKind,
 ) -> Result<(), ExportError> {
     const BAR_TICKS: usize = 6;
     let whole = whole_ticks(bar.y_range(), BAR_TICKS);

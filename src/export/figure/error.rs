@@ -6,15 +6,15 @@ use super::draw::{present, Frame};
 use super::reconstruction::{check_image, unit_square_image};
 use super::{Area, Figure};
 use crate::export::ExportError;
-use crate::model::{Colormap, ColumnData, FigureContext, PanelKind};
+use crate::model::{Colormap, ColumnData, FigureContext, FigureKind};
 
 /// The error figure.
 pub(super) struct Error;
 
-const KIND: PanelKind = PanelKind::Error;
+const KIND: FigureKind = FigureKind::Error;
 
 impl Figure for Error {
-    fn kind(&self) -> PanelKind {
+    fn kind(&self) -> FigureKind {
         KIND
     }
 

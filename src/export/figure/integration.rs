@@ -8,7 +8,7 @@ use super::theorem_spectrum::{legend_column, Mark};
 use super::{Area, Figure};
 use crate::export::ExportError;
 use crate::model::{
-    guide_line, palette, ColumnData, FigureContext, IntegrationPlot, PanelKind, GUIDE_SLOPES,
+    guide_line, palette, ColumnData, FigureContext, FigureKind, IntegrationPlot, GUIDE_SLOPES,
 };
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
@@ -16,7 +16,7 @@ use plotters::style::text_anchor::{HPos, Pos, VPos};
 /// The integration figure.
 pub(super) struct Integration;
 
-const KIND: PanelKind = PanelKind::Integration;
+const KIND: FigureKind = FigureKind::Integration;
 
 /// Width of the legend column right of the plot.
 const LEGEND_PART: u32 = 250;
@@ -82,7 +82,7 @@ fn caption(plot: &IntegrationPlot) -> String {
 }
 
 impl Figure for Integration {
-    fn kind(&self) -> PanelKind {
+    fn kind(&self) -> FigureKind {
         KIND
     }
 

@@ -7,13 +7,13 @@ use super::draw::{
 };
 use super::{Area, Figure};
 use crate::export::ExportError;
-use crate::model::{ColumnData, FigureContext, PanelKind};
+use crate::model::{ColumnData, FigureContext, FigureKind};
 use plotters::prelude::*;
 
 /// The kernel figure.
 pub(super) struct Kernel;
 
-const KIND: PanelKind = PanelKind::Kernel;
+const KIND: FigureKind = FigureKind::Kernel;
 
 /// The filter's name as the legends show it (the `kind` tag of its RON text).
 pub(super) fn filter_name(ctx: &FigureContext) -> String {
@@ -26,7 +26,7 @@ pub(super) fn filter_name(ctx: &FigureContext) -> String {
 }
 
 /// Refuses a filter curve without a finite point.
-pub(super) fn check_curve(curve: &[[f64; 2]], kind: PanelKind) -> Result<(), ExportError> {
+pub(super) fn check_curve(curve: &[[f64; 2]], kind: FigureKind) -> Result<(), ExportError> {
     if !any_finite(curve) {
         return Err(empty(kind, "the curve has no finite point"));
     }
@@ -34,7 +34,7 @@ pub(super) fn check_curve(curve: &[[f64; 2]], kind: PanelKind) -> Result<(), Exp
 }
 
 impl Figure for Kernel {
-    fn kind(&self) -> PanelKind {
+    fn kind(&self) -> FigureKind {
         KIND
     }
 

@@ -11,7 +11,7 @@
 //! background thread with data it already holds; `samplescope render` calls them headless (no
 //! window, no GPU).
 //!
-//! - **One figure per file.** Each [`PanelKind`] has one [`Figure`] (`pattern.rs`,
+//! - **One figure per file.** Each [`FigureKind`] has one [`Figure`] (`pattern.rs`,
 //!   `spectrum.rs`, … `theorem_pair.rs`): its base size, title, data check, drawing, CSV and
 //!   metadata. [`figure`] is the one registration list. The frame around every figure (white
 //!   page, title band) and the shared helpers (axes, text, legends, images with
@@ -50,7 +50,7 @@
 //!   in the SVG as PNG (`<image>` with a data URI, pixelated rendering) and in the PDF as an
 //!   uninterpolated image.
 //!
-//! **Adding a figure** for data a column already has: a [`PanelKind`] variant (with its name,
+//! **Adding a figure** for data a column already has: a [`FigureKind`] variant (with its name,
 //! in `model/panel.rs`), a file here implementing [`Figure`], its line in [`figure`] (and the
 //! `mod` line above it), and the arm of `scene::panels::shows` saying which scene switch shows
 //! it; the compiler points at each of the three matches.
@@ -79,7 +79,7 @@ mod theorem_signal;
 mod theorem_spectrum;
 
 use super::ExportError;
-use crate::model::{sanitize, ColumnData, FigureContext, PanelKind};
+use crate::model::{sanitize, ColumnData, FigureContext, FigureKind};
 
 pub use canvas::{Area, Canvas, CanvasError};
 pub use composite::{
@@ -103,7 +103,7 @@ pub const MAX_COMPOSITE_PIXELS: u64 = 64 * 1024 * 1024;
 /// (page, title band, scale, the PNG/SVG/PDF writers, metadata header, file names) is common.
 pub trait Figure: Sync {
     /// The panel it draws.
-    fn kind(&self) -> PanelKind;
+    fn kind(&self) -> FigureKind;
 
     /// Size at scale 1, in pixels (width, height).
     fn base_size(&self) -> (u32, u32);
@@ -138,28 +138,28 @@ pub trait Figure: Sync {
 }
 
 /// The figure of `kind`: the one registration list.
-pub fn figure(kind: PanelKind) -> &'static dyn Figure {
+pub fn figure(kind: FigureKind) -> &'static dyn Figure {
     match kind {
-        PanelKind::Pattern => &pattern::Pattern,
-        PanelKind::Sphere => &sphere::Sphere,
-        PanelKind::Spectrum => &spectrum::Spectrum,
-        PanelKind::Raps => &raps::Raps,
-        PanelKind::Reconstruction => &reconstruction::Reconstruction,
-        PanelKind::Reference => &reference::Reference,
-        PanelKind::Error => &error::Error,
-        PanelKind::Kernel => &kernel::Kernel,
-        PanelKind::Response => &response::Response,
-        PanelKind::Convergence => &convergence::Convergence,
-        PanelKind::TheoremSignal => &theorem_signal::TheoremSignal,
-        PanelKind::TheoremSpectrum => &theorem_spectrum::TheoremSpectrum,
-        PanelKind::TheoremReconstructed => &theorem_reconstructed::TheoremReconstructed,
-        PanelKind::TheoremPair => &theorem_pair::TheoremPair,
-        PanelKind::Integration => &integration::Integration,
+        FigureKind::Pattern => &pattern::Pattern,
+        FigureKind::Sphere => &sphere::Sphere,
+        FigureKind::Spectrum => &spectrum::Spectrum,
+        FigureKind::Raps => &raps::Raps,
+        FigureKind::Reconstruction => &reconstruction::Reconstruction,
+        FigureKind::Reference => &reference::Reference,
+        FigureKind::Error => &error::Error,
+        FigureKind::Kernel => &kernel::Kernel,
+        FigureKind::Response => &response::Response,
+        FigureKind::Convergence => &convergence::Convergence,
+        FigureKind::TheoremSignal => &theorem_signal::TheoremSignal,
+        FigureKind::TheoremSpectrum => &theorem_spectrum::TheoremSpectrum,
+        FigureKind::TheoremReconstructed => &theorem_reconstructed::TheoremReconstructed,
+        FigureKind::TheoremPair => &theorem_pair::TheoremPair,
+        FigureKind::Integration => &integration::Integration,
     }
 }
 
 /// Size of figure `kind` at scale 1, in pixels (width, height).
-pub fn base_size(kind: PanelKind) -> (u32, u32) {
+pub fn base_size(kind: FigureKind) -> (u32, u32) {
     figure(kind).base_size()
 }
 
@@ -186,13 +186,13 @@ pub(crate) struct Rgb {
 }
 
 /// The figure's title (also its `Title` metadata).
-pub fn figure_title(kind: PanelKind, ctx: &FigureContext, data: &ColumnData) -> String {
+pub fn figure_title(kind: FigureKind, ctx: &FigureContext, data: &ColumnData) -> String {
     figure(kind).title(ctx, data)
 }
 
 /// The metadata of a figure, in a fixed order: (keyword, value).
 pub fn metadata(
-    kind: PanelKind,
+    kind: FigureKind,
     ctx: &FigureContext,
     data: &ColumnData,
     scale: u32,
@@ -250,7 +250,7 @@ impl FileFormat {
 
 /// Lays out `kind` at its base size × `scale` into its vector drawing.
 fn panel_drawing(
-    kind: PanelKind,
+    kind: FigureKind,
     ctx: &FigureContext,
     data: &ColumnData,
     scale: u32,
@@ -275,7 +275,7 @@ fn encode(
 /// The figure `kind` (its base size × `scale`) as a file in `format`, with the [`metadata`]:
 /// PNG text chunks, SVG `<title>` and `<desc>`, PDF document information.
 pub fn panel_file(
-    kind: PanelKind,
+    kind: FigureKind,
     ctx: &FigureContext,
     data: &ColumnData,
     scale: u32,
@@ -288,7 +288,7 @@ pub fn panel_file(
 /// The figure `kind` as PNG bytes (8-bit RGB, its base size × `scale`), with the
 /// [`metadata`] as text chunks.
 pub fn panel_png(
-    kind: PanelKind,
+    kind: FigureKind,
     ctx: &FigureContext,
     data: &ColumnData,
     scale: u32,
@@ -299,7 +299,7 @@ pub fn panel_png(
 /// The figure `kind` as SVG text (its base size × `scale` user units), with the [`metadata`]
 /// as `<title>` and `<desc>`; images are embedded as PNG.
 pub fn panel_svg(
-    kind: PanelKind,
+    kind: FigureKind,
     ctx: &FigureContext,
     data: &ColumnData,
     scale: u32,
@@ -311,7 +311,7 @@ pub fn panel_svg(
 /// The figure `kind` as a one-page PDF (its base size × `scale` pixels at [`PT_PER_PX`]),
 /// with the [`metadata`] as document information.
 pub fn panel_pdf(
-    kind: PanelKind,
+    kind: FigureKind,
     ctx: &FigureContext,
     data: &ColumnData,
     scale: u32,
@@ -321,7 +321,7 @@ pub fn panel_pdf(
 
 /// The figure `kind` as (width, height, RGBA8 bytes, row 0 at the top), for the clipboard.
 pub fn panel_rgba(
-    kind: PanelKind,
+    kind: FigureKind,
     ctx: &FigureContext,
     data: &ColumnData,
     scale: u32,
@@ -347,7 +347,7 @@ pub fn panel_rgba(
 /// | theorem-reconstructed | `series,omega,magnitude`: `F` and `F_r`; line spectra: `F_line` and `F_r_line` |
 /// | theorem-pair | `series,position,value`: `p` (x, p(x)), `abs_P`, `re_P`, `im_P` (ω, …); the shah: `impulse_x` (x, weight), `impulse_re`, `impulse_im` (ω, Re and Im of the weight) |
 pub fn panel_csv(
-    kind: PanelKind,
+    kind: FigureKind,
     _ctx: &FigureContext,
     data: &ColumnData,
 ) -> Result<String, ExportError> {
@@ -359,7 +359,7 @@ pub fn panel_csv(
 /// (`scale` is given for PNG, SVG and PDF, `None` for CSV; an empty `ext` gives no extension).
 /// The theorem figures, which depend on no column, are `{scene}_{kind}[@{scale}x][.{ext}]`.
 pub fn panel_file_name(
-    kind: PanelKind,
+    kind: FigureKind,
     ctx: &FigureContext,
     scale: Option<u32>,
     ext: &str,
@@ -434,7 +434,7 @@ mod tests {
 
     #[test]
     fn every_kind_has_its_own_figure() {
-        for kind in PanelKind::ALL {
+        for kind in FigureKind::ALL {
             assert_eq!(figure(kind).kind(), kind);
             let (_, h) = base_size(kind);
             assert_eq!(h, 510, "{kind:?}: figures sit side by side in a composite");

@@ -11,7 +11,7 @@ use super::draw::{axes, chart, draw_err, empty, present, Frame, GUIDE, INK, INTE
 use super::{context_metadata, Area, Figure};
 use crate::export::ExportError;
 use crate::model::{
-    elementary_grid, palette, ColumnData, FigureContext, PanelKind, MAX_STRATA_LINES,
+    elementary_grid, palette, ColumnData, FigureContext, FigureKind, MAX_STRATA_LINES,
 };
 use plotters::prelude::*;
 
@@ -45,7 +45,7 @@ fn grid(
     ch.draw_series(verticals.chain(horizontals)).map(|_| ())
 }
 
-const KIND: PanelKind = PanelKind::Pattern;
+const KIND: FigureKind = FigureKind::Pattern;
 
 /// The radius of the markers of `n` points on a plotting area `side` wide, in plotters'
 /// pixels (`s` of them per base pixel): about a fifth of the mean spacing, from one page
@@ -57,7 +57,7 @@ fn marker_radius(side: f64, n: usize, s: u32) -> u32 {
 }
 
 impl Figure for Pattern {
-    fn kind(&self) -> PanelKind {
+    fn kind(&self) -> FigureKind {
         KIND
     }
 

@@ -7,16 +7,16 @@ use super::draw::{
 };
 use super::{Area, Figure};
 use crate::export::ExportError;
-use crate::model::{ColumnData, FigureContext, PanelKind};
+use crate::model::{ColumnData, FigureContext, FigureKind};
 use plotters::prelude::*;
 
 /// The RAPS figure.
 pub(super) struct Raps;
 
-const KIND: PanelKind = PanelKind::Raps;
+const KIND: FigureKind = FigureKind::Raps;
 
 impl Figure for Raps {
-    fn kind(&self) -> PanelKind {
+    fn kind(&self) -> FigureKind {
         KIND
     }
 

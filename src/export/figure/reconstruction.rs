@@ -4,12 +4,12 @@ use super::csv::image_rows;
 use super::draw::{empty, present, Frame, ImageSpec};
 use super::{Area, Figure};
 use crate::export::ExportError;
-use crate::model::{Colormap, ColumnData, FigureContext, ImageData, PanelKind};
+use crate::model::{Colormap, ColumnData, FigureContext, FigureKind, ImageData};
 
 /// The reconstruction figure.
 pub(super) struct Reconstruction;
 
-const KIND: PanelKind = PanelKind::Reconstruction;
+const KIND: FigureKind = FigureKind::Reconstruction;
 
 /// The spec of an image of the unit square through `colormap` over [lo, hi] (the
 /// reconstruction, reference and error figures).
@@ -35,7 +35,7 @@ pub(super) fn unit_square_image<'a>(
 }
 
 /// Refuses an image without pixels.
-pub(super) fn check_image(image: &ImageData, kind: PanelKind) -> Result<(), ExportError> {
+pub(super) fn check_image(image: &ImageData, kind: FigureKind) -> Result<(), ExportError> {
     if image.width == 0 || image.height == 0 {
         return Err(empty(kind, "the image is empty"));
     }
@@ -43,7 +43,7 @@ pub(super) fn check_image(image: &ImageData, kind: PanelKind) -> Result<(), Expo
 }
 
 impl Figure for Reconstruction {
-    fn kind(&self) -> PanelKind {
+    fn kind(&self) -> FigureKind {
         KIND
     }
 

@@ -5,15 +5,15 @@ use super::draw::{present, Frame};
 use super::reconstruction::{check_image, unit_square_image};
 use super::{Area, Figure};
 use crate::export::ExportError;
-use crate::model::{Colormap, ColumnData, FigureContext, PanelKind};
+use crate::model::{Colormap, ColumnData, FigureContext, FigureKind};
 
 /// The reference figure.
 pub(super) struct Reference;
 
-const KIND: PanelKind = PanelKind::Reference;
+const KIND: FigureKind = FigureKind::Reference;
 
 impl Figure for Reference {
-    fn kind(&self) -> PanelKind {
+    fn kind(&self) -> FigureKind {
         KIND
     }
 

@@ -10,16 +10,16 @@ use super::draw::{
 use super::kernel::{check_curve, filter_name};
 use super::{Area, Figure};
 use crate::export::ExportError;
-use crate::model::{amplitude_db, ColumnData, FigureContext, PanelKind, DB_FLOOR};
+use crate::model::{amplitude_db, ColumnData, FigureContext, FigureKind, DB_FLOOR};
 use plotters::prelude::*;
 
 /// The frequency-response figure.
 pub(super) struct Response;
 
-const KIND: PanelKind = PanelKind::Response;
+const KIND: FigureKind = FigureKind::Response;
 
 impl Figure for Response {
-    fn kind(&self) -> PanelKind {
+    fn kind(&self) -> FigureKind {
         KIND
     }
 

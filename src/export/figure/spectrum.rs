@@ -7,14 +7,14 @@ use super::draw::{
 };
 use super::{context_metadata, Area, Figure};
 use crate::export::ExportError;
-use crate::model::{Colormap, ColumnData, FigureContext, PanelKind};
+use crate::model::{Colormap, ColumnData, FigureContext, FigureKind};
 use plotters::prelude::*;
 use std::fmt::Write as _;
 
 /// The periodogram figure.
 pub(super) struct Spectrum;
 
-const KIND: PanelKind = PanelKind::Spectrum;
+const KIND: FigureKind = FigureKind::Spectrum;
 
 /// The description of the colour bar: the quantity, and where white noise (E[P] = 1) sits.
 const BAR_DESC: &str = "log₁₀ P   (white noise: 0)";
@@ -47,7 +47,7 @@ fn draw_periodogram(f: &mut Frame<'_, '_>, body: &Area<'_>, bar: bool) -> Result
 }
 
 impl Figure for Spectrum {
-    fn kind(&self) -> PanelKind {
+    fn kind(&self) -> FigureKind {
         KIND
     }
 
@@ -120,7 +120,7 @@ impl Figure for Spectrum {
 pub(super) struct SpectrumWithoutBar;
 
 impl Figure for SpectrumWithoutBar {
-    fn kind(&self) -> PanelKind {
+    fn kind(&self) -> FigureKind {
         KIND
     }
 
@@ -169,7 +169,7 @@ pub(super) struct SharedBar {
 }
 
 impl Figure for SharedBar {
-    fn kind(&self) -> PanelKind {
+    fn kind(&self) -> FigureKind {
         KIND
     }
 

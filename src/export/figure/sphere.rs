@@ -8,14 +8,14 @@ use super::draw::{draw_err, empty, fitted_text, present, Frame, DESC_PX, INK, MA
 use super::{context_metadata, Area, Figure};
 use crate::core::pattern::sphere::{pattern_to_sphere, OrthoView};
 use crate::export::ExportError;
-use crate::model::{ColumnData, FigureContext, PanelKind};
+use crate::model::{ColumnData, FigureContext, FigureKind};
 use plotters::prelude::*;
 use std::fmt::Write as _;
 
 /// The sphere figure.
 pub(super) struct Sphere;
 
-const KIND: PanelKind = PanelKind::Sphere;
+const KIND: FigureKind = FigureKind::Sphere;
 
 /// Width of one view, and height of the band under it that names it.
 const VIEW_W: u32 = 380;
@@ -43,7 +43,7 @@ fn disc_radius(r: f64, n: usize, s: u32) -> u32 {
 }
 
 impl Figure for Sphere {
-    fn kind(&self) -> PanelKind {
+    fn kind(&self) -> FigureKind {
         KIND
     }
 

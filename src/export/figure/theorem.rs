@@ -4,17 +4,17 @@
 use super::draw::{empty, present, Frame, Role};
 use crate::core::params::Params;
 use crate::export::ExportError;
-use crate::model::{ColumnData, FigureContext, PanelKind, TheoremView};
+use crate::model::{ColumnData, FigureContext, FigureKind, TheoremView};
 
 /// The theorem view of `data`, or the error that it was not computed.
-pub(super) fn view(kind: PanelKind, data: &ColumnData) -> Result<&TheoremView, ExportError> {
+pub(super) fn view(kind: FigureKind, data: &ColumnData) -> Result<&TheoremView, ExportError> {
     present(kind, data.theorem.as_deref())
 }
 
 /// Refuses a missing view, one whose curves `has_curves` finds nothing to draw in, and a
 /// sampling rate that is not positive.
 pub(super) fn check(
-    kind: PanelKind,
+    kind: FigureKind,
     data: &ColumnData,
     has_curves: impl Fn(&TheoremView) -> bool,
 ) -> Result<(), ExportError> {

@@ -9,16 +9,16 @@ use super::draw::{
 use super::theorem::{self, view};
 use super::{Area, Figure};
 use crate::export::ExportError;
-use crate::model::{ColumnData, FigureContext, PanelKind};
+use crate::model::{ColumnData, FigureContext, FigureKind};
 use plotters::prelude::*;
 
 /// The transform-pair figure.
 pub(super) struct TheoremPair;
 
-const KIND: PanelKind = PanelKind::TheoremPair;
+const KIND: FigureKind = FigureKind::TheoremPair;
 
 impl Figure for TheoremPair {
-    fn kind(&self) -> PanelKind {
+    fn kind(&self) -> FigureKind {
         KIND
     }
 

@@ -8,7 +8,7 @@ use super::draw::{
 use super::theorem::{self, view};
 use super::{Area, Figure};
 use crate::export::ExportError;
-use crate::model::{ColumnData, FigureContext, PanelKind};
+use crate::model::{ColumnData, FigureContext, FigureKind};
 use plotters::prelude::*;
 
 /// The theorem's reconstructed-spectrum figure.
@@ -17,10 +17,10 @@ pub(super) struct TheoremReconstructed;
 /// What the figure plots (its title, before the theorem's setup).
 const WHAT: &str = "reconstructed spectrum |F_r(ω)| vs |F(ω)|";
 
-const KIND: PanelKind = PanelKind::TheoremReconstructed;
+const KIND: FigureKind = FigureKind::TheoremReconstructed;
 
 impl Figure for TheoremReconstructed {
-    fn kind(&self) -> PanelKind {
+    fn kind(&self) -> FigureKind {
         KIND
     }
 

@@ -8,7 +8,7 @@ use super::draw::{
 use super::theorem::{self, view};
 use super::{Area, Figure};
 use crate::export::ExportError;
-use crate::model::{ColumnData, FigureContext, PanelKind};
+use crate::model::{ColumnData, FigureContext, FigureKind};
 use plotters::prelude::*;
 
 /// The theorem's signal figure.
@@ -17,10 +17,10 @@ pub(super) struct TheoremSignal;
 /// What the figure plots (its title, before the theorem's setup).
 const WHAT: &str = "f(x), samples f(nT), reconstruction f_r(x)";
 
-const KIND: PanelKind = PanelKind::TheoremSignal;
+const KIND: FigureKind = FigureKind::TheoremSignal;
 
 impl Figure for TheoremSignal {
-    fn kind(&self) -> PanelKind {
+    fn kind(&self) -> FigureKind {
         KIND
     }
 

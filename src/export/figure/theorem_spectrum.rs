@@ -10,7 +10,7 @@ use super::draw::{
 use super::theorem::{self, view};
 use super::{Area, Figure};
 use crate::export::ExportError;
-use crate::model::{ColumnData, FigureContext, PanelKind};
+use crate::model::{ColumnData, FigureContext, FigureKind};
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
@@ -20,7 +20,7 @@ pub(super) struct TheoremSpectrum;
 /// What the figure plots (its title, before the theorem's setup).
 const WHAT: &str = "|F(ω)|, replicas F(ω − k·f_s), filter |G(ω)|";
 
-const KIND: PanelKind = PanelKind::TheoremSpectrum;
+const KIND: FigureKind = FigureKind::TheoremSpectrum;
 
 /// Width of the legend column right of the plot.
 const LEGEND_PART: u32 = 180;
@@ -38,7 +38,7 @@ pub(super) fn legend_column(
     area: &Area<'_>,
     entries: &[(String, Mark)],
     f: &Frame<'_, '_>,
-    kind: PanelKind,
+    kind: FigureKind,
 ) -> Result<(), ExportError> {
     let de = |e| draw_err(kind, e);
     let look = f.look;
@@ -67,7 +67,7 @@ pub(super) fn legend_column(
 }
 
 impl Figure for TheoremSpectrum {
-    fn kind(&self) -> PanelKind {
+    fn kind(&self) -> FigureKind {
         KIND
     }
 

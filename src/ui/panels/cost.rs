@@ -2,7 +2,7 @@
 //! the convergence curves (RMSE against samples per pixel and against time).
 
 use super::{Panel, PanelCx};
-use crate::model::PanelKind;
+use crate::model::FigureKind;
 use crate::scene::graph::{NodeKind, NodeValue};
 use crate::scene::Panels;
 use eframe::egui;
@@ -16,8 +16,8 @@ type Curve = (String, Vec<[f64; 2]>, Vec<[f64; 2]>);
 pub struct CostPanel;
 
 impl Panel for CostPanel {
-    fn kind(&self) -> PanelKind {
-        PanelKind::Convergence
+    fn kind(&self) -> FigureKind {
+        FigureKind::Convergence
     }
 
     fn is_shown(&self, panels: &Panels) -> bool {

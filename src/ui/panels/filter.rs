@@ -2,7 +2,7 @@
 //! with the Nyquist line, the 2D response image and the filter's metrics.
 
 use super::{Panel, PanelCx};
-use crate::model::PanelKind;
+use crate::model::FigureKind;
 use crate::scene::graph::{NodeKind, NodeValue};
 use crate::scene::Panels;
 use crate::ui::gpu::DisplayRange;
@@ -15,8 +15,8 @@ use egui_plot::{Line, Plot, VLine};
 pub struct FilterPanel;
 
 impl Panel for FilterPanel {
-    fn kind(&self) -> PanelKind {
-        PanelKind::Response
+    fn kind(&self) -> FigureKind {
+        FigureKind::Response
     }
 
     fn is_shown(&self, panels: &Panels) -> bool {
@@ -29,7 +29,7 @@ impl Panel for FilterPanel {
             ui.label("Filter");
             ui.checkbox(&mut cx.view.response_db, "dB");
             cx.figures
-                .panel_menu_ui(ui, ci, &[PanelKind::Kernel, PanelKind::Response]);
+                .panel_menu_ui(ui, ci, &[FigureKind::Kernel, FigureKind::Response]);
         });
         let Some(r) = cx.result(NodeKind::Response) else {
             ui.spinner();

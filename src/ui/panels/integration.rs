@@ -5,7 +5,7 @@
 //! R), and the panel says how many are in.
 
 use super::{Panel, PanelCx};
-use crate::model::{guide_line, palette, IntegrationData, PanelKind, GUIDE_SLOPES};
+use crate::model::{guide_line, palette, FigureKind, IntegrationData, GUIDE_SLOPES};
 use crate::scene::graph::{NodeKind, NodeValue};
 use crate::scene::integration::limits;
 use crate::scene::Panels;
@@ -32,8 +32,8 @@ fn powers_of_two(lo: u32, hi: u32) -> Vec<usize> {
 }
 
 impl Panel for IntegrationPanel {
-    fn kind(&self) -> PanelKind {
-        PanelKind::Integration
+    fn kind(&self) -> FigureKind {
+        FigureKind::Integration
     }
 
     fn is_shown(&self, panels: &Panels) -> bool {
@@ -56,7 +56,7 @@ impl Panel for IntegrationPanel {
                 ui.set_max_width(260.0);
                 ui.horizontal(|ui| {
                     ui.strong("Integration error");
-                    cx.figures.panel_menu_ui(ui, 0, &[PanelKind::Integration]);
+                    cx.figures.panel_menu_ui(ui, 0, &[FigureKind::Integration]);
                 });
                 let s = &mut cx.scene.integration;
                 integrand_ui(ui, &mut s.integrand);

@@ -18,7 +18,7 @@ pub mod theorem;
 pub mod zoneplate;
 
 use crate::engine::Evaluator;
-use crate::model::PanelKind;
+use crate::model::FigureKind;
 use crate::scene::graph::NodeKind;
 use crate::scene::{Panels, Scene};
 use crate::ui::figures::FigureRequests;
@@ -30,14 +30,14 @@ use eframe::egui;
 /// A panel: a small struct holding its own display state, drawn from a [`PanelCx`].
 pub trait Panel {
     /// The panel's identity: the figure it stands for.
-    fn kind(&self) -> PanelKind;
+    fn kind(&self) -> FigureKind;
 
     /// Whether the scene shows the panel (its switch in the scene's panels).
     fn is_shown(&self, panels: &Panels) -> bool;
 
     /// The figure saved by Ctrl+S over the panel, which may follow the view (the zone plate
     /// shows one of three images); by default the panel's [`Panel::kind`].
-    fn figure(&self, _view: &ViewState) -> PanelKind {
+    fn figure(&self, _view: &ViewState) -> FigureKind {
         self.kind()
     }
 

@@ -3,7 +3,7 @@
 //! statistics.
 
 use super::{Panel, PanelCx};
-use crate::model::PanelKind;
+use crate::model::FigureKind;
 use crate::scene::graph::{NodeKind, NodeValue};
 use crate::scene::{Panels, Scene};
 use crate::ui::gpu;
@@ -17,8 +17,8 @@ use eframe::egui_wgpu;
 pub struct PatternPanel;
 
 impl Panel for PatternPanel {
-    fn kind(&self) -> PanelKind {
-        PanelKind::Pattern
+    fn kind(&self) -> FigureKind {
+        FigureKind::Pattern
     }
 
     fn is_shown(&self, panels: &Panels) -> bool {
@@ -29,7 +29,7 @@ impl Panel for PatternPanel {
         let (ci, side) = (cx.column, cx.side);
         ui.horizontal_wrapped(|ui| {
             ui.label("Sample pattern");
-            cx.figures.panel_menu_ui(ui, ci, &[PanelKind::Pattern]);
+            cx.figures.panel_menu_ui(ui, ci, &[FigureKind::Pattern]);
         });
         let (rect, _) = ui.allocate_exact_size(Vec2::splat(side), egui::Sense::hover());
         let painter = ui.painter_at(rect);

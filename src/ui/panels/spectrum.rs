@@ -2,7 +2,7 @@
 //! averaged power spectrum and the anisotropy.
 
 use super::{Panel, PanelCx};
-use crate::model::PanelKind;
+use crate::model::FigureKind;
 use crate::scene::graph::{NodeKind, NodeValue};
 use crate::scene::Panels;
 use crate::ui::gpu::DisplayRange;
@@ -15,8 +15,8 @@ use egui_plot::{Line, Plot};
 pub struct SpectrumPanel;
 
 impl Panel for SpectrumPanel {
-    fn kind(&self) -> PanelKind {
-        PanelKind::Spectrum
+    fn kind(&self) -> FigureKind {
+        FigureKind::Spectrum
     }
 
     fn is_shown(&self, panels: &Panels) -> bool {
@@ -31,7 +31,7 @@ impl Panel for SpectrumPanel {
                 .map_or(cx.scene.spectrum.size, |r| r.scene.spectrum.size);
             ui.label(format!("Periodogram {size}² (log10 P, centred)"));
             cx.figures
-                .panel_menu_ui(ui, ci, &[PanelKind::Spectrum, PanelKind::Raps]);
+                .panel_menu_ui(ui, ci, &[FigureKind::Spectrum, FigureKind::Raps]);
         });
         let Some(r) = cx.result(NodeKind::Spectrum) else {
             ui.spinner();

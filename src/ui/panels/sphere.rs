@@ -4,7 +4,7 @@
 
 use super::{Panel, PanelCx};
 use crate::core::pattern::sphere::{square_to_sphere, OrthoView};
-use crate::model::PanelKind;
+use crate::model::FigureKind;
 use crate::scene::graph::{NodeKind, NodeValue};
 use crate::scene::Panels;
 use crate::ui::widgets::status::{error_label, time_label};
@@ -31,8 +31,8 @@ impl Default for SpherePanel {
 }
 
 impl Panel for SpherePanel {
-    fn kind(&self) -> PanelKind {
-        PanelKind::Sphere
+    fn kind(&self) -> FigureKind {
+        FigureKind::Sphere
     }
 
     fn is_shown(&self, panels: &Panels) -> bool {
@@ -43,7 +43,7 @@ impl Panel for SpherePanel {
         let (ci, side) = (cx.column, cx.side);
         ui.horizontal_wrapped(|ui| {
             ui.label("Sphere (cylinder wrap)");
-            cx.figures.panel_menu_ui(ui, ci, &[PanelKind::Sphere]);
+            cx.figures.panel_menu_ui(ui, ci, &[FigureKind::Sphere]);
         });
         let (rect, response) = ui.allocate_exact_size(Vec2::splat(side), Sense::click_and_drag());
         response.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Image, true, "sphere view"));

@@ -7,7 +7,7 @@ use crate::core::signal::theorem::{
     AliasingErrors, PairKind, Reconstructor, Signal1D, TheoremSettings, TheoremView, EXTENT_RANGE,
     MAX_RATE, MAX_VDC_ROWS, MIN_RATE, PAIR_SCALE_RANGE, PAIR_SHIFT_RANGE,
 };
-use crate::model::{palette, PanelKind};
+use crate::model::{palette, FigureKind};
 use crate::scene::graph::{NodeKind, NodeValue};
 use crate::scene::Panels;
 use crate::ui::figures::FigureRequests;
@@ -43,8 +43,8 @@ pub struct TheoremPanel {
 }
 
 impl Panel for TheoremPanel {
-    fn kind(&self) -> PanelKind {
-        PanelKind::TheoremSignal
+    fn kind(&self) -> FigureKind {
+        FigureKind::TheoremSignal
     }
 
     fn is_shown(&self, panels: &Panels) -> bool {
@@ -90,7 +90,7 @@ impl TheoremPanel {
         // The numbers first, so that they stay in view when the panel is short.
         ui.horizontal(|ui| {
             // The view belongs to column 0 (it does not depend on the column).
-            figures.panel_menu_ui(ui, 0, &PanelKind::THEOREM);
+            figures.panel_menu_ui(ui, 0, &FigureKind::THEOREM);
             ui.weak("figures of the three plots below (Ctrl+S over a plot saves it)");
         });
         errors_ui(ui, &v.errors, v.settings.rate);
@@ -108,9 +108,9 @@ impl TheoremPanel {
                 recon_spectrum_plot_ui(ui, v, width, height);
             });
             for (r, kind) in [
-                (signal.response.rect, PanelKind::TheoremSignal),
-                (spectrum.response.rect, PanelKind::TheoremSpectrum),
-                (recon.response.rect, PanelKind::TheoremReconstructed),
+                (signal.response.rect, FigureKind::TheoremSignal),
+                (spectrum.response.rect, FigureKind::TheoremSpectrum),
+                (recon.response.rect, FigureKind::TheoremReconstructed),
             ] {
                 figures.panel_drawn(r, 0, kind);
             }

@@ -3,7 +3,7 @@
 
 use super::{Panel, PanelCx};
 use crate::model::Colormap;
-use crate::model::PanelKind;
+use crate::model::FigureKind;
 use crate::scene::graph::{NodeKind, NodeValue};
 use crate::scene::Panels;
 use crate::ui::gpu::DisplayRange;
@@ -16,19 +16,19 @@ use eframe::egui::{self, Color32};
 pub struct ZonePlatePanel;
 
 impl Panel for ZonePlatePanel {
-    fn kind(&self) -> PanelKind {
-        PanelKind::Reconstruction
+    fn kind(&self) -> FigureKind {
+        FigureKind::Reconstruction
     }
 
     fn is_shown(&self, panels: &Panels) -> bool {
         panels.zoneplate
     }
 
-    fn figure(&self, view: &ViewState) -> PanelKind {
+    fn figure(&self, view: &ViewState) -> FigureKind {
         match view.zone_image {
-            ZoneImage::Reconstruction => PanelKind::Reconstruction,
-            ZoneImage::Reference => PanelKind::Reference,
-            ZoneImage::Error | ZoneImage::ErrorSpectrum => PanelKind::Error,
+            ZoneImage::Reconstruction => FigureKind::Reconstruction,
+            ZoneImage::Reference => FigureKind::Reference,
+            ZoneImage::Error | ZoneImage::ErrorSpectrum => FigureKind::Error,
         }
     }
 
@@ -52,9 +52,9 @@ impl Panel for ZonePlatePanel {
                 ui,
                 ci,
                 &[
-                    PanelKind::Reconstruction,
-                    PanelKind::Reference,
-                    PanelKind::Error,
+                    FigureKind::Reconstruction,
+                    FigureKind::Reference,
+                    FigureKind::Error,
                 ],
             );
         });

@@ -1,8 +1,9 @@
-//! The identities of the panels: what the GUI shows, `render` writes and a figure draws.
+//! The identities of the figures: what `render` writes, the GUI's Save menus list and a
+//! `Figure` draws (a panel saves one or more of them).
 
-/// One panel of a column (one figure each).
+/// One figure of a column (a panel saves one or more).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
-pub enum PanelKind {
+pub enum FigureKind {
     /// The points in the unit square.
     Pattern,
     /// The points wrapped onto the sphere (cylinder wrap, radial projection): front and back
@@ -41,73 +42,73 @@ pub enum PanelKind {
     Integration,
 }
 
-impl PanelKind {
+impl FigureKind {
     /// Every kind, in the order `render` writes them.
-    pub const ALL: [PanelKind; 15] = [
-        PanelKind::Pattern,
-        PanelKind::Sphere,
-        PanelKind::Spectrum,
-        PanelKind::Raps,
-        PanelKind::Reconstruction,
-        PanelKind::Reference,
-        PanelKind::Error,
-        PanelKind::Kernel,
-        PanelKind::Response,
-        PanelKind::Convergence,
-        PanelKind::TheoremSignal,
-        PanelKind::TheoremSpectrum,
-        PanelKind::TheoremReconstructed,
-        PanelKind::TheoremPair,
-        PanelKind::Integration,
+    pub const ALL: [FigureKind; 15] = [
+        FigureKind::Pattern,
+        FigureKind::Sphere,
+        FigureKind::Spectrum,
+        FigureKind::Raps,
+        FigureKind::Reconstruction,
+        FigureKind::Reference,
+        FigureKind::Error,
+        FigureKind::Kernel,
+        FigureKind::Response,
+        FigureKind::Convergence,
+        FigureKind::TheoremSignal,
+        FigureKind::TheoremSpectrum,
+        FigureKind::TheoremReconstructed,
+        FigureKind::TheoremPair,
+        FigureKind::Integration,
     ];
 
     /// The figures of the 1D sampling-theorem panel.
-    pub const THEOREM: [PanelKind; 4] = [
-        PanelKind::TheoremSignal,
-        PanelKind::TheoremSpectrum,
-        PanelKind::TheoremReconstructed,
-        PanelKind::TheoremPair,
+    pub const THEOREM: [FigureKind; 4] = [
+        FigureKind::TheoremSignal,
+        FigureKind::TheoremSpectrum,
+        FigureKind::TheoremReconstructed,
+        FigureKind::TheoremPair,
     ];
 
     /// The kinds a composite may hold, in its order: one per panel as the GUI first shows it
     /// (pattern, sphere, periodogram, reconstruction, kernel and response), then the theorem's
     /// signal, spectrum and reconstructed spectrum (not the transform pair).
-    pub const COMPOSITE: [PanelKind; 9] = [
-        PanelKind::Pattern,
-        PanelKind::Sphere,
-        PanelKind::Spectrum,
-        PanelKind::Reconstruction,
-        PanelKind::Kernel,
-        PanelKind::Response,
-        PanelKind::TheoremSignal,
-        PanelKind::TheoremSpectrum,
-        PanelKind::TheoremReconstructed,
+    pub const COMPOSITE: [FigureKind; 9] = [
+        FigureKind::Pattern,
+        FigureKind::Sphere,
+        FigureKind::Spectrum,
+        FigureKind::Reconstruction,
+        FigureKind::Kernel,
+        FigureKind::Response,
+        FigureKind::TheoremSignal,
+        FigureKind::TheoremSpectrum,
+        FigureKind::TheoremReconstructed,
     ];
 
     /// Whether this is a figure of the 1D sampling-theorem panel: its data does not depend
     /// on the column and exists for column 0 only.
     pub fn is_theorem(self) -> bool {
-        PanelKind::THEOREM.contains(&self)
+        FigureKind::THEOREM.contains(&self)
     }
 
     /// Name used in file names, menus and metadata.
     pub fn name(self) -> &'static str {
         match self {
-            PanelKind::Pattern => "pattern",
-            PanelKind::Sphere => "sphere",
-            PanelKind::Spectrum => "spectrum",
-            PanelKind::Raps => "raps",
-            PanelKind::Reconstruction => "reconstruction",
-            PanelKind::Reference => "reference",
-            PanelKind::Error => "error",
-            PanelKind::Kernel => "kernel",
-            PanelKind::Response => "response",
-            PanelKind::Convergence => "convergence",
-            PanelKind::TheoremSignal => "theorem-signal",
-            PanelKind::TheoremSpectrum => "theorem-spectrum",
-            PanelKind::TheoremReconstructed => "theorem-reconstructed",
-            PanelKind::TheoremPair => "theorem-pair",
-            PanelKind::Integration => "integration",
+            FigureKind::Pattern => "pattern",
+            FigureKind::Sphere => "sphere",
+            FigureKind::Spectrum => "spectrum",
+            FigureKind::Raps => "raps",
+            FigureKind::Reconstruction => "reconstruction",
+            FigureKind::Reference => "reference",
+            FigureKind::Error => "error",
+            FigureKind::Kernel => "kernel",
+            FigureKind::Response => "response",
+            FigureKind::Convergence => "convergence",
+            FigureKind::TheoremSignal => "theorem-signal",
+            FigureKind::TheoremSpectrum => "theorem-spectrum",
+            FigureKind::TheoremReconstructed => "theorem-reconstructed",
+            FigureKind::TheoremPair => "theorem-pair",
+            FigureKind::Integration => "integration",
         }
     }
 }
