@@ -21,6 +21,7 @@ use crate::core::cancel::Cancel;
 use std::fs::{self, File, OpenOptions};
 use std::io::{self, BufWriter, Write};
 use std::path::{Component, Path, PathBuf};
+use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::{Mutex, MutexGuard};
 
 /// Links followed at most before a path is refused (Linux's own limit).
@@ -198,6 +199,31 @@ impl Partial {
     /// Creates `temp` (which must not exist) to be renamed onto `target` later.
     pub fn create_new(temp: PathBuf, target: PathBuf) -> io::Result<Partial> {
         Self::open(temp, target, true)
+    }
+
+    /// Creates a new file in `dir` named `{prefix}{pid}-{n}{suffix}`, a name no other thread
+    /// or process writing there uses, to be renamed onto `target`: for a directory several
+    /// processes write the same targets in (the disk cache), where the fixed
+    /// [`partial_path`] beside the target could be another writer's.
+    pub fn create_unique(
+        dir: &Path,
+        prefix: &str,
+        suffix: &str,
+        target: PathBuf,
+    ) -> io::Result<Partial> {
+        static NEXT: AtomicU64 = AtomicU64::new(0);
+        let pid = std::process::id();
+        let mut last = None;
+        for _ in 0..64 {
+            let n = NEXT.fetch_add(1, Ordering::Relaxed);
+            let temp = dir.join(format!("{prefix}{pid}-{n}{suffix}"));
+            match Self::create_new(temp, target.clone()) {
+                Ok(p) => return Ok(p),
+                Err(e) if e.kind() == io::ErrorKind::AlreadyExists => last = Some(e),
+                Err(e) => return Err(e),
+            }
+        }
+        Err(last.unwrap_or_else(|| io::Error::other("no free temporary file name")))
     }
 
     fn open(temp: PathBuf, target: PathBuf, new: bool) -> io::Result<Partial> {
@@ -521,6 +547,26 @@ mod tests {
         let _ = fs::remove_dir_all(&d);
         fs::create_dir_all(&d).unwrap();
         d
+    }
+
+    #[test]
+    fn unique_partials_have_distinct_names_and_vanish_unless_committed() {
+        let d = dir("unique");
+        let target = d.join("entry.bin");
+        let a = Partial::create_unique(&d, ".t-", ".tmp", target.clone()).unwrap();
+        let mut b = Partial::create_unique(&d, ".t-", ".tmp", target.clone()).unwrap();
+        assert_ne!(a.path(), b.path());
+        let name = b.path().file_name().unwrap().to_string_lossy().into_owned();
+        assert!(name.starts_with(".t-") && name.ends_with(".tmp"), "{name}");
+        let a_path = a.path().to_path_buf();
+        drop(a);
+        assert!(!a_path.exists(), "a dropped partial file is removed");
+        b.writer().write_all(b"whole").unwrap();
+        let b_path = b.path().to_path_buf();
+        b.commit(&Cancel::never()).unwrap();
+        assert!(!b_path.exists());
+        assert_eq!(fs::read(&target).unwrap(), b"whole");
+        let _ = fs::remove_dir_all(&d);
     }
 
     #[test]

@@ -68,7 +68,6 @@ use crate::core::output::Partial;
 use std::fs::{self, File, OpenOptions};
 use std::io::{self, ErrorKind, Read, Write};
 use std::path::{Path, PathBuf};
-use std::sync::atomic::{AtomicU64, Ordering};
 use std::time::{Duration, SystemTime};
 
 /// The first eight bytes of every entry file.
@@ -160,11 +159,9 @@ impl DiskCache {
             Err(source) => return Err(DiskCacheError::CreateDir { path: dir, source }),
         }
         let cache = DiskCache { dir, max_bytes };
-        match cache.create_temp() {
-            Ok((path, file)) => {
-                drop(file);
-                let _ = fs::remove_file(path);
-            }
+        // A file can be created there (the probe is removed when dropped).
+        match cache.create_partial(&cache.dir.join("probe")) {
+            Ok(probe) => drop(probe),
             Err(source) => {
                 return Err(DiskCacheError::NotWritable {
                     path: cache.dir,
@@ -276,42 +273,9 @@ impl DiskCache {
     }
 
     /// A new, empty temporary file with a name no other writer uses, to be renamed onto
-    /// `target`.
+    /// `target` ([`Partial::create_unique`]).
     fn create_partial(&self, target: &Path) -> io::Result<Partial> {
-        static NEXT: AtomicU64 = AtomicU64::new(0);
-        let pid = std::process::id();
-        let mut last = None;
-        for _ in 0..64 {
-            let n = NEXT.fetch_add(1, Ordering::Relaxed);
-            let temp = self
-                .dir
-                .join(format!("{TEMP_PREFIX}{pid}-p{n}{TEMP_SUFFIX}"));
-            match Partial::create_new(temp, target.to_path_buf()) {
-                Ok(p) => return Ok(p),
-                Err(e) if e.kind() == ErrorKind::AlreadyExists => last = Some(e),
-                Err(e) => return Err(e),
-            }
-        }
-        Err(last.unwrap_or_else(|| io::Error::other("no free temporary file name")))
-    }
-
-    /// A new, empty temporary file with a name no other writer uses.
-    fn create_temp(&self) -> io::Result<(PathBuf, File)> {
-        static NEXT: AtomicU64 = AtomicU64::new(0);
-        let pid = std::process::id();
-        let mut last = None;
-        for _ in 0..64 {
-            let n = NEXT.fetch_add(1, Ordering::Relaxed);
-            let path = self
-                .dir
-                .join(format!("{TEMP_PREFIX}{pid}-{n}{TEMP_SUFFIX}"));
-            match OpenOptions::new().write(true).create_new(true).open(&path) {
-                Ok(file) => return Ok((path, file)),
-                Err(e) if e.kind() == ErrorKind::AlreadyExists => last = Some(e),
-                Err(e) => return Err(e),
-            }
-        }
-        Err(last.unwrap_or_else(|| io::Error::other("no free temporary file name")))
+        Partial::create_unique(&self.dir, TEMP_PREFIX, TEMP_SUFFIX, target.to_path_buf())
     }
 
     /// Lists the directory: entry files (with size and modification time), calling `temp` on
@@ -691,6 +655,7 @@ impl<'a> Reader<'a> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use std::sync::atomic::{AtomicU64, Ordering};
     use std::sync::Arc;
 
     /// A unique directory under the system temp dir, deleted on drop.

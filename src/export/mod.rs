@@ -88,22 +88,6 @@ pub fn flip_rows<T: Copy>(values: &[T], width: usize) -> Vec<T> {
     values.chunks(width).rev().flatten().copied().collect()
 }
 
-/// Writes bytes to `path` whole or not at all ([`crate::core::output::write_atomic`]).
-pub fn write_file(path: &str, bytes: &[u8]) -> Result<(), ExportError> {
-    let never = crate::core::cancel::Cancel::never();
-    crate::core::output::write_atomic(std::path::Path::new(path), bytes, &never).map_err(
-        |e| match e {
-            crate::core::output::OutputError::Io { path, source } => {
-                ExportError::Io { path, source }
-            }
-            e => ExportError::Io {
-                path: path.to_string(),
-                source: std::io::Error::other(e.to_string()),
-            },
-        },
-    )
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
