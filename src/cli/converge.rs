@@ -3,12 +3,13 @@
 //! log–log slope of the MSE.
 
 use super::session::{check_outputs, write_output, Session};
-use super::{apply_settings, outln, pattern_from_args, CliError};
+use super::{from_args, outln, CliError};
 use samplescope::core::budget;
 use samplescope::core::integration::{
     check_request, estimate, run_study, Integrand, Study, StudyError, StudyRequest, MAX_STUDY_N,
 };
-use samplescope::core::params::{ParamValue, Params};
+use samplescope::core::params::params_json;
+use samplescope::core::pattern::Pattern;
 use std::path::Path;
 
 /// Arguments of `samplescope converge`.
@@ -54,19 +55,6 @@ pub struct ConvergeArgs {
     pub csv: Option<String>,
 }
 
-/// The integrand named `name` with `key=value` settings applied through its descriptors.
-pub fn integrand_from_args(name: &str, settings: &[String]) -> Result<Integrand, CliError> {
-    let mut integrand =
-        Integrand::from_name(name).map_err(|e| CliError::Usage(format!("--integrand {}", e)))?;
-    apply_settings(
-        &mut integrand,
-        "--integrand-set",
-        settings,
-        "samplescope converge --help",
-    )?;
-    Ok(integrand)
-}
-
 /// Parses the comma-separated `--n` list (the range is checked with the request).
 fn parse_ns(text: &str) -> Result<Vec<usize>, CliError> {
     text.split(',')
@@ -94,25 +82,6 @@ fn num(v: Option<f64>) -> serde_json::Value {
         .map_or(serde_json::Value::Null, serde_json::Value::from)
 }
 
-/// A parameter set as a JSON object `{key: value}` (numbers as numbers, choices as names).
-fn params_json<P: Params>(p: &P) -> serde_json::Value {
-    let map: serde_json::Map<String, serde_json::Value> = p
-        .specs()
-        .iter()
-        .filter_map(|s| {
-            let v = match p.get(s.name)? {
-                ParamValue::Int(i) => serde_json::Value::from(i),
-                ParamValue::Float(x) => num(Some(x)),
-                ParamValue::Bool(b) => serde_json::Value::from(b),
-                ParamValue::Choice(c) => serde_json::Value::from(c),
-                ParamValue::List(v) => v.into_iter().map(|x| num(Some(x))).collect(),
-            };
-            Some((s.name.to_string(), v))
-        })
-        .collect();
-    serde_json::Value::Object(map)
-}
-
 fn ms(d: std::time::Duration) -> f64 {
     d.as_secs_f64() * 1e3
 }
@@ -132,8 +101,20 @@ pub fn csv_text(study: &Study) -> String {
 
 /// Runs `samplescope converge`.
 pub fn run(args: &ConvergeArgs, session: &Session) -> Result<(), CliError> {
-    let pattern = pattern_from_args(&args.pattern, &args.set)?;
-    let integrand = integrand_from_args(&args.integrand, &args.integrand_set)?;
+    let pattern: Pattern = from_args(
+        "",
+        &args.pattern,
+        "--set",
+        &args.set,
+        "samplescope points --list",
+    )?;
+    let integrand: Integrand = from_args(
+        "--integrand",
+        &args.integrand,
+        "--integrand-set",
+        &args.integrand_set,
+        "samplescope converge --help",
+    )?;
     let ns = parse_ns(&args.n)?;
     let realizations = args.realizations.trim().parse::<usize>().map_err(|_| {
         CliError::Usage(format!(

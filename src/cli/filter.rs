@@ -13,9 +13,10 @@ use super::session::{check_outputs, write_output, Session};
 use super::CliError;
 use super::{out, outln};
 use samplescope::core::budget;
+use samplescope::core::family::Family;
 use samplescope::core::filter::{Filter, Filter2D, FilterMetrics, Mode2D};
-use samplescope::core::params::{ParamValue, Params};
-use serde_json::{json, Map, Value};
+use samplescope::core::params::{params_json, Params};
+use serde_json::{json, Value};
 
 /// Upper end of the `--response` CSV, in cycles per sample.
 pub const CSV_OMEGA_MAX: f64 = 2.0;
@@ -57,7 +58,8 @@ pub fn run(args: &FilterArgs, session: &Session) -> Result<(), CliError> {
             "filter: a kernel name is required (see `samplescope filter --list`)".into(),
         ));
     };
-    let filter = filter_from_args(name, &args.set)?;
+    let filter: Filter =
+        super::from_args("", name, "--set", &args.set, "samplescope filter --list")?;
     let mode = Mode2D::from_name(&args.mode)?;
     let f2 = Filter2D::new(filter, mode)?;
     check_outputs(&[("--response", args.response.as_deref())])?;
@@ -77,14 +79,6 @@ pub fn run(args: &FilterArgs, session: &Session) -> Result<(), CliError> {
     Ok(())
 }
 
-/// Builds a filter from its name and `key=value` settings (settings of `window` first, so that
-/// `beta` can follow a switch to the Kaiser window in any order).
-pub fn filter_from_args(name: &str, settings: &[String]) -> Result<Filter, CliError> {
-    let mut filter = Filter::from_name(name)?;
-    super::apply_settings(&mut filter, "--set", settings, "samplescope filter --list")?;
-    Ok(filter)
-}
-
 /// The `--response` CSV text.
 pub fn response_csv(f2: &Filter2D) -> Result<String, CliError> {
     let curve = f2.response_profile(CSV_OMEGA_MAX, CSV_STEPS)?;
@@ -94,23 +88,6 @@ pub fn response_csv(f2: &Filter2D) -> Result<String, CliError> {
         text.push_str(&format!("{:?},{:?},{:?}\n", s.omega, s.magnitude, s.phase));
     }
     Ok(text)
-}
-
-/// The filter's parameters as a JSON object (booleans as JSON booleans).
-pub fn params_json(filter: &Filter) -> Value {
-    let mut map = Map::new();
-    for spec in filter.specs() {
-        let v = match filter.get(spec.name) {
-            Some(ParamValue::Float(x)) => json!(x),
-            Some(ParamValue::Int(x)) => json!(x),
-            Some(ParamValue::Choice(c)) => json!(c),
-            Some(ParamValue::Bool(b)) => json!(b),
-            Some(ParamValue::List(v)) => json!(v),
-            None => Value::Null,
-        };
-        map.insert(spec.name.to_string(), v);
-    }
-    Value::Object(map)
 }
 
 /// The `--json` output.
@@ -157,33 +134,11 @@ pub fn metrics_text(f2: &Filter2D, m: &FilterMetrics) -> String {
     )
 }
 
-/// The text of `filter --list`.
+/// The text of `filter --list`: the filters and presets, then the 2D modes.
 pub fn list_text() -> String {
-    let mut s = String::new();
-    for f in Filter::all() {
-        s.push_str(&format!("{}\n    {}\n", f.name(), f.summary()));
-        let mut specs = f.specs();
-        if let Filter::WindowedSinc(_) | Filter::Cosc(_) = f {
-            // Show the Kaiser-only parameter too.
-            let mut k = f;
-            if k.set("window", "kaiser").is_ok() {
-                specs = k.specs();
-            }
-        }
-        for spec in specs {
-            s.push_str(&format!(
-                "    --set {}=…  default {}; {}\n        {}\n",
-                spec.name,
-                spec.default_text(),
-                spec.allowed(),
-                spec.doc
-            ));
-        }
-    }
-    s.push_str("presets\n");
-    for (name, doc, _) in Filter::presets() {
-        s.push_str(&format!("    {name}: {doc}\n"));
-    }
-    s.push_str(&format!("modes: --mode {}\n", Mode2D::NAMES.join(" | ")));
-    s
+    format!(
+        "{}modes: --mode {}\n",
+        Filter::list_text(),
+        Mode2D::NAMES.join(" | ")
+    )
 }

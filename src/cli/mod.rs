@@ -10,6 +10,7 @@ pub mod recon;
 pub mod render;
 pub mod session;
 
+use samplescope::core::family::Family;
 use samplescope::core::filter::FilterError;
 use samplescope::core::params::{ParamError, ParamKind, ParamSpec, Params};
 use samplescope::core::pattern::{Generated, Pattern, PatternError};
@@ -98,11 +99,26 @@ impl CliError {
     }
 }
 
-/// Builds a pattern from its name and `key=value` settings.
-pub fn pattern_from_args(name: &str, settings: &[String]) -> Result<Pattern, CliError> {
-    let mut pattern = Pattern::from_name(name)?;
-    apply_settings(&mut pattern, "--set", settings, "samplescope points --list")?;
-    Ok(pattern)
+/// A member of a family (a pattern, filter, signal or integrand) from its name and its
+/// `key=value` settings: `name_flag` starts the message of an unknown name (empty for a name
+/// given without a flag), `set_flag` is the settings' flag and `list_hint` the command that
+/// lists the parameters.
+pub fn from_args<F: Family>(
+    name_flag: &str,
+    name: &str,
+    set_flag: &str,
+    settings: &[String],
+    list_hint: &str,
+) -> Result<F, CliError> {
+    let mut member = F::from_name(name).map_err(|e| {
+        CliError::Usage(if name_flag.is_empty() {
+            e.to_string()
+        } else {
+            format!("{name_flag} {e}")
+        })
+    })?;
+    apply_settings(&mut member, set_flag, settings, list_hint)?;
+    Ok(member)
 }
 
 /// Applies `key=value` settings (from `flag`, e.g. `--set`) to any parameter set through its

@@ -2,9 +2,9 @@
 
 use super::out;
 use super::session::{check_outputs, write_output, Session};
-use super::{check_allow_fewer, check_seed, parse_n, pattern_from_args, require_points, CliError};
+use super::{check_allow_fewer, check_seed, from_args, parse_n, require_points, CliError};
 use samplescope::core::budget;
-use samplescope::core::params::Params;
+use samplescope::core::family::Family;
 use samplescope::core::pattern::{sphere, Pattern};
 use std::io::Write;
 use std::path::Path;
@@ -47,7 +47,7 @@ pub struct PointsArgs {
 pub fn run(args: &PointsArgs, session: &Session) -> Result<(), CliError> {
     if args.list {
         session.refuse_budget_flags("--list")?;
-        out!("{}", list_text())?;
+        out!("{}", Pattern::list_text())?;
         return Ok(());
     }
     let (Some(name), Some(n)) = (&args.pattern, args.n) else {
@@ -55,7 +55,7 @@ pub fn run(args: &PointsArgs, session: &Session) -> Result<(), CliError> {
             "points: a pattern and -n are required".into(),
         ));
     };
-    let pattern = pattern_from_args(name, &args.set)?;
+    let pattern: Pattern = from_args("", name, "--set", &args.set, "samplescope points --list")?;
     check_seed(&pattern, args.seed, "--seed")?;
     check_allow_fewer(&pattern, args.allow_fewer)?;
     pattern.validate(n)?;
@@ -104,22 +104,4 @@ pub fn run(args: &PointsArgs, session: &Session) -> Result<(), CliError> {
                 })
         }
     }
-}
-
-/// The text of `points --list`.
-pub fn list_text() -> String {
-    let mut s = String::new();
-    for p in Pattern::all() {
-        s.push_str(&format!("{}\n    {}\n", p.name(), p.summary()));
-        for spec in p.specs() {
-            s.push_str(&format!(
-                "    --set {}=…  default {}; {}\n        {}\n",
-                spec.name,
-                spec.default_text(),
-                spec.allowed(),
-                spec.doc
-            ));
-        }
-    }
-    s
 }

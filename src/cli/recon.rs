@@ -3,9 +3,10 @@
 
 use super::outln;
 use super::session::{check_outputs, write_output, Session};
-use super::{parse_n, pattern_from_args, CliError};
+use super::{from_args, parse_n, CliError};
 use samplescope::core::budget;
 use samplescope::core::filter::{Filter, Filter2D, Mode2D};
+use samplescope::core::pattern::Pattern;
 use samplescope::core::recon::{
     error_report, reconstruct_scattered, reference_image_with, sample_signal, supersample,
     PatternProvider, ReconError, ReferenceOptions, MAX_SPP, MAX_W,
@@ -73,41 +74,11 @@ pub struct ReconArgs {
     pub json: bool,
 }
 
-/// The signal named `name` with default parameters, then `key=value` settings applied
-/// through its parameter descriptors (each checked).
-pub fn signal_from_args(name: &str, settings: &[String]) -> Result<Signal, CliError> {
-    let wanted = match name.trim().to_ascii_lowercase().as_str() {
-        "zoneplate" => "zone-plate".to_string(),
-        other => other.to_string(),
-    };
-    let signal = Signal::all()
-        .into_iter()
-        .find(|s| s.name() == wanted)
-        .ok_or_else(|| {
-            CliError::Usage(format!(
-                "--signal {name}: must be one of {}",
-                Signal::all()
-                    .iter()
-                    .map(|s| s.name())
-                    .collect::<Vec<_>>()
-                    .join(", ")
-            ))
-        })?;
-    let mut signal = signal;
-    super::apply_settings(
-        &mut signal,
-        "--signal-set",
-        settings,
-        "samplescope recon --help",
-    )?;
-    Ok(signal)
-}
-
 /// The 2D filter from its name, settings and mode.
 pub fn filter_from_args(name: &str, settings: &[String], mode: &str) -> Result<Filter2D, CliError> {
-    let mut f = Filter::from_name(name).map_err(|e| CliError::Usage(e.to_string()))?;
-    super::apply_settings(
-        &mut f,
+    let f: Filter = from_args(
+        "",
+        name,
         "--filter-set",
         settings,
         "samplescope filter --list",
@@ -119,8 +90,20 @@ pub fn filter_from_args(name: &str, settings: &[String], mode: &str) -> Result<F
 /// Runs `samplescope recon`.
 pub fn run(args: &ReconArgs, session: &Session) -> Result<(), CliError> {
     let cancel = &session.cancel;
-    let signal = signal_from_args(&args.signal, &args.signal_set)?;
-    let pattern = pattern_from_args(&args.pattern, &args.set)?;
+    let signal: Signal = from_args(
+        "--signal",
+        &args.signal,
+        "--signal-set",
+        &args.signal_set,
+        "samplescope recon --help",
+    )?;
+    let pattern: Pattern = from_args(
+        "",
+        &args.pattern,
+        "--set",
+        &args.set,
+        "samplescope points --list",
+    )?;
     let filter = filter_from_args(&args.filter, &args.filter_set, &args.mode)?;
     if let Some(why) = filter.reconstruction_refusal() {
         return Err(CliError::Usage(format!("--filter: {why}")));

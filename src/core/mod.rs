@@ -2,6 +2,7 @@
 
 pub mod budget;
 pub mod cancel;
+pub mod family;
 pub mod filter;
 pub mod integration;
 pub mod metrics;

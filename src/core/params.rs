@@ -463,6 +463,34 @@ pub trait Params: Clone {
     }
 }
 
+/// A parameter set as a JSON object `{key: value}` of every parameter that applies now:
+/// numbers as numbers (a non-finite one as `null`), choices as their names, booleans as
+/// booleans, lists as arrays. The `--json` outputs of every command use it.
+pub fn params_json(p: &impl Params) -> serde_json::Value {
+    let num = |x: f64| {
+        if x.is_finite() {
+            serde_json::Value::from(x)
+        } else {
+            serde_json::Value::Null
+        }
+    };
+    let map: serde_json::Map<String, serde_json::Value> = p
+        .specs()
+        .iter()
+        .filter_map(|s| {
+            let v = match p.get(s.name)? {
+                ParamValue::Int(i) => serde_json::Value::from(i),
+                ParamValue::Float(x) => num(x),
+                ParamValue::Bool(b) => serde_json::Value::from(b),
+                ParamValue::Choice(c) => serde_json::Value::from(c),
+                ParamValue::List(v) => v.into_iter().map(num).collect(),
+            };
+            Some((s.name.to_string(), v))
+        })
+        .collect();
+    serde_json::Value::Object(map)
+}
+
 /// Declares a parameter struct with its descriptors: the struct (serde: every field optional,
 /// unknown fields refused), `Default`, the consts `NAME` and `SUMMARY`, and [`Params`].
 ///

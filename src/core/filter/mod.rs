@@ -76,9 +76,10 @@ pub use metrics::FilterMetrics;
 pub use two_d::{Filter2D, Mode2D};
 
 use crate::core::cancel::Cancelled;
-use crate::core::params::{dispatch_params, ParamError, Params};
+use crate::core::family::{family, UnknownName};
+use crate::core::params::{ParamError, Params};
 use rustfft::num_complex::Complex64;
-use serde::{Deserialize, Serialize};
+
 use special::{cos_pi, sin_pi};
 
 /// Relative tolerance (times ∫|integrand|) of the numeric responses and integrals.
@@ -97,8 +98,8 @@ pub enum FilterError {
         allowed: String,
     },
     /// The filter name is not known.
-    #[error("unknown filter '{name}': allowed filters are {allowed}")]
-    UnknownFilter { name: String, allowed: String },
+    #[error(transparent)]
+    UnknownFilter(#[from] UnknownName),
     /// The parameter key is not known for this filter.
     #[error("{filter}: unknown parameter '{key}': allowed parameters are [{allowed}]")]
     UnknownParam {
@@ -157,58 +158,73 @@ impl From<Cancelled> for FilterError {
     }
 }
 
-macro_rules! filters {
-    ($( $variant:ident ( $ty:ident ) ),* $(,)?) => {
-        /// Every reconstruction filter, as a small parameter struct per variant.
-        #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-        #[serde(tag = "kind", rename_all = "kebab-case")]
-        pub enum Filter {
-            $( $variant($ty), )*
+family! {
+    /// Every reconstruction filter, as a small parameter struct per variant.
+    Filter = "filter", "filters" {
+        Box(BoxFilter) = "box",
+        Tent(Tent) = "tent",
+        Gaussian(Gaussian) = "gaussian",
+        Mitchell(Mitchell) = "mitchell",
+        Sinc(Sinc) = "sinc",
+        WindowedSinc(WindowedSinc) = "windowed-sinc",
+        Cosc(Cosc) = "cosc",
+        LowPass(LowPass) = "low-pass",
+        BandPass(BandPass) = "band-pass",
+        HighPass(HighPass) = "high-pass",
+    }
+    dyn Kernel => kernel;
+    impl {
+        /// Named presets: catmull-rom, b-spline, lanczos, kaiser.
+        fn presets() -> Vec<(&'static str, &'static str, Filter)> {
+            vec![
+                (
+                    "catmull-rom",
+                    "Mitchell B = 0, C = ½ (interpolating cubic)",
+                    Filter::Mitchell(Mitchell::catmull_rom()),
+                ),
+                (
+                    "b-spline",
+                    "Mitchell B = 1, C = 0 (cubic B-spline, no ringing)",
+                    Filter::Mitchell(Mitchell::b_spline()),
+                ),
+                (
+                    "lanczos",
+                    "windowed sinc, Lanczos window, radius 3",
+                    Filter::WindowedSinc(WindowedSinc {
+                        radius: 3.0,
+                        window: Window::Lanczos,
+                    }),
+                ),
+                (
+                    "kaiser",
+                    "windowed sinc, Kaiser window β = 4, radius 4",
+                    Filter::WindowedSinc(WindowedSinc {
+                        radius: 4.0,
+                        window: Window::Kaiser { beta: 4.0 },
+                    }),
+                ),
+            ]
         }
 
-        impl Filter {
-            /// Every filter with its default parameters, in documentation order.
-            pub fn all() -> Vec<Filter> {
-                vec![ $( Filter::$variant($ty::default()), )* ]
+        /// The parameters that apply now, and the Kaiser window's `beta` of a windowed sinc
+        /// or cosc whose window is another one.
+        fn listed_specs(&self) -> Vec<crate::core::params::ParamSpec> {
+            let mut kaiser = *self;
+            if let Filter::WindowedSinc(_) | Filter::Cosc(_) = self {
+                // Show the Kaiser-only parameter too.
+                let _ = kaiser.set("window", "kaiser");
             }
-
-            /// Name used on the command line and in scene files.
-            pub fn name(&self) -> &'static str {
-                match self { $( Filter::$variant(_) => $ty::NAME, )* }
-            }
-
-            /// One-line description.
-            pub fn summary(&self) -> &'static str {
-                match self { $( Filter::$variant(_) => $ty::SUMMARY, )* }
-            }
-
-            /// Checks every parameter (finite, in range, cross-field constraints).
-            pub fn validate(&self) -> Result<(), FilterError> {
-                Ok(self.check_params()?)
-            }
-
-            /// The kernel behind the filter (the uniform interface).
-            pub fn kernel(&self) -> &dyn Kernel {
-                match self { $( Filter::$variant(p) => p, )* }
-            }
+            kaiser.specs()
         }
-
-        dispatch_params!(Filter { $( $variant ),* });
-    };
+    }
 }
 
-filters!(
-    Box(BoxFilter),
-    Tent(Tent),
-    Gaussian(Gaussian),
-    Mitchell(Mitchell),
-    Sinc(Sinc),
-    WindowedSinc(WindowedSinc),
-    Cosc(Cosc),
-    LowPass(LowPass),
-    BandPass(BandPass),
-    HighPass(HighPass),
-);
+impl Filter {
+    /// Checks every parameter (finite, in range, cross-field constraints).
+    pub fn validate(&self) -> Result<(), FilterError> {
+        Ok(self.check_params()?)
+    }
+}
 
 impl Default for Filter {
     fn default() -> Self {
@@ -337,62 +353,6 @@ impl ResponseRule {
 }
 
 impl Filter {
-    /// The filter named `name` (or a preset: `catmull-rom`, `b-spline`, `lanczos`, `kaiser`)
-    /// with default parameters. Case-insensitive.
-    pub fn from_name(name: &str) -> Result<Filter, FilterError> {
-        let n = name.trim();
-        Filter::all()
-            .into_iter()
-            .find(|f| f.name().eq_ignore_ascii_case(n))
-            .or_else(|| {
-                Filter::presets()
-                    .into_iter()
-                    .find(|(p, _, _)| p.eq_ignore_ascii_case(n))
-                    .map(|(_, _, f)| f)
-            })
-            .ok_or_else(|| FilterError::UnknownFilter {
-                name: name.to_string(),
-                allowed: Filter::all()
-                    .iter()
-                    .map(|f| f.name())
-                    .chain(Filter::presets().iter().map(|(p, _, _)| *p))
-                    .collect::<Vec<_>>()
-                    .join(", "),
-            })
-    }
-
-    /// Named presets: (name, description, filter).
-    pub fn presets() -> Vec<(&'static str, &'static str, Filter)> {
-        vec![
-            (
-                "catmull-rom",
-                "Mitchell B = 0, C = ½ (interpolating cubic)",
-                Filter::Mitchell(Mitchell::catmull_rom()),
-            ),
-            (
-                "b-spline",
-                "Mitchell B = 1, C = 0 (cubic B-spline, no ringing)",
-                Filter::Mitchell(Mitchell::b_spline()),
-            ),
-            (
-                "lanczos",
-                "windowed sinc, Lanczos window, radius 3",
-                Filter::WindowedSinc(WindowedSinc {
-                    radius: 3.0,
-                    window: Window::Lanczos,
-                }),
-            ),
-            (
-                "kaiser",
-                "windowed sinc, Kaiser window β = 4, radius 4",
-                Filter::WindowedSinc(WindowedSinc {
-                    radius: 4.0,
-                    window: Window::Kaiser { beta: 4.0 },
-                }),
-            ),
-        ]
-    }
-
     /// Radius r in sample spacings (h = 0 for |x| > r).
     pub fn radius(&self) -> f64 {
         self.kernel().radius()
@@ -654,10 +614,7 @@ mod tests {
         names.sort();
         names.dedup();
         assert_eq!(names.len(), all.len());
-        assert!(matches!(
-            Filter::from_name("nope"),
-            Err(FilterError::UnknownFilter { .. })
-        ));
+        assert!(matches!(Filter::from_name("nope"), Err(UnknownName { .. })));
         assert_eq!(
             Filter::from_name("Catmull-Rom"),
             Ok(Filter::Mitchell(Mitchell::catmull_rom()))

@@ -15,13 +15,14 @@
 //!
 //! Every parameter set is a [`declare_params!`] struct, so `--integrand-set key=value` goes
 //! through [`Params::set`] with its checks, and [`Integrand`] dispatches over them
-//! ([`dispatch_params!`]) like [`crate::core::pattern::Pattern`] does.
+//! ([`family!`](crate::core::family::family)) like [`crate::core::pattern::Pattern`] does.
 
+use crate::core::family::family;
 use crate::core::filter::special::{cos_pi, erf, erfc, sin_pi, sinc};
-use crate::core::params::{declare_params, dispatch_params};
+use crate::core::params::declare_params;
 use crate::core::rng::Rng;
 use glam::DVec2;
-use serde::{Deserialize, Serialize};
+
 use std::f64::consts::PI;
 
 declare_params! {
@@ -60,47 +61,16 @@ declare_params! {
     }
 }
 
-/// Why an integrand name was refused.
-#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
-#[error("unknown integrand '{name}': allowed integrands are {allowed}")]
-pub struct UnknownIntegrand {
-    /// The name given.
-    pub name: String,
-    /// The known names, comma-separated.
-    pub allowed: String,
+family! {
+    /// Every integrand, as a small parameter struct per variant (`kind` in serde forms).
+    Integrand = "integrand", "integrands" {
+        Disk(Disk) = "disk",
+        Gaussian(Gaussian) = "gaussian",
+        Heaviside(Heaviside) = "heaviside",
+        Bilinear(Bilinear) = "bilinear",
+        Cosines(Cosines) = "cosines",
+    }
 }
-
-macro_rules! integrands {
-    ($( $variant:ident ),* $(,)?) => {
-        /// Every integrand, as a small parameter struct per variant (`kind` in serde forms).
-        #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-        #[serde(tag = "kind", rename_all = "kebab-case")]
-        pub enum Integrand {
-            $( $variant($variant), )*
-        }
-
-        impl Integrand {
-            /// Every integrand with its default parameters, in documentation order.
-            pub fn all() -> Vec<Integrand> {
-                vec![ $( Integrand::$variant($variant::default()), )* ]
-            }
-
-            /// Name used on the command line.
-            pub fn name(&self) -> &'static str {
-                match self { $( Integrand::$variant(_) => $variant::NAME, )* }
-            }
-
-            /// One-line description.
-            pub fn summary(&self) -> &'static str {
-                match self { $( Integrand::$variant(_) => $variant::SUMMARY, )* }
-            }
-        }
-
-        dispatch_params!(Integrand { $( $variant ),* });
-    };
-}
-
-integrands!(Disk, Gaussian, Heaviside, Bilinear, Cosines);
 
 impl Default for Integrand {
     fn default() -> Self {
@@ -109,21 +79,6 @@ impl Default for Integrand {
 }
 
 impl Integrand {
-    /// The integrand named `name` (case-insensitive) with default parameters.
-    pub fn from_name(name: &str) -> Result<Integrand, UnknownIntegrand> {
-        Integrand::all()
-            .into_iter()
-            .find(|i| i.name().eq_ignore_ascii_case(name.trim()))
-            .ok_or_else(|| UnknownIntegrand {
-                name: crate::core::params::fmt_text(name),
-                allowed: Integrand::all()
-                    .iter()
-                    .map(|i| i.name())
-                    .collect::<Vec<_>>()
-                    .join(", "),
-            })
-    }
-
     /// f(p). Any finite p is allowed (the study only asks inside [0,1)²).
     pub fn eval(&self, p: DVec2) -> f64 {
         Prepared::new(self).eval(p)

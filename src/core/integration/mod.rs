@@ -18,8 +18,7 @@ pub mod integrands;
 pub mod study;
 
 pub use integrands::{
-    disk_rect_area, half_plane_square_area, Bilinear, Cosines, Disk, Gaussian, Heaviside,
-    Integrand, UnknownIntegrand,
+    disk_rect_area, half_plane_square_area, Bilinear, Cosines, Disk, Gaussian, Heaviside, Integrand,
 };
 pub use study::{
     check_request, estimate, log_log_fit, run_study, run_study_naive, run_study_progressive, Study,

@@ -31,7 +31,8 @@ pub mod radical_inverse;
 pub mod sphere;
 pub mod stratified;
 
-use crate::core::params::{declare_params, dispatch_params, ChoiceParam, ParamError};
+use crate::core::family::{family, UnknownName};
+use crate::core::params::{declare_params, ChoiceParam, ParamError};
 use glam::DVec2;
 use serde::{Deserialize, Serialize};
 
@@ -63,8 +64,8 @@ pub enum PatternError {
         allowed: String,
     },
     /// The pattern name is not known.
-    #[error("unknown pattern '{name}': allowed patterns are {allowed}")]
-    UnknownPattern { name: String, allowed: String },
+    #[error(transparent)]
+    UnknownPattern(#[from] UnknownName),
     /// The parameter key is not known for this pattern.
     #[error("{pattern}: unknown parameter '{key}': allowed parameters are [{allowed}]")]
     UnknownParam {
@@ -465,65 +466,37 @@ fn param_error(owner: &'static str, e: PatternError) -> ParamError {
     }
 }
 
-macro_rules! patterns {
-    ($( $variant:ident = $name:literal ),* $(,)?) => {
-        /// Every sample pattern, as a small parameter struct per variant. In scene files the
-        /// `kind` is the pattern's one name, the same as on the command line and in the GUI.
-        #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-        #[serde(tag = "kind")]
-        pub enum Pattern {
-            $( #[serde(rename = $name)] $variant($variant), )*
-        }
-
-        impl Pattern {
-            /// Every pattern with its default parameters, in documentation order.
-            pub fn all() -> Vec<Pattern> {
-                vec![ $( Pattern::$variant($variant::default()), )* ]
-            }
-
-            /// Name used on the command line and in scene files.
-            pub fn name(&self) -> &'static str {
-                match self { $( Pattern::$variant(_) => $variant::NAME, )* }
-            }
-
-            /// One-line description.
-            pub fn summary(&self) -> &'static str {
-                match self { $( Pattern::$variant(_) => $variant::SUMMARY, )* }
-            }
-
-        }
-
-        dispatch_params!(Pattern { $( $variant ),* });
-    };
+family! {
+    /// Every sample pattern, as a small parameter struct per variant. In scene files the
+    /// `kind` is the pattern's one name, the same as on the command line and in the GUI.
+    Pattern = "pattern", "patterns" {
+        Grid(Grid) = "grid",
+        Random(Random) = "random",
+        Jitter(Jitter) = "jitter",
+        NRooks(NRooks) = "nrooks",
+        Lhs(Lhs) = "lhs",
+        MultiJitter(MultiJitter) = "multijitter",
+        CorrelatedMultiJitter(CorrelatedMultiJitter) = "cmj",
+        Hex(Hex) = "hex",
+        PoissonDart(PoissonDart) = "poisson-dart",
+        PoissonBridson(PoissonBridson) = "poisson-bridson",
+        BestCandidate(BestCandidate) = "best-candidate",
+        VanDerCorput(VanDerCorput) = "van-der-corput",
+        Halton(Halton) = "halton",
+        Hammersley(Hammersley) = "hammersley",
+        HaltonZaremba(HaltonZaremba) = "halton-zaremba",
+        HammersleyZaremba(HammersleyZaremba) = "hammersley-zaremba",
+        Sobol(Sobol) = "sobol",
+        Pmj02(Pmj02) = "pmj02",
+        Pmj02bn(Pmj02bn) = "pmj02bn",
+        Fibonacci(Fibonacci) = "fibonacci",
+        Rank1(Rank1) = "rank1",
+        Kronecker(Kronecker) = "kronecker",
+        Lloyd(Lloyd) = "lloyd",
+        Sot(Sot) = "sot",
+        Gbn(Gbn) = "gbn",
+    }
 }
-
-patterns!(
-    Grid = "grid",
-    Random = "random",
-    Jitter = "jitter",
-    NRooks = "nrooks",
-    Lhs = "lhs",
-    MultiJitter = "multijitter",
-    CorrelatedMultiJitter = "cmj",
-    Hex = "hex",
-    PoissonDart = "poisson-dart",
-    PoissonBridson = "poisson-bridson",
-    BestCandidate = "best-candidate",
-    VanDerCorput = "van-der-corput",
-    Halton = "halton",
-    Hammersley = "hammersley",
-    HaltonZaremba = "halton-zaremba",
-    HammersleyZaremba = "hammersley-zaremba",
-    Sobol = "sobol",
-    Pmj02 = "pmj02",
-    Pmj02bn = "pmj02bn",
-    Fibonacci = "fibonacci",
-    Rank1 = "rank1",
-    Kronecker = "kronecker",
-    Lloyd = "lloyd",
-    Sot = "sot",
-    Gbn = "gbn",
-);
 
 impl Default for Pattern {
     fn default() -> Self {
@@ -532,21 +505,6 @@ impl Default for Pattern {
 }
 
 impl Pattern {
-    /// The pattern named `name` with default parameters.
-    pub fn from_name(name: &str) -> Result<Pattern, PatternError> {
-        Pattern::all()
-            .into_iter()
-            .find(|p| p.name().eq_ignore_ascii_case(name.trim()))
-            .ok_or_else(|| PatternError::UnknownPattern {
-                name: name.to_string(),
-                allowed: Pattern::all()
-                    .iter()
-                    .map(|p| p.name())
-                    .collect::<Vec<_>>()
-                    .join(", "),
-            })
-    }
-
     /// Whether the pattern uses its seed (deterministic ones ignore it).
     pub fn is_random(&self) -> bool {
         !matches!(

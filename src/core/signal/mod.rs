@@ -39,9 +39,9 @@ pub use oned::{Chirp, Constant, Square, SumOfSines};
 pub use shapes::{Grating, Polygon, PolygonShape, StepEdge};
 pub use zone_plate::ZonePlate;
 
-use crate::core::params::{dispatch_params, ParamError, Params};
+use crate::core::family::family;
+use crate::core::params::{ParamError, Params};
 use glam::DVec2;
-use serde::{Deserialize, Serialize};
 
 /// A parameter of a signal is unknown, malformed or out of its range.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -51,41 +51,32 @@ pub enum SignalError {
     Param(#[from] ParamError),
 }
 
-/// Every test signal, as a small parameter struct per variant.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-#[serde(tag = "kind", rename_all = "kebab-case")]
-pub enum Signal {
-    /// ½(1 + sin(π K |p − c|²)).
-    ZonePlate(ZonePlate),
-    /// Tom Duff's perspective checkerboard.
-    Checkerboard(Checkerboard),
-    /// ½(1 + sin(2π f n·p)).
-    Grating(Grating),
-    /// 1 on one side of a line, 0 on the other.
-    StepEdge(StepEdge),
-    /// A filled convex polygon with slanted edges.
-    Polygon(Polygon),
-    /// 1D: ½(1 + Σ aₖ sin(2π fₖ x)).
-    SumOfSines(SumOfSines),
-    /// 1D: linear chirp from f₀ to f₁.
-    Chirp(Chirp),
-    /// 1D: square wave.
-    Square(Square),
-    /// The constant field.
-    Constant(Constant),
+family! {
+    /// Every test signal, as a small parameter struct per variant.
+    Signal = "signal", "signals" {
+        /// ½(1 + sin(π K |p − c|²)).
+        ZonePlate(ZonePlate) = "zone-plate",
+        /// Tom Duff's perspective checkerboard.
+        Checkerboard(Checkerboard) = "checkerboard",
+        /// ½(1 + sin(2π f n·p)).
+        Grating(Grating) = "grating",
+        /// 1 on one side of a line, 0 on the other.
+        StepEdge(StepEdge) = "step-edge",
+        /// A filled convex polygon with slanted edges.
+        Polygon(Polygon) = "polygon",
+        /// 1D: ½(1 + Σ aₖ sin(2π fₖ x)).
+        SumOfSines(SumOfSines) = "sum-of-sines",
+        /// 1D: linear chirp from f₀ to f₁.
+        Chirp(Chirp) = "chirp",
+        /// 1D: square wave.
+        Square(Square) = "square",
+        /// The constant field.
+        Constant(Constant) = "constant",
+    }
+    impl {
+        const ALIASES: &'static [(&'static str, &'static str)] = &[("zoneplate", "zone-plate")];
+    }
 }
-
-dispatch_params!(Signal {
-    ZonePlate,
-    Checkerboard,
-    Grating,
-    StepEdge,
-    Polygon,
-    SumOfSines,
-    Chirp,
-    Square,
-    Constant,
-});
 
 impl Default for Signal {
     fn default() -> Self {
@@ -94,36 +85,6 @@ impl Default for Signal {
 }
 
 impl Signal {
-    /// Every signal with its default parameters, in documentation order.
-    pub fn all() -> Vec<Signal> {
-        vec![
-            Signal::ZonePlate(ZonePlate::default()),
-            Signal::Checkerboard(Checkerboard::default()),
-            Signal::Grating(Grating::default()),
-            Signal::StepEdge(StepEdge::default()),
-            Signal::Polygon(Polygon::default()),
-            Signal::SumOfSines(SumOfSines::default()),
-            Signal::Chirp(Chirp::default()),
-            Signal::Square(Square::default()),
-            Signal::Constant(Constant::default()),
-        ]
-    }
-
-    /// Name used in scene files (the serde tag).
-    pub fn name(&self) -> &'static str {
-        match self {
-            Signal::ZonePlate(_) => ZonePlate::NAME,
-            Signal::Checkerboard(_) => Checkerboard::NAME,
-            Signal::Grating(_) => Grating::NAME,
-            Signal::StepEdge(_) => StepEdge::NAME,
-            Signal::Polygon(_) => Polygon::NAME,
-            Signal::SumOfSines(_) => SumOfSines::NAME,
-            Signal::Chirp(_) => Chirp::NAME,
-            Signal::Square(_) => Square::NAME,
-            Signal::Constant(_) => Constant::NAME,
-        }
-    }
-
     /// Whether this is a 1D signal (constant along y).
     pub fn is_1d(&self) -> bool {
         matches!(

@@ -11,7 +11,7 @@ use crate::model::{palette, FigureKind};
 use crate::scene::graph::{NodeKind, NodeValue};
 use crate::scene::Panels;
 use crate::ui::figures::FigureRequests;
-use crate::ui::widgets::params::{labelled_params_ui, params_ui};
+use crate::ui::widgets::params::{family_ui, labelled_params_ui, params_ui};
 use eframe::egui::{self, Color32};
 use egui_plot::{Legend, Line, Plot, Points, VLine};
 
@@ -161,23 +161,13 @@ fn controls_ui(ui: &mut egui::Ui, s: &mut TheoremSettings) {
     } else {
         ui.label("not band-limited: no rate avoids pre-aliasing");
     }
-    let mut fname = s.filter.name();
-    egui::ComboBox::new("theorem-filter", "Reconstruction filter")
-        .selected_text(fname)
-        .show_ui(ui, |ui| {
-            for f in Filter::all()
-                .into_iter()
-                .filter(|f| Reconstructor::new(*f, 1.0, 1.0).is_ok())
-            {
-                ui.selectable_value(&mut fname, f.name(), f.name())
-                    .on_hover_text(f.summary());
-            }
-        });
-    if fname != s.filter.name() {
-        if let Ok(f) = Filter::from_name(fname) {
-            s.filter = f;
-        }
-    }
+    family_ui(
+        ui,
+        "theorem-filter",
+        "Reconstruction filter",
+        &mut s.filter,
+        |f: &Filter| Reconstructor::new(*f, 1.0, 1.0).is_ok(),
+    );
     params_ui(ui, &mut s.filter);
     ui.add(
         egui::Slider::new(&mut s.extent, EXTENT_RANGE.0..=EXTENT_RANGE.1)

@@ -1,30 +1,44 @@
 //! Editors of the scene's parameters: the pattern of a column, the signal, the filter, and one
 //! control per parameter descriptor. One entry point per editor: [`pattern_ui`],
-//! [`signal_ui`], [`filter_ui`]; [`params_ui`] and [`param_ui`] are the controls they share
-//! (the theorem panel uses them for its signal and filter too).
+//! [`signal_ui`], [`filter_ui`], [`integrand_ui`]; [`family_ui`] (the one picker of a family
+//! member), [`params_ui`] and [`param_ui`] are the controls they share (the theorem panel uses
+//! them for its signal and filter too).
 
+use crate::core::family::Family;
 use crate::core::params::{ParamKind, ParamSpec, ParamValue, Params};
-use crate::core::pattern::Pattern;
 use crate::scene::Column;
 use crate::ui::view::screen_from_unit;
 use eframe::egui::{self, Color32, Stroke, Vec2};
 
-/// Pattern selection and one control per parameter descriptor.
-pub fn pattern_ui(ui: &mut egui::Ui, column: &mut Column) {
-    let mut name = column.pattern.name();
-    egui::ComboBox::from_label("Pattern")
+/// The one picker of a family member (pattern, filter, signal, integrand): a combo box
+/// `label` (`id` keeps two pickers with one label apart) of the members `offer` accepts, each
+/// with its summary on hover; picking another member gives it its default parameters.
+pub fn family_ui<F: Family>(
+    ui: &mut egui::Ui,
+    id: &str,
+    label: &str,
+    member: &mut F,
+    offer: impl Fn(&F) -> bool,
+) {
+    let mut name = member.name();
+    egui::ComboBox::new(id, label)
         .selected_text(name)
         .show_ui(ui, |ui| {
-            for p in Pattern::all() {
-                ui.selectable_value(&mut name, p.name(), p.name())
-                    .on_hover_text(p.summary());
+            for m in F::all().iter().filter(|m| offer(m)) {
+                ui.selectable_value(&mut name, m.name(), m.name())
+                    .on_hover_text(m.summary());
             }
         });
-    if name != column.pattern.name() {
-        if let Ok(p) = Pattern::from_name(name) {
-            column.pattern = p;
+    if name != member.name() {
+        if let Ok(m) = F::from_name(name) {
+            *member = m;
         }
     }
+}
+
+/// Pattern selection and one control per parameter descriptor.
+pub fn pattern_ui(ui: &mut egui::Ui, column: &mut Column) {
+    family_ui(ui, "Pattern", "Pattern", &mut column.pattern, |_| true);
     params_ui(ui, &mut column.pattern);
     let mut seed = column.seed;
     ui.horizontal(|ui| {
@@ -84,40 +98,13 @@ pub fn labelled_params_ui(ui: &mut egui::Ui, params: &mut impl Params, prefix: &
 
 /// Signal selection (the 2D signals) and its parameters.
 pub fn signal_ui(ui: &mut egui::Ui, signal: &mut crate::core::signal::Signal) {
-    use crate::core::signal::Signal;
-    let mut name = signal.name();
-    egui::ComboBox::from_label("Signal")
-        .selected_text(name)
-        .show_ui(ui, |ui| {
-            for s in Signal::all().iter().filter(|s| !s.is_1d()) {
-                ui.selectable_value(&mut name, s.name(), s.name());
-            }
-        });
-    if name != signal.name() {
-        if let Some(s) = Signal::all().into_iter().find(|s| s.name() == name) {
-            *signal = s;
-        }
-    }
+    family_ui(ui, "Signal", "Signal", signal, |s| !s.is_1d());
     params_ui(ui, signal);
 }
 
 /// Integrand selection (the integration study's families) and its parameters.
 pub fn integrand_ui(ui: &mut egui::Ui, f: &mut crate::core::integration::Integrand) {
-    use crate::core::integration::Integrand;
-    let mut name = f.name();
-    egui::ComboBox::from_label("Integrand")
-        .selected_text(name)
-        .show_ui(ui, |ui| {
-            for i in Integrand::all() {
-                ui.selectable_value(&mut name, i.name(), i.name())
-                    .on_hover_text(i.summary());
-            }
-        });
-    if name != f.name() {
-        if let Ok(i) = Integrand::from_name(name) {
-            *f = i;
-        }
-    }
+    family_ui(ui, "Integrand", "Integrand", f, |_| true);
     params_ui(ui, f);
 }
 
@@ -125,20 +112,7 @@ pub fn integrand_ui(ui: &mut egui::Ui, f: &mut crate::core::integration::Integra
 /// Mitchell–Netravali (B, C) picker.
 pub fn filter_ui(ui: &mut egui::Ui, f2: &mut crate::core::filter::Filter2D) {
     use crate::core::filter::{Filter, Mode2D};
-    let mut name = f2.filter.name();
-    egui::ComboBox::from_label("Kernel")
-        .selected_text(name)
-        .show_ui(ui, |ui| {
-            for f in Filter::all() {
-                ui.selectable_value(&mut name, f.name(), f.name())
-                    .on_hover_text(f.summary());
-            }
-        });
-    if name != f2.filter.name() {
-        if let Ok(f) = Filter::from_name(name) {
-            f2.filter = f;
-        }
-    }
+    family_ui(ui, "Kernel", "Kernel", &mut f2.filter, |_| true);
     ui.horizontal(|ui| {
         let mut mode = f2.mode;
         ui.selectable_value(&mut mode, Mode2D::Separable, "separable");
