@@ -12,10 +12,11 @@ use samplescope::core::pattern::{Pattern, MAX_N};
 use samplescope::core::pointset::{read_points_named, OutOfRange, PointsFileError};
 use samplescope::core::rng::derive_seed;
 use samplescope::core::spectrum::{
-    average_periodogram, radial_average, DcMode, Method, SpectrumRequest,
+    average_periodogram, radial_average, SpectrumRequest, DEFAULT_ERROR_CHECK_BUDGET,
 };
 use samplescope::export::{flip_rows, png_bytes};
 use samplescope::model::Colormap;
+use samplescope::scene::SpectrumSettings;
 use serde_json::json;
 use std::fmt::Write as _;
 use std::path::Path;
@@ -389,22 +390,22 @@ pub fn run(args: &AnalyzeArgs, session: &Session) -> Result<(), CliError> {
     // Files averaged (K ≥ 2) or one set.
     let sets_k = file_sets.as_ref().map_or(1, |s| s.len());
     let averaged = sets_k > 1;
-    let req = SpectrumRequest {
+    // The scene's settings make the request; analyze shows DC and checks the error at the
+    // core's default budget (its measured error is reported as before).
+    let settings = SpectrumSettings {
         size: args.size,
-        method: if args.exact {
-            Method::Exact
-        } else {
-            Method::Nufft {
-                tolerance: args.tolerance.unwrap_or(DEFAULT_TOLERANCE),
-            }
-        },
+        tolerance: args.tolerance.unwrap_or(DEFAULT_TOLERANCE),
+        exact: args.exact,
         realizations: if file_sets.is_some() {
             sets_k
         } else {
             args.realizations
         },
-        dc: DcMode::Show,
-        ..SpectrumRequest::default()
+        mask_dc: false,
+    };
+    let req = SpectrumRequest {
+        error_check_budget: DEFAULT_ERROR_CHECK_BUDGET,
+        ..settings.request(0, false)
     };
     req.validate().map_err(|e| CliError::Usage(e.to_string()))?;
     let n = match (&file_sets, &generator) {

@@ -456,36 +456,16 @@ pub(super) fn convergence(ctx: &JobCtx) -> Output {
 }
 
 pub(super) fn spectrum(ctx: &JobCtx) -> Output {
-    use crate::core::spectrum::{average_periodogram_progressive, DcMode, Method, SpectrumRequest};
+    use crate::core::spectrum::average_periodogram_progressive;
     let (scene, cancel) = (ctx.scene, ctx.cancel);
     let col = ctx.col();
-    let mut s = scene.spectrum;
+    let s = scene.spectrum;
     // Realization 0 is the points node's set: the points the pattern panel shows.
     let points0 = points_of(ctx.deps)?;
     let imported = col.points.is_some();
     let n_points = points0.points.len();
     let asked_k = s.realizations;
-    if imported {
-        s.realizations = 1;
-    }
-    let req = SpectrumRequest {
-        size: s.size,
-        method: if s.exact {
-            Method::Exact
-        } else {
-            Method::Nufft {
-                tolerance: s.tolerance,
-            }
-        },
-        realizations: s.realizations,
-        dc: if s.mask_dc {
-            DcMode::Mask
-        } else {
-            DcMode::Show
-        },
-        // Two rows of the exact DFT: a measured error at ~2·N·M multiply-adds.
-        error_check_budget: 2 * (n_points as u64) * (s.size as u64),
-    };
+    let req = s.request(n_points, imported);
     let first = crate::core::rng::derive_seed(col.seed, 0);
     let (pattern, n) = (col.pattern, scene.n);
     let k = req.realizations;

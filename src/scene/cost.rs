@@ -11,7 +11,6 @@ use super::compute::{CONVERGENCE_SIZE, CONVERGENCE_SPP, PREVIEW_DIVISOR, PREVIEW
 use super::graph::{self, NodeKind};
 use super::{ReconMode, Scene};
 use crate::core::budget::{self, Budget, Estimate, OverBudget};
-use crate::core::spectrum::{Method, SpectrumRequest};
 use std::collections::HashSet;
 
 /// The estimates of every node the scene will evaluate (see the module docs).
@@ -58,24 +57,7 @@ fn node_estimates(scene: &Scene, c: usize, kind: NodeKind) -> Vec<Estimate> {
             v
         }
         NodeKind::Spectrum => {
-            let s = scene.spectrum;
-            let req = SpectrumRequest {
-                size: s.size,
-                method: if s.exact {
-                    Method::Exact
-                } else {
-                    Method::Nufft {
-                        tolerance: s.tolerance,
-                    }
-                },
-                realizations: if imported.is_some() {
-                    1
-                } else {
-                    s.realizations
-                },
-                error_check_budget: 2 * n as u64 * s.size as u64,
-                ..SpectrumRequest::default()
-            };
+            let req = scene.spectrum.request(n, imported.is_some());
             let generator = imported.is_none().then_some(&col.pattern);
             vec![budget::spectrum(&req, n, generator)]
         }

@@ -157,6 +157,34 @@ impl Default for SpectrumSettings {
     }
 }
 
+impl SpectrumSettings {
+    /// The spectrum request these settings make for `n` points: the exact DFT or the NUFFT at
+    /// `tolerance`, DC masked or shown, one realization for imported points (a file is one
+    /// set), and an error check of two rows of the exact DFT (~2·N·M multiply-adds). The one
+    /// place a [`SpectrumRequest`](crate::core::spectrum::SpectrumRequest) is made from
+    /// settings: the spectrum node, its estimate and `analyze` use it.
+    pub fn request(&self, n: usize, imported: bool) -> crate::core::spectrum::SpectrumRequest {
+        use crate::core::spectrum::{DcMode, Method, SpectrumRequest};
+        SpectrumRequest {
+            size: self.size,
+            method: if self.exact {
+                Method::Exact
+            } else {
+                Method::Nufft {
+                    tolerance: self.tolerance,
+                }
+            },
+            realizations: if imported { 1 } else { self.realizations },
+            dc: if self.mask_dc {
+                DcMode::Mask
+            } else {
+                DcMode::Show
+            },
+            error_check_budget: 2 * (n as u64) * (self.size as u64),
+        }
+    }
+}
+
 /// Reconstruction settings.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(default, deny_unknown_fields)]

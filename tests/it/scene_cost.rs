@@ -73,3 +73,32 @@ fn a_heavy_scene_is_refused_naming_its_costliest_node() {
         "{ops:?}"
     );
 }
+
+#[test]
+fn spectrum_settings_make_the_one_request() {
+    use samplescope::core::spectrum::{DcMode, Method};
+    use samplescope::scene::SpectrumSettings;
+    let s = SpectrumSettings {
+        size: 64,
+        tolerance: 1e-4,
+        exact: false,
+        realizations: 5,
+        mask_dc: true,
+    };
+    let r = s.request(100, false);
+    assert_eq!(r.size, 64);
+    assert_eq!(r.method, Method::Nufft { tolerance: 1e-4 });
+    assert_eq!(r.realizations, 5);
+    assert_eq!(r.dc, DcMode::Mask);
+    assert_eq!(r.error_check_budget, 2 * 100 * 64);
+    // A file is one set; the exact DFT and DC shown follow the switches.
+    let r = SpectrumSettings {
+        exact: true,
+        mask_dc: false,
+        ..s
+    }
+    .request(100, true);
+    assert_eq!(r.realizations, 1);
+    assert_eq!(r.method, Method::Exact);
+    assert_eq!(r.dc, DcMode::Show);
+}
