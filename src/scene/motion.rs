@@ -34,6 +34,7 @@
 //! sampling rate in time — a drift of one grating period per frame looks frozen, slightly less
 //! looks like slow motion backwards (temporal strobing, the wagon-wheel effect).
 
+use super::{Location, Scene, SceneError};
 use crate::core::signal::shapes::{direction, CENTRE};
 use crate::core::signal::Signal;
 use glam::DVec2;
@@ -228,6 +229,39 @@ pub fn signal_at(signal: &Signal, motion: &Motion, t: f64) -> Result<Signal, Mot
         // Rejected by `check_signal` above.
         other => other,
     })
+}
+
+impl Scene {
+    /// The scene at time `t` seconds: the signal moved by [`Scene::motion`] (see the module docs),
+    /// everything else unchanged (the points and their spectrum do not depend on the signal,
+    /// so the compute graph reuses them). A scene without motion, or t = 0, is returned as is.
+    pub fn at_time(&self, t: f64) -> Result<Scene, SceneError> {
+        let mut out = self.clone();
+        if let Some(m) = &self.motion {
+            out.signal = signal_at(&self.signal, m, t).map_err(|e| {
+                let (field, value, allowed) = match &e {
+                    MotionError::InvalidParam {
+                        field,
+                        value,
+                        allowed,
+                    } => (field.to_string(), value.to_string(), allowed.clone()),
+                    MotionError::Unsupported { signal } => (
+                        "motion".to_string(),
+                        signal.to_string(),
+                        "used with a zone-plate, grating or step-edge signal".to_string(),
+                    ),
+                };
+                SceneError::Invalid {
+                    source_name: self.title.clone(),
+                    location: Location::default(),
+                    field,
+                    value,
+                    allowed,
+                }
+            })?;
+        }
+        Ok(out)
+    }
 }
 
 #[cfg(test)]

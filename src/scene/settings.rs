@@ -1,0 +1,285 @@
+//! What a scene holds: its columns, shared settings, visible panels and effects (serde types and defaults).
+
+use super::{ImportedPoints, IntegrationSettings, Motion};
+use crate::core::filter::Filter2D;
+use crate::core::pattern::Pattern;
+use crate::core::signal::theorem::TheoremSettings;
+use crate::core::signal::Signal;
+use serde::{Deserialize, Serialize};
+
+/// One column of a comparison: a pattern and its seed.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct Column {
+    /// The sample pattern with its parameters.
+    pub pattern: Pattern,
+    /// The seed of its random stream.
+    pub seed: u64,
+    /// Optional label shown above the column (default: the pattern's name).
+    pub label: String,
+    /// Points imported from a file (or inline) used instead of the pattern; see [`import`].
+    pub points: Option<ImportedPoints>,
+    /// Draw this column's elementary intervals b^k × b^(m−k) (base 2, N = 2^m) with this k,
+    /// whatever the shared overlay setting; lets a scene show several interval shapes side by
+    /// side. At most [`MAX_ELEMENTARY_K`].
+    pub elementary_k: Option<u32>,
+    /// Draw this column's strata (the grid its pattern stratifies: jitter's cells, N-rooks'
+    /// and Latin hypercubes' N rows and columns) under its points in the pattern figure; only
+    /// for stratified patterns (see `Pattern::strata`).
+    pub strata: bool,
+    /// How supersampling gives the pixels their samples (only with `recon.mode: Supersample`).
+    pub pixels: PixelSampling,
+}
+
+/// How a supersampling column draws each pixel's s samples.
+///
+/// In scene files: `pixels: per_pixel`, `pixels: image_plane(tile: 0)`, `pixels: zsobol`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum PixelSampling {
+    /// Every pixel draws its own, independent copy of the pattern (seed derived from the pixel).
+    #[default]
+    PerPixel,
+    /// One pattern of s·T² points over a toroidal tile of T×T pixels (T = 0: the whole image),
+    /// repeated across the image; each pixel takes the points that fall in it (excess points of
+    /// unstratified patterns move to the nearest underfull pixel; see
+    /// [`crate::core::recon::image_plane`]).
+    ImagePlane { tile: usize },
+    /// Ahmed & Wonka's ZSobol (pbrt-v4): one Owen-scrambled Sobol' sequence over the pixels in
+    /// Morton order with base-4 digit randomisation; the column's pattern is not used. spp must
+    /// be a power of two.
+    #[serde(rename = "zsobol")]
+    ZSobol,
+}
+
+impl PixelSampling {
+    /// Name shown in the GUI and in figure labels.
+    pub fn name(self) -> &'static str {
+        match self {
+            PixelSampling::PerPixel => "per-pixel",
+            PixelSampling::ImagePlane { .. } => "image-plane",
+            PixelSampling::ZSobol => "zsobol",
+        }
+    }
+}
+
+impl Default for Column {
+    fn default() -> Self {
+        Column {
+            pattern: Pattern::default(),
+            seed: 1,
+            label: String::new(),
+            points: None,
+            elementary_k: None,
+            strata: false,
+            pixels: PixelSampling::PerPixel,
+        }
+    }
+}
+
+impl Column {
+    /// The label shown above the column.
+    pub fn title(&self) -> String {
+        if self.label.is_empty() {
+            match &self.points {
+                Some(p) => format!("{} ({} points)", p.label(), p.points.len()),
+                None => self.pattern.name().to_string(),
+            }
+        } else {
+            self.label.clone()
+        }
+    }
+}
+
+/// How the signal is sampled and reconstructed.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum ReconMode {
+    /// The column's N points sample the signal over the whole image; a filter scaled to the
+    /// mean sample spacing 1/√N reconstructs it on the output grid.
+    Scattered,
+    /// `spp` samples per output pixel from the column's pattern, combined by the pixel filter.
+    Supersample { spp: usize },
+    /// The signal sampled on a uniform `grid`×`grid` lattice (the columns' patterns are not
+    /// used) and resampled to the output size with the filter scaled to the grid spacing — the
+    /// lecture's "sampled at 128×128 and reconstructed to 512×512 using windowed sinc".
+    Resample { grid: usize },
+}
+
+/// Spectrum settings.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct SpectrumSettings {
+    /// Frequencies per side (M×M integer frequencies, DC in the middle).
+    pub size: usize,
+    /// NUFFT tolerance (relative ℓ2); ignored when `exact`.
+    pub tolerance: f64,
+    /// Use the exact DFT instead of the NUFFT.
+    pub exact: bool,
+    /// Number of realizations averaged (seeds derived from the column's seed).
+    pub realizations: usize,
+    /// Hide the DC peak P(0) = N.
+    pub mask_dc: bool,
+}
+
+impl Default for SpectrumSettings {
+    fn default() -> Self {
+        SpectrumSettings {
+            size: 256,
+            tolerance: 1e-6,
+            exact: false,
+            realizations: 1,
+            mask_dc: true,
+        }
+    }
+}
+
+impl SpectrumSettings {
+    /// The spectrum request these settings make for `n` points: the exact DFT or the NUFFT at
+    /// `tolerance`, DC masked or shown, one realization for imported points (a file is one
+    /// set), and an error check of two rows of the exact DFT (~2·N·M multiply-adds). The one
+    /// place a [`SpectrumRequest`](crate::core::spectrum::SpectrumRequest) is made from
+    /// settings: the spectrum node, its estimate and `analyze` use it.
+    pub fn request(&self, n: usize, imported: bool) -> crate::core::spectrum::SpectrumRequest {
+        use crate::core::spectrum::{DcMode, Method, SpectrumRequest};
+        SpectrumRequest {
+            size: self.size,
+            method: if self.exact {
+                Method::Exact
+            } else {
+                Method::Nufft {
+                    tolerance: self.tolerance,
+                }
+            },
+            realizations: if imported { 1 } else { self.realizations },
+            dc: if self.mask_dc {
+                DcMode::Mask
+            } else {
+                DcMode::Show
+            },
+            error_check_budget: 2 * (n as u64) * (self.size as u64),
+        }
+    }
+}
+
+/// Reconstruction settings.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct ReconSettings {
+    /// How samples are taken.
+    pub mode: ReconMode,
+    /// Output image size W (W×W pixels).
+    pub size: usize,
+}
+
+impl Default for ReconSettings {
+    fn default() -> Self {
+        ReconSettings {
+            mode: ReconMode::Scattered,
+            size: 512,
+        }
+    }
+}
+
+/// Which panels are visible.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct Panels {
+    pub pattern: bool,
+    pub spectrum: bool,
+    pub zoneplate: bool,
+    pub filter: bool,
+    /// The cost view (every node's time and error, and the convergence plot).
+    pub cost: bool,
+    /// The 1D sampling-theorem view (signal, replicas, filter, pre-/post-aliasing).
+    pub theorem: bool,
+    /// The integration-error study: MSE of the Monte Carlo estimate against N, every column
+    /// on one log–log plot.
+    pub integration: bool,
+    /// The points wrapped onto the sphere (the lecture's cylinder wrap and radial projection).
+    pub sphere: bool,
+}
+
+impl Default for Panels {
+    fn default() -> Self {
+        Panels {
+            pattern: true,
+            spectrum: true,
+            zoneplate: true,
+            filter: true,
+            cost: false,
+            theorem: false,
+            integration: false,
+            sphere: false,
+        }
+    }
+}
+
+/// Which effects are simulated. An effect that is off costs nothing.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct Effects {
+    /// Sample the signal and reconstruct it (the zone plate panel's image).
+    pub reconstruction: bool,
+    /// Compute the reference image and the error against it.
+    pub error: bool,
+    /// Compute the convergence curve (RMSE vs samples per pixel) for the cost view.
+    pub convergence: bool,
+    /// Point-set statistics (minimum distance, discrepancy) for the pattern overlays.
+    pub statistics: bool,
+}
+
+impl Default for Effects {
+    fn default() -> Self {
+        Effects {
+            reconstruction: true,
+            error: true,
+            convergence: false,
+            statistics: false,
+        }
+    }
+}
+
+/// A scene: what is shown and how it is computed.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct Scene {
+    pub title: String,
+    /// What to look at (shown under the title).
+    pub notes: String,
+    pub columns: Vec<Column>,
+    /// Number of points per column.
+    pub n: usize,
+    pub signal: Signal,
+    pub filter: Filter2D,
+    pub recon: ReconSettings,
+    pub spectrum: SpectrumSettings,
+    pub panels: Panels,
+    pub effects: Effects,
+    /// How the signal moves over time; `None` (the default) computes nothing per frame.
+    pub motion: Option<Motion>,
+    /// The 1D sampling-theorem view's settings (used only while `panels.theorem` is on).
+    pub theorem: TheoremSettings,
+    /// The integration-error study (used only while `panels.integration` is on).
+    pub integration: IntegrationSettings,
+}
+
+impl Default for Scene {
+    fn default() -> Self {
+        Scene {
+            title: "untitled".into(),
+            notes: String::new(),
+            columns: vec![Column::default()],
+            n: 4096,
+            signal: Signal::default(),
+            filter: Filter2D::default(),
+            recon: ReconSettings::default(),
+            spectrum: SpectrumSettings::default(),
+            panels: Panels::default(),
+            effects: Effects::default(),
+            motion: None,
+            theorem: TheoremSettings::default(),
+            integration: IntegrationSettings::default(),
+        }
+    }
+}
