@@ -494,8 +494,12 @@ pub fn params_json(p: &impl Params) -> serde_json::Value {
 /// Declares a parameter struct with its descriptors: the struct (serde: every field optional,
 /// unknown fields refused), `Default`, the consts `NAME` and `SUMMARY`, and [`Params`].
 ///
+/// `declare_params! { impl Type = "owner" { … } }` implements [`Params`] for an existing struct
+/// over the fields listed (a scene setting whose other fields are families or lists).
+///
 /// Field kinds:
-/// - `int(default, min, max, "doc")`, stored as `u32`;
+/// - `int(default, min, max, "doc")`, stored as `u32`; `count(default, min, max, "doc")`, stored
+///   as `usize`;
 /// - `float(default, min, max, "doc")` (in `[min, max]`), `below(default, min, max, "doc")` (in
 ///   `[min, max)`: `max` itself is refused, e.g. an offset modulo 1) and
 ///   `positive(default, max, "doc")` (in `(0, max]`), stored as `f64`;
@@ -532,6 +536,28 @@ macro_rules! declare_params {
             pub const SUMMARY: &'static str = $summary;
         }
 
+        $crate::core::params::declare_params!(@impl $ty = $name {
+            $( $field : $kind ( $($arg)* ) ),*
+        } $( check($p) $body )?);
+    };
+    // `Params` for an existing struct, over the listed fields (a scene setting whose other
+    // fields are families or lists checked on their own).
+    (
+        impl $ty:ident = $name:literal {
+            $( $(#[$fmeta:meta])* $field:ident : $kind:ident ( $($arg:tt)* ) ),* $(,)?
+        }
+        $( check($p:ident) $body:block )?
+    ) => {
+        $crate::core::params::declare_params!(@impl $ty = $name {
+            $( $field : $kind ( $($arg)* ) ),*
+        } $( check($p) $body )?);
+    };
+    (
+        @impl $ty:ident = $name:literal {
+            $( $field:ident : $kind:ident ( $($arg:tt)* ) ),*
+        }
+        $( check($p:ident) $body:block )?
+    ) => {
         impl $crate::core::params::Params for $ty {
             fn owner(&self) -> &'static str {
                 $name
@@ -567,6 +593,7 @@ macro_rules! declare_params {
         }
     };
     (@ty int ($($a:tt)*)) => { u32 };
+    (@ty count ($($a:tt)*)) => { usize };
     (@ty float ($($a:tt)*)) => { f64 };
     (@ty positive ($($a:tt)*)) => { f64 };
     (@ty below ($($a:tt)*)) => { f64 };
@@ -574,6 +601,7 @@ macro_rules! declare_params {
     (@ty flag ($($a:tt)*)) => { bool };
     (@ty list ($n:literal, $($a:tt)*)) => { [f64; $n] };
     (@default int ($d:expr, $min:expr, $max:expr, $doc:literal)) => { $d };
+    (@default count ($d:expr, $min:expr, $max:expr, $doc:literal)) => { $d };
     (@default float ($d:expr, $min:expr, $max:expr, $doc:literal)) => { $d };
     (@default positive ($d:expr, $max:expr, $doc:literal)) => { $d };
     (@default below ($d:expr, $min:expr, $max:expr, $doc:literal)) => { $d };
@@ -584,6 +612,9 @@ macro_rules! declare_params {
     (@last $doc:literal) => { $doc };
     (@last $x:tt $($rest:tt)+) => { $crate::core::params::declare_params!(@last $($rest)+) };
     (@spec int ($d:expr, $min:expr, $max:expr, $doc:literal)) => {
+        $crate::core::params::ParamKind::Int { default: $d as i64, min: $min as i64, max: $max as i64 }
+    };
+    (@spec count ($d:expr, $min:expr, $max:expr, $doc:literal)) => {
         $crate::core::params::ParamKind::Int { default: $d as i64, min: $min as i64, max: $max as i64 }
     };
     (@spec float ($d:expr, $min:expr, $max:expr, $doc:literal)) => {
@@ -608,6 +639,7 @@ macro_rules! declare_params {
         $crate::core::params::ParamKind::List { default: &[$($d),*], min: $min, max: $max }
     };
     (@get int $e:expr) => { $crate::core::params::ParamValue::Int($e as i64) };
+    (@get count $e:expr) => { $crate::core::params::ParamValue::Int($e as i64) };
     (@get float $e:expr) => { $crate::core::params::ParamValue::Float($e) };
     (@get positive $e:expr) => { $crate::core::params::ParamValue::Float($e) };
     (@get below $e:expr) => { $crate::core::params::ParamValue::Float($e) };
@@ -618,6 +650,9 @@ macro_rules! declare_params {
     (@get list $e:expr) => { $crate::core::params::ParamValue::List($e.to_vec()) };
     (@put int $e:expr, $v:expr) => {
         if let $crate::core::params::ParamValue::Int(x) = $v { $e = x as u32; }
+    };
+    (@put count $e:expr, $v:expr) => {
+        if let $crate::core::params::ParamValue::Int(x) = $v { $e = x as usize; }
     };
     (@put float $e:expr, $v:expr) => {
         if let $crate::core::params::ParamValue::Float(x) = $v { $e = x; }

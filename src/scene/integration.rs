@@ -2,6 +2,9 @@
 //! randomisation, shared by every column (each column studies its own pattern and seed).
 
 use crate::core::integration::{Integrand, StudyRequest, MAX_NS, MAX_REALIZATIONS, MAX_STUDY_N};
+use crate::core::params::declare_params;
+#[cfg(doc)]
+use crate::core::params::Params;
 use crate::core::pattern::Pattern;
 use serde::{Deserialize, Serialize};
 
@@ -11,7 +14,7 @@ use serde::{Deserialize, Serialize};
 pub struct IntegrationSettings {
     /// The integrand (with `randomize`, the family each realization draws an instance of).
     pub integrand: Integrand,
-    /// A new random instance of the integrand's family per realization.
+    /// A new random instance of the integrand's family per realization (descriptor below).
     pub randomize: bool,
     /// The sample counts N of the curve, each in 1..=2²⁰, 1 to 64 values.
     pub ns: Vec<usize>,
@@ -37,15 +40,22 @@ impl Default for IntegrationSettings {
 /// The default sample counts: 16 … 4096 in powers of two.
 pub const DEFAULT_NS: [usize; 9] = [16, 32, 64, 128, 256, 512, 1024, 2048, 4096];
 
-/// The documented ranges of the settings (what `Scene::validate` checks and the GUI spans).
+declare_params! {
+    impl IntegrationSettings = "integration" {
+        randomize: flag(false, "each realization draws a new centre, radius, σ or line"),
+        realizations: count(64, 1, MAX_REALIZATIONS, "realizations R per N (the panel shows them coming in: 1, 2, 4, … R)"),
+        shift: flag(true, "deterministic patterns are shifted per realization"),
+    }
+}
+
+/// The documented ranges of the sample counts (what `Scene::validate` checks and the GUI
+/// spans); the other settings have descriptors ([`Params`]).
 pub mod limits {
     use std::ops::RangeInclusive;
     /// Each sample count.
     pub const N: RangeInclusive<usize> = 1..=super::MAX_STUDY_N;
     /// How many sample counts.
     pub const NS: RangeInclusive<usize> = 1..=super::MAX_NS;
-    /// Realizations.
-    pub const REALIZATIONS: RangeInclusive<usize> = 1..=super::MAX_REALIZATIONS;
 }
 
 impl IntegrationSettings {
@@ -62,8 +72,8 @@ impl IntegrationSettings {
         }
     }
 
-    /// The first setting out of its range: (field, value, allowed). Parameters of the
-    /// integrand are checked by the caller through its descriptors.
+    /// The first sample count (`ns`) out of its range: (field, value, allowed). The other
+    /// settings and the integrand's parameters are checked through their descriptors.
     pub fn check(&self) -> Option<(&'static str, String, String)> {
         if !limits::NS.contains(&self.ns.len()) {
             return Some((
@@ -87,17 +97,6 @@ impl IntegrationSettings {
                 ),
             ));
         }
-        if !limits::REALIZATIONS.contains(&self.realizations) {
-            return Some((
-                "realizations",
-                self.realizations.to_string(),
-                format!(
-                    "an integer in {}..={}",
-                    limits::REALIZATIONS.start(),
-                    limits::REALIZATIONS.end()
-                ),
-            ));
-        }
         None
     }
 }
@@ -105,6 +104,7 @@ impl IntegrationSettings {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::core::params::Params;
 
     #[test]
     fn the_default_is_valid_and_bad_values_name_their_field() {
@@ -118,11 +118,24 @@ mod tests {
         assert_eq!(bad(|s| s.ns = vec![0]), Some("ns"));
         assert_eq!(bad(|s| s.ns = vec![MAX_STUDY_N + 1]), Some("ns"));
         assert_eq!(bad(|s| s.ns = vec![1; MAX_NS + 1]), Some("ns"));
-        assert_eq!(bad(|s| s.realizations = 0), Some("realizations"));
-        assert_eq!(
-            bad(|s| s.realizations = MAX_REALIZATIONS + 1),
-            Some("realizations")
-        );
         assert_eq!(bad(|s| s.ns = vec![1, MAX_STUDY_N]), None);
+        let realizations = |r| {
+            IntegrationSettings {
+                realizations: r,
+                ..Default::default()
+            }
+            .check_params()
+            .map_err(|e| e.to_string())
+        };
+        assert_eq!(realizations(1), Ok(()));
+        assert_eq!(realizations(MAX_REALIZATIONS), Ok(()));
+        assert_eq!(
+            realizations(0),
+            Err("integration.realizations = 0: must be an integer in 1..=4096".into())
+        );
+        assert_eq!(
+            realizations(MAX_REALIZATIONS + 1),
+            Err("integration.realizations = 4097: must be an integer in 1..=4096".into())
+        );
     }
 }

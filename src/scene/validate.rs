@@ -266,6 +266,9 @@ impl Scene {
         if let Some((field, value, allowed)) = self.integration.check() {
             return Err(invalid(&format!("integration.{field}"), value, &allowed));
         }
+        self.integration
+            .check_params()
+            .map_err(|e| param("integration", e))?;
         if let Some(m) = &self.motion {
             match m.validate() {
                 Err(motion::MotionError::InvalidParam {

@@ -239,10 +239,13 @@ fn limit_scenes() -> Vec<(String, Scene)> {
             study(&|s| s.ns = ns.clone()),
         );
     }
-    for r in [
-        *integration_limits::REALIZATIONS.start(),
-        *integration_limits::REALIZATIONS.end(),
-    ] {
+    let Some(ParamKind::Int { min, max, .. }) = IntegrationSettings::default()
+        .spec("realizations")
+        .map(|s| s.kind)
+    else {
+        panic!("integration.realizations has an integer descriptor");
+    };
+    for r in [min as usize, max as usize] {
         push(
             format!("integration.realizations={r}"),
             study(&|s| s.realizations = r),

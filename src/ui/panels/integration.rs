@@ -10,7 +10,7 @@ use crate::scene::graph::{NodeKind, NodeValue};
 use crate::scene::integration::limits;
 use crate::scene::Panels;
 use crate::ui::gpu::DisplayRange;
-use crate::ui::widgets::params::integrand_ui;
+use crate::ui::widgets::params::{integrand_ui, setting_ui};
 use crate::ui::widgets::status::error_label;
 use eframe::egui::{self, Color32};
 use egui_plot::{Corner, Legend, Line, LineStyle, Plot, PlotPoints, Points};
@@ -77,15 +77,9 @@ impl Panel for IntegrationPanel {
                         96.0,
                     );
                 }
-                ui.checkbox(&mut s.randomize, "random instance per realization")
-                    .on_hover_text("each realization draws a new centre, radius, σ or line");
-                ui.checkbox(&mut s.shift, "Cranley–Patterson shift")
-                    .on_hover_text("deterministic patterns are shifted per realization");
-                ui.add(
-                    egui::Slider::new(&mut s.realizations, limits::REALIZATIONS)
-                        .logarithmic(true)
-                        .text("realizations R"),
-                );
+                setting_ui(ui, s, "randomize", "random instance per realization");
+                setting_ui(ui, s, "shift", "Cranley–Patterson shift");
+                setting_ui(ui, s, "realizations", "realizations R");
                 // N as powers of two 2^lo … 2^hi; an explicit list of a scene is kept until a
                 // bound is moved.
                 let (min_n, max_n) = (

@@ -96,6 +96,19 @@ pub fn labelled_params_ui(ui: &mut egui::Ui, params: &mut impl Params, prefix: &
     }
 }
 
+/// One setting `key` of `params` (a scene setting) through its descriptor: the widget's kind
+/// and range are the descriptor's, the label is `label`, the hover text the descriptor's doc.
+/// A change is applied only if the whole set stays valid. Returns whether it changed.
+pub fn setting_ui(ui: &mut egui::Ui, params: &mut impl Params, key: &str, label: &str) -> bool {
+    let (Some(spec), Some(value)) = (params.spec(key), params.get(key)) else {
+        return false;
+    };
+    match param_ui(ui, &spec, label, value) {
+        Some(v) => params.set_value(key, &v).is_ok(),
+        None => false,
+    }
+}
+
 /// Signal selection (the 2D signals) and its parameters.
 pub fn signal_ui(ui: &mut egui::Ui, signal: &mut crate::core::signal::Signal) {
     family_ui(ui, "Signal", "Signal", signal, |s| !s.is_1d());
