@@ -14,10 +14,8 @@ use super::session::{write_output, Session};
 use super::CliError;
 use samplescope::core::cancel::Cancel;
 use samplescope::engine::Evaluator;
-use samplescope::export::figure::{
-    column_file, column_file_name, comparison_file, comparison_file_name, comparison_size,
-    panel_csv, panel_file, panel_file_name, Aspect, FileFormat, MAX_COMPOSITE_PIXELS, SCALES,
-};
+use samplescope::export::figure::{Aspect, FileFormat, MAX_COMPOSITE_PIXELS, SCALES};
+use samplescope::export::publish::{publish, Format as PublishFormat, Target};
 use samplescope::export::ExportError;
 use samplescope::scene::graph::{NodeKind, NodeResult};
 use samplescope::scene::{figure, panels, Scene};
@@ -71,13 +69,13 @@ pub enum Format {
 }
 
 impl Format {
-    /// The picture format, for all but CSV.
-    fn picture(self) -> Option<FileFormat> {
+    /// The format published.
+    fn publish(self) -> PublishFormat {
         match self {
-            Format::Png => Some(FileFormat::Png),
-            Format::Svg => Some(FileFormat::Svg),
-            Format::Pdf => Some(FileFormat::Pdf),
-            Format::Csv => None,
+            Format::Png => PublishFormat::Picture(FileFormat::Png),
+            Format::Svg => PublishFormat::Picture(FileFormat::Svg),
+            Format::Pdf => PublishFormat::Picture(FileFormat::Pdf),
+            Format::Csv => PublishFormat::Csv,
         }
     }
 }
@@ -96,29 +94,8 @@ fn formats(list: &[Format]) -> Vec<Format> {
 fn export_err(e: ExportError) -> CliError {
     match e {
         ExportError::Io { path, source } => CliError::Io { path, source },
+        ExportError::Cancelled => CliError::Cancelled,
         other => CliError::Usage(other.to_string()),
-    }
-}
-
-/// The files of a render, made before any is written: a failure while making one leaves
-/// none of them.
-#[derive(Default)]
-struct Files(Vec<(PathBuf, Vec<u8>)>);
-
-impl Files {
-    fn add(&mut self, path: PathBuf, bytes: Vec<u8>, cancel: &Cancel) -> Result<(), CliError> {
-        // Between figures: drawing one does not look at the token.
-        cancel.check().map_err(|_| CliError::Cancelled)?;
-        self.0.push((path, bytes));
-        Ok(())
-    }
-
-    fn write(self, cancel: &Cancel) -> Result<(), CliError> {
-        for (path, bytes) in self.0 {
-            write_output(&path, &bytes, cancel)?;
-            outln!("{}", path.display())?;
-        }
-        Ok(())
     }
 }
 
@@ -173,7 +150,7 @@ pub fn run(args: &RenderArgs, session: &Session) -> Result<(), CliError> {
         )));
     }
     let formats = formats(&args.format);
-    if formats.iter().all(|f| f.picture().is_none()) {
+    if formats.iter().all(|f| *f == Format::Csv) {
         // CSV only: nothing is drawn, so the drawing's size and shape have no effect.
         let given = [
             args.scale.map(|s| format!("--scale {s}")),
@@ -233,6 +210,8 @@ pub fn run(args: &RenderArgs, session: &Session) -> Result<(), CliError> {
 
     let columns = figure::figure_columns(&scene, &results, &stem)
         .map_err(|e| CliError::Usage(e.to_string()))?;
+    let count = columns.len();
+    let publication = figure::publication(&scene, columns, &stem);
 
     if panels::available(&scene).is_empty() {
         eprintln!(
@@ -240,55 +219,24 @@ pub fn run(args: &RenderArgs, session: &Session) -> Result<(), CliError> {
              plate, filter, cost view with convergence, sampling theorem); nothing written"
         );
     }
-    let composite = panels::comparison(&scene);
-    let s = scale;
-    let mut files = Files::default();
-    for (c, (ctx, data)) in columns.iter().enumerate() {
-        for kind in panels::available_in(&scene, c) {
-            for &f in &formats {
-                let (name, bytes) = match f.picture() {
-                    Some(p) => (
-                        panel_file_name(kind, ctx, Some(s), p.ext()),
-                        panel_file(kind, ctx, data, s, p).map_err(export_err)?,
-                    ),
-                    None => (
-                        panel_file_name(kind, ctx, None, "csv"),
-                        panel_csv(kind, ctx, data).map_err(export_err)?.into_bytes(),
-                    ),
-                };
-                files.add(args.out.join(name), bytes, cancel)?;
-            }
-        }
-        let own = panels::composite_in(&scene, c);
-        if own.is_empty() {
-            continue;
-        }
-        for p in formats.iter().filter_map(|f| f.picture()) {
-            let bytes = column_file(&own, ctx, data, s, aspect, p).map_err(export_err)?;
-            files.add(args.out.join(column_file_name(ctx, s, p)), bytes, cancel)?;
-        }
-    }
-    let pictures: Vec<FileFormat> = formats.iter().filter_map(|f| f.picture()).collect();
-    let (cw, ch) = comparison_size(&composite, &columns, s, aspect);
-    if !composite.is_empty() && !pictures.is_empty() && cw * ch > MAX_COMPOSITE_PIXELS {
+    let formats: Vec<PublishFormat> = formats.iter().map(|f| f.publish()).collect();
+    let made =
+        publish(&publication, Target::All, &formats, scale, aspect, cancel).map_err(export_err)?;
+    if let Some((cw, ch)) = made.comparison_too_large {
         eprintln!(
-            "warning: comparison skipped: {} columns at --scale {s} would be {cw}×{ch} pixels, \
-             more than {MAX_COMPOSITE_PIXELS}; use a smaller --scale",
-            columns.len()
+            "warning: comparison skipped: {count} columns at --scale {scale} would be {cw}×{ch} \
+             pixels, more than {MAX_COMPOSITE_PIXELS}; use a smaller --scale"
         );
-    } else if !composite.is_empty() {
-        let name = columns
-            .first()
-            .map_or(stem.as_str(), |(c, _)| c.scene_name.as_str());
-        for p in pictures {
-            let bytes = comparison_file(&composite, &columns, s, aspect, p).map_err(export_err)?;
-            let file = comparison_file_name(name, scene.n, s, p);
-            files.add(args.out.join(file), bytes, cancel)?;
-        }
     }
     std::fs::create_dir_all(&args.out).map_err(|source_err| CliError::Io {
         path: args.out.display().to_string(),
         source: source_err,
     })?;
-    files.write(cancel)
+    // Every file was made before any is written: a failure while making one leaves none.
+    for (name, bytes) in made.files {
+        let path = args.out.join(name);
+        write_output(&path, &bytes, cancel)?;
+        outln!("{}", path.display())?;
+    }
+    Ok(())
 }

@@ -4,6 +4,7 @@
 
 pub mod encode;
 pub mod figure;
+pub mod publish;
 
 /// Why a figure could not be written.
 #[derive(Debug, thiserror::Error)]
@@ -41,6 +42,15 @@ pub enum ExportError {
         figure: &'static str,
         message: String,
     },
+    /// CSV asked for a composite, which is a picture.
+    #[error("the {what} is a picture: CSV is written per figure")]
+    NotAPicture { what: &'static str },
+    /// One picture asked for several files' worth of figures.
+    #[error("everything is many pictures, not one: pick a figure, a column or the comparison")]
+    NotOnePicture,
+    /// The work was cancelled.
+    #[error("cancelled")]
+    Cancelled,
     /// A composite would exceed the pixel limit.
     #[error("composite of {width}×{height} pixels exceeds {max_pixels} pixels: use a smaller scale or fewer columns")]
     TooLarge {

@@ -1,6 +1,7 @@
 //! The plain data that views draw: images, point sets, spectra, curves, the per-node data
 //! structs the compute graph fills, the identities of the figures ([`FigureKind`]), a column's
 //! data as the figures read it ([`ColumnData`]), the plain figure context ([`FigureContext`]),
+//! what one publication of a scene's figures draws ([`Publication`]),
 //! and the shared display vocabulary (the one [`Colormap`] with its CPU colorizer, the
 //! [`palette`], the dB conversion, the elementary-interval grid).
 //!
@@ -19,6 +20,7 @@ mod image;
 mod integration;
 pub mod palette;
 mod points;
+mod publication;
 mod recon;
 mod spectrum;
 
@@ -33,6 +35,7 @@ pub use integration::{
     guide_line, IntegrationCurve, IntegrationData, IntegrationPlot, GUIDE_SLOPES,
 };
 pub use points::{elementary_grid, PointsData, StatsData, MAX_STRATA_LINES, STATS_PSA_MAX_N};
+pub use publication::Publication;
 pub use recon::{ConvergencePoint, ErrorData, ReconData, ReferenceData};
 pub use spectrum::{shared_spectrum_range, SpectrumData, SHARED_DECADES};
 

@@ -1,12 +1,13 @@
 //! From a scene to what its figures say and draw: the [`FigureContext`] of a column (titles,
-//! metadata and file names as plain strings) and a column's [`ColumnData`] (its node results).
-//! Which figures a column has is [`super::panels`]' rule.
+//! metadata and file names as plain strings), a column's [`ColumnData`] (its node results),
+//! and the [`Publication`] of a scene's figures. Which figures a column has is
+//! [`super::panels`]' rule.
 
 use super::graph::{NodeKind, NodeResult};
-use super::{ReconMode, Scene};
+use super::{panels, ReconMode, Scene};
 use crate::core::params::Params;
 use crate::model::{
-    sanitize, Colormap, ColumnData, FigureContext, IntegrationCurve, IntegrationPlot,
+    sanitize, Colormap, ColumnData, FigureContext, IntegrationCurve, IntegrationPlot, Publication,
 };
 use std::collections::HashMap;
 use std::sync::Arc;
@@ -150,6 +151,29 @@ pub fn figure_columns<R: AsRef<NodeResult>>(
         }
     }
     Ok(columns)
+}
+
+/// What a publication of `scene`'s figures draws ([`Publication`]): `columns` (every column's
+/// context and data, in order; [`figure_columns`] or the GUI's own), the figures each column
+/// lists, each column's composite and the comparison ([`super::panels`]' rule). The
+/// comparison's file name takes the scene name of column 0's context (`scene_name` when the
+/// scene has no column).
+pub fn publication(
+    scene: &Scene,
+    columns: Vec<(FigureContext, ColumnData)>,
+    scene_name: &str,
+) -> Publication {
+    let count = scene.columns.len();
+    Publication {
+        name: columns
+            .first()
+            .map_or_else(|| scene_name.to_string(), |(c, _)| c.scene_name.clone()),
+        n: scene.n,
+        figures: (0..count).map(|c| panels::available_in(scene, c)).collect(),
+        composites: (0..count).map(|c| panels::composite_in(scene, c)).collect(),
+        comparison: panels::comparison(scene),
+        columns,
+    }
 }
 
 /// Unique file-name parts for the columns of a scene.

@@ -8,7 +8,8 @@
 //! written, or the error, in the top bar.
 
 use crate::export::figure::{self, FileFormat};
-use crate::model::{Colormap, ColumnData, FigureContext, FigureKind};
+use crate::export::publish::{self, Format};
+use crate::model::{Colormap, ColumnData, FigureContext, FigureKind, Publication};
 use crate::scene::{self, Scene};
 use eframe::egui;
 use std::path::{Path, PathBuf};
@@ -17,16 +18,9 @@ use std::sync::mpsc::{channel, Receiver, Sender};
 /// The frame the GUI's composites are laid out to fill: a 16:9 slide.
 const SLIDE: figure::Aspect = figure::Aspect::SLIDE;
 
-/// What a figure request covers.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Target {
-    /// One figure of one column.
-    Panel { column: usize, kind: FigureKind },
-    /// A column's visible panels side by side.
-    Column { column: usize },
-    /// Every column, one row each.
-    Comparison,
-}
+/// What a figure request covers: a panel's figure, a column or the comparison (the GUI never
+/// asks for [`Target::All`]).
+pub use crate::export::publish::Target;
 
 /// What to produce.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -237,6 +231,28 @@ impl Snapshot {
             .ok_or_else(|| format!("column {} has no results yet", column + 1))
     }
 
+    /// What `target` draws: every column's context and data (the columns `target` covers
+    /// must have results).
+    fn publication(&self, target: Target) -> Result<Publication, String> {
+        let covered = match target {
+            Target::Panel { column, .. } | Target::Column { column } => column..column + 1,
+            Target::Comparison | Target::All => 0..self.scene.columns.len(),
+        };
+        for c in covered {
+            self.data(c)?;
+        }
+        let mut columns = Vec::with_capacity(self.scene.columns.len());
+        for c in 0..self.scene.columns.len() {
+            let data = self.columns.get(c).cloned().unwrap_or_default();
+            columns.push((self.context(c)?, data));
+        }
+        Ok(scene::figure::publication(
+            &self.scene,
+            columns,
+            &self.scene_name,
+        ))
+    }
+
     /// Renders `req` and writes it into `dir` (or returns the clipboard image).
     pub fn run(&self, req: Request, dir: &Path) -> Done {
         match self.try_run(req, dir) {
@@ -246,109 +262,37 @@ impl Snapshot {
     }
 
     fn try_run(&self, req: Request, dir: &Path) -> Result<Done, String> {
-        // (file name, bytes) or clipboard image.
-        enum Made {
-            File(String, Vec<u8>),
-            Image(u32, u32, Vec<u8>, String),
-        }
+        let p = self.publication(req.target)?;
         let err = |e: crate::export::ExportError| e.to_string();
-        let picture = |o: Output| match o {
-            Output::Png { scale } => Some((FileFormat::Png, scale)),
-            Output::Svg { scale } => Some((FileFormat::Svg, scale)),
-            Output::Pdf { scale } => Some((FileFormat::Pdf, scale)),
-            Output::Csv | Output::Clipboard { .. } => None,
-        };
-        let made = match (req.target, req.output) {
-            (Target::Panel { column, kind }, out) => {
-                let ctx = self.context(column)?;
-                let data = self.data(column)?;
-                if !figure::figure(kind).has_data(data) {
-                    return Err(format!(
-                        "{}: no data yet for column {}",
-                        kind.name(),
-                        column + 1
-                    ));
-                }
-                match (out, picture(out)) {
-                    (_, Some((format, scale))) => Made::File(
-                        figure::panel_file_name(kind, &ctx, Some(scale), format.ext()),
-                        figure::panel_file(kind, &ctx, data, scale, format).map_err(err)?,
-                    ),
-                    (Output::Clipboard { scale }, _) => {
-                        let (w, h, rgba) =
-                            figure::panel_rgba(kind, &ctx, data, scale).map_err(err)?;
-                        Made::Image(w, h, rgba, figure::panel_file_name(kind, &ctx, None, ""))
-                    }
-                    _ => Made::File(
-                        figure::panel_file_name(kind, &ctx, None, "csv"),
-                        figure::panel_csv(kind, &ctx, data)
-                            .map_err(err)?
-                            .into_bytes(),
-                    ),
-                }
-            }
-            (Target::Column { column }, out) => {
-                let kinds = scene::panels::composite_in(&self.scene, column);
-                let ctx = self.context(column)?;
-                let data = self.data(column)?;
-                match (out, picture(out)) {
-                    (_, Some((format, scale))) => Made::File(
-                        figure::column_file_name(&ctx, scale, format),
-                        figure::column_file(&kinds, &ctx, data, scale, SLIDE, format)
-                            .map_err(err)?,
-                    ),
-                    (Output::Clipboard { scale }, _) => {
-                        let (w, h, rgba) =
-                            figure::column_rgba(&kinds, &ctx, data, scale, SLIDE).map_err(err)?;
-                        Made::Image(
-                            w,
-                            h,
-                            rgba,
-                            figure::column_file_name(&ctx, scale, FileFormat::Png),
-                        )
-                    }
-                    _ => return Err("CSV is written per panel".into()),
-                }
-            }
-            (Target::Comparison, out) => {
-                let kinds = scene::panels::comparison(&self.scene);
-                let mut cols = Vec::with_capacity(self.scene.columns.len());
-                for c in 0..self.scene.columns.len() {
-                    cols.push((self.context(c)?, self.data(c)?.clone()));
-                }
-                let name =
-                    |s, f| figure::comparison_file_name(&self.scene_name, self.scene.n, s, f);
-                match (out, picture(out)) {
-                    (_, Some((format, scale))) => Made::File(
-                        name(scale, format),
-                        figure::comparison_file(&kinds, &cols, scale, SLIDE, format)
-                            .map_err(err)?,
-                    ),
-                    (Output::Clipboard { scale }, _) => {
-                        let (w, h, rgba) =
-                            figure::comparison_rgba(&kinds, &cols, scale, SLIDE).map_err(err)?;
-                        Made::Image(w, h, rgba, name(scale, FileFormat::Png))
-                    }
-                    _ => return Err("CSV is written per panel".into()),
-                }
+        let (format, scale) = match req.output {
+            Output::Png { scale } => (Format::Picture(FileFormat::Png), scale),
+            Output::Svg { scale } => (Format::Picture(FileFormat::Svg), scale),
+            Output::Pdf { scale } => (Format::Picture(FileFormat::Pdf), scale),
+            Output::Csv => (Format::Csv, 1),
+            Output::Clipboard { scale } => {
+                let (w, h, rgba, what) =
+                    publish::picture(&p, req.target, scale, SLIDE).map_err(err)?;
+                return Ok(Done::Clipboard(
+                    egui::ColorImage::from_rgba_unmultiplied([w as usize, h as usize], &rgba),
+                    what,
+                ));
             }
         };
-        match made {
-            Made::File(name, bytes) => {
-                std::fs::create_dir_all(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
-                let path = dir.join(&name);
-                // Written beside it and renamed (links followed): a failed write leaves no
-                // partial figure.
-                let never = crate::core::cancel::Cancel::never();
-                crate::core::output::write_atomic(&path, &bytes, &never)
-                    .map_err(|e| e.to_string())?;
-                Ok(Done::Written(path))
-            }
-            Made::Image(w, h, rgba, what) => Ok(Done::Clipboard(
-                egui::ColorImage::from_rgba_unmultiplied([w as usize, h as usize], &rgba),
-                what,
-            )),
+        let never = crate::core::cancel::Cancel::never();
+        let made =
+            publish::publish(&p, req.target, &[format], scale, SLIDE, &never).map_err(err)?;
+        std::fs::create_dir_all(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
+        let mut written = None;
+        for (name, bytes) in made.files {
+            let path = dir.join(name);
+            // Written beside it and renamed (links followed): a failed write leaves no
+            // partial figure.
+            crate::core::output::write_atomic(&path, &bytes, &never).map_err(|e| e.to_string())?;
+            written = Some(path);
         }
+        written
+            .map(Done::Written)
+            .ok_or_else(|| "nothing to save".to_string())
     }
 }
 

@@ -1147,3 +1147,78 @@ fn sphere_figure_draws_discs_in_both_views_and_repeats_byte_for_byte() {
     let (info, _, _) = decode(&panel_png(FigureKind::Sphere, &ctx, &data, 2).unwrap());
     assert_eq!(info.width, 2 * base_size(FigureKind::Sphere).0);
 }
+
+/// The one publishing path: everything `render` writes (`Target::All`) is exactly the files of
+/// each column's figures, each column's composite and the comparison published one target at
+/// a time, as the GUI's Save menus ask for them; bytes included.
+#[test]
+fn publishing_everything_is_publishing_each_target() {
+    use samplescope::export::figure::FileFormat;
+    use samplescope::export::publish::{publish, Format, Target};
+    let scene = quick_scene();
+    let p = scene_figure::publication(&scene, columns(&scene), "figure-test");
+    let never = Cancel::never();
+    let formats = [Format::Picture(FileFormat::Png), Format::Csv];
+    let all = publish(&p, Target::All, &formats, 1, Aspect::SLIDE, &never).unwrap();
+    assert!(all.comparison_too_large.is_none());
+    let mut each = Vec::new();
+    for c in 0..scene.columns.len() {
+        assert_eq!(p.figures[c], panels::available_in(&scene, c));
+        for &kind in &p.figures[c] {
+            let t = Target::Panel { column: c, kind };
+            each.extend(
+                publish(&p, t, &formats, 1, Aspect::SLIDE, &never)
+                    .unwrap()
+                    .files,
+            );
+        }
+        let t = Target::Column { column: c };
+        each.extend(
+            publish(&p, t, &formats, 1, Aspect::SLIDE, &never)
+                .unwrap()
+                .files,
+        );
+    }
+    let t = Target::Comparison;
+    each.extend(
+        publish(&p, t, &formats, 1, Aspect::SLIDE, &never)
+            .unwrap()
+            .files,
+    );
+    let names = |f: &[(String, Vec<u8>)]| f.iter().map(|(n, _)| n.clone()).collect::<Vec<_>>();
+    assert_eq!(names(&all.files), names(&each));
+    assert!(all.files == each, "same bytes");
+    // A composite is a picture: CSV alone is refused, naming it; so is a column not there.
+    let csv = publish(
+        &p,
+        Target::Column { column: 0 },
+        &[Format::Csv],
+        1,
+        Aspect::SLIDE,
+        &never,
+    );
+    assert!(matches!(
+        csv,
+        Err(ExportError::NotAPicture { what: "column" })
+    ));
+    let far = publish(
+        &p,
+        Target::Column { column: 9 },
+        &formats,
+        1,
+        Aspect::SLIDE,
+        &never,
+    );
+    assert!(matches!(
+        far,
+        Err(ExportError::OutOfRange {
+            field: "column",
+            ..
+        })
+    ));
+    // A cancelled publication stops between files.
+    let cancel = Cancel::new();
+    cancel.cancel();
+    let stopped = publish(&p, Target::All, &formats, 1, Aspect::SLIDE, &cancel);
+    assert!(matches!(stopped, Err(ExportError::Cancelled)));
+}
