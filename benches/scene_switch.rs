@@ -37,7 +37,9 @@ fn switch(scene: &Scene) -> (Duration, Duration) {
     let mut want: HashSet<(usize, NodeKind)> = HashSet::new();
     for (c, p) in graph::plan(scene).iter().enumerate() {
         for n in &p.nodes {
-            if (n.kind.def().shown)(scene, c) && PANEL_NODES.contains(&n.kind) {
+            if samplescope::scene::panels::asks_for(scene, c, n.kind)
+                && PANEL_NODES.contains(&n.kind)
+            {
                 want.insert((c, n.kind));
             }
         }

@@ -103,6 +103,7 @@ fn export_err(e: ExportError) -> CliError {
 /// column is an error naming the column and the node.
 fn evaluate(
     scene: &Scene,
+    plan: Arc<samplescope::scene::graph::Plan>,
     source: &str,
     no_cache: bool,
     cancel: &Cancel,
@@ -115,7 +116,7 @@ fn evaluate(
         samplescope::engine::default_disk_cache()
     };
     let eval = Evaluator::new(samplescope::engine::cache::DEFAULT_BUDGET, disk);
-    eval.evaluate(scene, cancel, &mut |c, kind, r| {
+    eval.evaluate_planned(scene, plan, cancel, &mut |c, kind, r| {
         if let Some(col) = results.get_mut(c) {
             col.insert(kind, r);
         }
@@ -194,8 +195,10 @@ pub fn run(args: &RenderArgs, session: &Session) -> Result<(), CliError> {
         .file_stem()
         .map(|s| s.to_string_lossy().into_owned())
         .unwrap_or_default();
-    // The scene's nodes are estimated and checked before any is evaluated.
-    let plan = samplescope::scene::cost::estimate(&scene);
+    // The scene is planned once: its nodes are estimated and checked before any is evaluated,
+    // and the engine runs that plan.
+    let planned = Arc::new(samplescope::scene::graph::plan(&scene));
+    let plan = samplescope::scene::cost::estimate_plan(&scene, &planned);
     let Some(progress) = session.admit(plan).map_err(|e| match e {
         CliError::Budget(m) => CliError::Budget(format!("{source}: {m}")),
         other => other,
@@ -205,7 +208,7 @@ pub fn run(args: &RenderArgs, session: &Session) -> Result<(), CliError> {
     };
     progress.stage(0);
     let cancel = &session.cancel;
-    let results = evaluate(&scene, &source, args.no_cache, cancel)?;
+    let results = evaluate(&scene, planned, &source, args.no_cache, cancel)?;
     drop(progress);
 
     let columns = figure::figure_columns(&scene, &results, &stem)

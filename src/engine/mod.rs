@@ -1,7 +1,8 @@
 //! Evaluating scenes: parallel, per-node cancellation, progressive results, bounded caches.
 //!
-//! The UI submits the whole scene after every change ([`Engine::submit`]). The engine's
-//! coordinator thread plans it (the node table of [`crate::scene::graph`]), starts every node
+//! The UI submits the whole scene after every change with its plan (the node table of
+//! [`crate::scene::graph`]; [`Engine::submit_planned`]: planned once, for the cost check and
+//! the engine; [`Engine::submit`] plans it itself). The engine's coordinator starts every node
 //! whose inputs are ready as a job on rayon's pool (independent nodes run concurrently),
 //! and sends each result back as soon as it is ready, calling `repaint` so the UI wakes up.
 //! See [`scheduler`] for the invariants: a new scene cancels only the running jobs whose keys
@@ -25,7 +26,7 @@ pub mod disk_cache;
 pub mod scheduler;
 
 use crate::core::cancel::Cancel;
-use crate::scene::graph::{NodeKey, NodeKind, NodeResult};
+use crate::scene::graph::{self, NodeKey, NodeKind, NodeResult, Plan};
 use crate::scene::Scene;
 use scheduler::{Event, Scheduler, Shared, Sink};
 pub use scheduler::{Progress, Update};
@@ -137,6 +138,18 @@ impl Evaluator {
         cancel: &Cancel,
         sink: &mut dyn FnMut(usize, NodeKind, Arc<NodeResult>),
     ) {
+        self.evaluate_planned(scene, Arc::new(graph::plan(scene)), cancel, sink);
+    }
+
+    /// [`Self::evaluate`] with the scene's plan made by the caller (`graph::plan(scene)`,
+    /// whose cost it has estimated): the scene is not planned again.
+    pub fn evaluate_planned(
+        &self,
+        scene: &Scene,
+        plan: Arc<Plan>,
+        cancel: &Cancel,
+        sink: &mut dyn FnMut(usize, NodeKind, Arc<NodeResult>),
+    ) {
         if cancel.is_cancelled() {
             return;
         }
@@ -156,6 +169,7 @@ impl Evaluator {
             Event::Submit {
                 generation: 1,
                 scene: Arc::new(scene.clone()),
+                plan,
             },
             &mut sink,
         );
@@ -341,6 +355,12 @@ impl Engine {
     /// Submits a scene. Nodes of the previous scene whose keys are not in this one are
     /// cancelled; the others keep running. Returns the new generation.
     pub fn submit(&mut self, scene: &Scene) -> u64 {
+        self.submit_planned(scene, Arc::new(graph::plan(scene)))
+    }
+
+    /// [`Self::submit`] with the scene's plan made by the caller (`graph::plan(scene)`, whose
+    /// cost the app has checked): the coordinator does not plan it again.
+    pub fn submit_planned(&mut self, scene: &Scene, plan: Arc<Plan>) -> u64 {
         self.generation += 1;
         self.submitted_at = Some(Instant::now());
         if self
@@ -348,6 +368,7 @@ impl Engine {
             .send(Event::Submit {
                 generation: self.generation,
                 scene: Arc::new(scene.clone()),
+                plan,
             })
             .is_err()
         {

@@ -18,7 +18,7 @@
 use super::cache::MemoryCache;
 use super::disk_cache::DiskCache;
 use crate::core::cancel::Cancel;
-use crate::scene::graph::{self, NodeKey, NodeKind, NodeResult};
+use crate::scene::graph::{NodeKey, NodeKind, NodeResult, Plan};
 use crate::scene::node::{JobCtx, NodeError, Partial};
 use crate::scene::Scene;
 use std::collections::HashMap;
@@ -54,6 +54,8 @@ pub(crate) enum Event {
     Submit {
         generation: u64,
         scene: Arc<Scene>,
+        /// The scene's plan, made once by whoever submits (who also estimated its cost).
+        plan: Arc<Plan>,
     },
     Progress {
         key: NodeKey,
@@ -158,7 +160,11 @@ impl Scheduler {
     /// Handles one event; returns `false` on shutdown.
     pub fn handle(&mut self, event: Event, sink: &mut dyn Sink) -> bool {
         match event {
-            Event::Submit { generation, scene } => self.submit(generation, scene, sink),
+            Event::Submit {
+                generation,
+                scene,
+                plan,
+            } => self.submit(generation, scene, &plan, sink),
             Event::Progress { key, partial, wall } => self.progress(key, partial, wall, sink),
             Event::Done { job, key, result } => self.done(job, key, result, sink),
             Event::Shutdown => {
@@ -170,30 +176,29 @@ impl Scheduler {
         true
     }
 
-    fn submit(&mut self, generation: u64, scene: Arc<Scene>, sink: &mut dyn Sink) {
-        let plans = graph::plan(&scene);
+    fn submit(&mut self, generation: u64, scene: Arc<Scene>, plan: &Plan, sink: &mut dyn Sink) {
         let mut nodes: Vec<Planned> = Vec::new();
         let mut index = HashMap::new();
         let mut errors = Vec::new();
-        for (c, plan) in plans.into_iter().enumerate() {
-            for n in plan.nodes {
-                match n.key {
-                    Ok(key) => match index.get(&key) {
+        for (c, column) in plan.iter().enumerate() {
+            for n in &column.nodes {
+                match &n.key {
+                    Ok(key) => match index.get(key) {
                         Some(&i) => {
                             let p: &mut Planned = &mut nodes[i];
                             p.columns.push(c);
                         }
                         None => {
-                            index.insert(key, nodes.len());
+                            index.insert(*key, nodes.len());
                             nodes.push(Planned {
-                                key,
+                                key: *key,
                                 kind: n.kind,
                                 columns: vec![c],
-                                deps: n.deps,
+                                deps: n.deps.clone(),
                             });
                         }
                     },
-                    Err(e) => errors.push((c, n.kind, NodeError::Key(e))),
+                    Err(e) => errors.push((c, n.kind, NodeError::Key(e.clone()))),
                 }
             }
         }

@@ -45,7 +45,7 @@ pub struct FigureContext {
     /// power of two; k above m is taken as m).
     pub elementary_k: Option<u32>,
     /// Draw the pattern's strata, (columns, rows), under its points (the column's `strata`,
-    /// or the GUI's overlay).
+    /// or the GUI's overlay; `scene::figure::strata` is the one rule, shared with the panel).
     pub strata: Option<(usize, usize)>,
 }
 

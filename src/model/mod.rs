@@ -34,7 +34,9 @@ pub use image::{next_version, ImageData};
 pub use integration::{
     guide_line, IntegrationCurve, IntegrationData, IntegrationPlot, GUIDE_SLOPES,
 };
-pub use points::{elementary_grid, PointsData, StatsData, MAX_STRATA_LINES, STATS_PSA_MAX_N};
+pub use points::{
+    drawn_strata, elementary_grid, PointsData, StatsData, MAX_STRATA_LINES, STATS_PSA_MAX_N,
+};
 pub use publication::Publication;
 pub use recon::{ConvergencePoint, ErrorData, ReconData, ReferenceData};
 pub use spectrum::{shared_spectrum_range, SpectrumData, SHARED_DECADES};

@@ -35,6 +35,13 @@ pub const STATS_PSA_MAX_N: usize = 8192;
 /// Most strata per axis a pattern panel or figure draws (beyond, the lines merge into grey).
 pub const MAX_STRATA_LINES: usize = 256;
 
+/// The strata grid (columns, rows) a pattern panel or figure draws for a pattern whose strata
+/// are `strata`: all of them, or none when either axis has more than [`MAX_STRATA_LINES`]
+/// (a coarser grid would not be the pattern's strata).
+pub fn drawn_strata(strata: Option<(usize, usize)>) -> Option<(usize, usize)> {
+    strata.filter(|&(c, r)| c <= MAX_STRATA_LINES && r <= MAX_STRATA_LINES)
+}
+
 /// The elementary-interval grid (columns, rows) = (2^k, 2^(m−k)) drawn under `n` = 2^m
 /// points for `k` (k above m taken as m); `None` without a k or when `n` is not a power of
 /// two. The pattern panel's overlay and the pattern figure both draw this grid.

@@ -1,23 +1,30 @@
 //! The estimated cost of a scene: what its shown nodes compute, before any of it runs.
 //!
 //! [`estimate`] walks the scene's plan ([`graph::plan`]: the nodes its visible panels and
-//! effects need, with their inputs) and gives one [`Estimate`] per node that will be
+//! effects need, with their inputs; [`estimate_plan`] takes a plan already made, the one the
+//! engine is then given) and gives one [`Estimate`] per node that will be
 //! evaluated, in plan order; nodes with the same key in several columns are one job and are
 //! counted once, and nodes without a key (they report an error instead of running) not at
 //! all. [`check`] refuses a scene beyond a [`Budget`]; `samplescope render` calls it before
 //! evaluating, and the GUI can call it before submitting a scene.
 
 use super::compute::{CONVERGENCE_SIZE, CONVERGENCE_SPP, PREVIEW_DIVISOR, PREVIEW_SAMPLES};
-use super::graph::{self, NodeKind};
+use super::graph::{self, NodeKind, Plan};
 use super::{ReconMode, Scene};
 use crate::core::budget::{self, Budget, Estimate, OverBudget};
 use std::collections::HashSet;
 
 /// The estimates of every node the scene will evaluate (see the module docs).
 pub fn estimate(scene: &Scene) -> Vec<Estimate> {
+    estimate_plan(scene, &graph::plan(scene))
+}
+
+/// [`estimate`] of the scene's plan `plan` (`graph::plan(scene)`, made once by the caller, who
+/// hands the same plan to the engine).
+pub fn estimate_plan(scene: &Scene, plan: &Plan) -> Vec<Estimate> {
     let mut seen = HashSet::new();
     let mut out = Vec::new();
-    for (c, plan) in graph::plan(scene).iter().enumerate() {
+    for (c, plan) in plan.iter().enumerate() {
         for node in &plan.nodes {
             let Ok(key) = node.key else { continue };
             if seen.insert(key) {
@@ -31,7 +38,12 @@ pub fn estimate(scene: &Scene) -> Vec<Estimate> {
 /// Refuses the scene when [`estimate`] is beyond `budget` (the error names the costliest node
 /// and the limit).
 pub fn check(scene: &Scene, budget: &Budget) -> Result<(), OverBudget> {
-    budget.check(&estimate(scene))
+    check_plan(scene, &graph::plan(scene), budget)
+}
+
+/// [`check`] of the scene's plan `plan`, made once by the caller.
+pub fn check_plan(scene: &Scene, plan: &Plan, budget: &Budget) -> Result<(), OverBudget> {
+    budget.check(&estimate_plan(scene, plan))
 }
 
 /// What node `kind` of column `c` computes (as the jobs of `compute` do).

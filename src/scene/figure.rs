@@ -73,12 +73,20 @@ pub fn context(
         spectrum_colormap: Colormap::Viridis,
         response_db: false,
         elementary_k: col.elementary_k,
-        strata: if col.strata && col.points.is_none() {
-            col.pattern.strata(scene.n)
-        } else {
-            None
-        },
+        strata: strata(scene, column, false),
     })
+}
+
+/// The strata drawn under column `column`'s points, in its figures and on its pattern panel:
+/// when the column's `strata` or the GUI's `overlay` is on, the pattern's strata for N (none
+/// for imported points, none beyond [`crate::model::MAX_STRATA_LINES`] per axis).
+pub fn strata(scene: &Scene, column: usize, overlay: bool) -> Option<(usize, usize)> {
+    let col = scene.columns.get(column)?;
+    if (col.strata || overlay) && col.points.is_none() {
+        crate::model::drawn_strata(col.pattern.strata(scene.n))
+    } else {
+        None
+    }
 }
 
 /// Picks the successful node values out of a column's results (the GUI's `ColumnResults`,

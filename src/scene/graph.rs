@@ -9,12 +9,13 @@
 //! Integration(pattern, seed, integration settings)
 //! ```
 //!
-//! Every node kind has **one entry** in [`NODES`]: whether a visible panel or an effect asks
-//! for it ([`NodeDef::shown`]), which other nodes and which scene fields it reads
-//! ([`NodeDef::inputs`]), and the job that computes it ([`NodeDef::run`]). [`plan`] derives
-//! from the table, per column, the nodes to compute (the shown ones plus their inputs,
-//! transitively), in dependency order, with their keys; the job of a node gets exactly the
-//! results of the inputs it declared. Adding a node is one table entry and one job function.
+//! Every node kind has **one entry** in [`NODES`]: which other nodes and which scene fields it
+//! reads ([`NodeDef::inputs`]), and the job that computes it ([`NodeDef::run`]); which panels
+//! ask for it, and under which effects, is their row of the panel table
+//! ([`panels::PANELS`], asked through [`panels::asks_for`]). [`plan`] derives, per column, the
+//! nodes to compute (those a shown panel asks for plus their inputs, transitively), in
+//! dependency order, with their keys; the job of a node gets exactly the results of the inputs
+//! it declared. Adding a node is one table entry and one job function.
 //!
 //! **Keys.** A node's key is the BLAKE3 hash of its kind, its algorithm's version
 //! ([`NodeDef::version`]), the RON text of the scene fields it reads (every field and float bit; streamed into the hasher, never shared by default) and
@@ -26,7 +27,6 @@
 use super::compute;
 use super::node::Output;
 use super::{panels, ReconMode, Scene};
-use crate::model::FigureKind;
 use serde::Serialize;
 
 pub use super::node::{
@@ -119,10 +119,6 @@ impl NodeKind {
 /// One row of the node table.
 pub struct NodeDef {
     pub kind: NodeKind,
-    /// Whether a visible panel or an effect that is on asks for this node in column `c`
-    /// (the rule of [`panels::shows`]; nodes that only feed others say `false`; [`plan`]
-    /// adds inputs itself).
-    pub shown: fn(&Scene, usize) -> bool,
     /// The input nodes and scene fields of this node in column `c` of the scene.
     pub inputs: fn(&Scene, usize) -> Inputs,
     /// The job: computes the value from the scene, the column and the declared inputs.
@@ -139,9 +135,6 @@ pub struct NodeDef {
 pub static NODES: [NodeDef; 11] = [
     NodeDef {
         kind: NodeKind::Points,
-        shown: |s, c| {
-            panels::shows(s, c, FigureKind::Pattern) || panels::shows(s, c, FigureKind::Sphere)
-        },
         inputs: |s, c| {
             let col = &s.columns[c];
             match &col.points {
@@ -156,7 +149,6 @@ pub static NODES: [NodeDef; 11] = [
     },
     NodeDef {
         kind: NodeKind::Statistics,
-        shown: |s, c| panels::shows(s, c, FigureKind::Pattern) && s.effects.statistics,
         inputs: |_, _| Inputs::new(NodeKind::Statistics, &[NodeKind::Points], ()),
         run: compute::statistics,
         disk_cached: false,
@@ -164,7 +156,6 @@ pub static NODES: [NodeDef; 11] = [
     },
     NodeDef {
         kind: NodeKind::Spectrum,
-        shown: |s, c| panels::shows(s, c, FigureKind::Spectrum),
         // Realization 0 is the points node's set; realizations r > 0 are generated from the
         // pattern (an imported file has one realization: K does not matter, see `import`).
         inputs: |s, c| {
@@ -189,7 +180,6 @@ pub static NODES: [NodeDef; 11] = [
     },
     NodeDef {
         kind: NodeKind::Samples,
-        shown: |_, _| false,
         inputs: |s, _| Inputs::new(NodeKind::Samples, &[NodeKind::Points], s.signal),
         run: compute::samples,
         disk_cached: false,
@@ -197,7 +187,6 @@ pub static NODES: [NodeDef; 11] = [
     },
     NodeDef {
         kind: NodeKind::Reconstruction,
-        shown: |s, c| panels::shows(s, c, FigureKind::Reconstruction),
         inputs: |s, c| {
             let col = &s.columns[c];
             let (f, w) = (&s.filter, s.recon.size);
@@ -223,7 +212,6 @@ pub static NODES: [NodeDef; 11] = [
     },
     NodeDef {
         kind: NodeKind::Reference,
-        shown: |s, c| panels::shows(s, c, FigureKind::Reference),
         inputs: |s, _| Inputs::new(NodeKind::Reference, &[], (&s.signal, s.recon.size)),
         run: compute::reference,
         disk_cached: true,
@@ -232,7 +220,6 @@ pub static NODES: [NodeDef; 11] = [
     },
     NodeDef {
         kind: NodeKind::Error,
-        shown: |s, c| panels::shows(s, c, FigureKind::Error),
         inputs: |_, _| {
             Inputs::new(
                 NodeKind::Error,
@@ -247,7 +234,6 @@ pub static NODES: [NodeDef; 11] = [
     },
     NodeDef {
         kind: NodeKind::Response,
-        shown: |s, c| panels::shows(s, c, FigureKind::Response),
         inputs: |s, _| Inputs::new(NodeKind::Response, &[], s.filter),
         run: compute::response,
         disk_cached: false,
@@ -255,7 +241,6 @@ pub static NODES: [NodeDef; 11] = [
     },
     NodeDef {
         kind: NodeKind::Convergence,
-        shown: |s, c| panels::shows(s, c, FigureKind::Convergence),
         inputs: |s, c| {
             let col = &s.columns[c];
             Inputs::new(
@@ -270,8 +255,8 @@ pub static NODES: [NodeDef; 11] = [
     },
     NodeDef {
         kind: NodeKind::Theorem,
-        // Column-independent: keyed by its settings alone, listed for column 0 only.
-        shown: |s, c| panels::shows(s, c, FigureKind::TheoremSignal),
+        // Column-independent: keyed by its settings alone (the theorem panel asks for it in
+        // column 0 only).
         inputs: |s, _| Inputs::new(NodeKind::Theorem, &[], s.theorem),
         run: compute::theorem,
         disk_cached: false,
@@ -280,7 +265,6 @@ pub static NODES: [NodeDef; 11] = [
     NodeDef {
         kind: NodeKind::Integration,
         // Every column's curve goes on the one plot (whose figure belongs to column 0).
-        shown: |s, _| panels::shows_integration(s),
         inputs: |s, c| {
             let col = &s.columns[c];
             match &col.points {
@@ -334,7 +318,7 @@ pub fn column_plan(scene: &Scene, c: usize) -> ColumnPlan {
     let mut wanted = [false; NodeKind::ALL.len()];
     for d in NODES.iter().rev() {
         let i = d.kind as usize;
-        if (d.shown)(scene, c) || wanted[i] {
+        if panels::asks_for(scene, c, d.kind) || wanted[i] {
             wanted[i] = true;
             for k in &inputs[i].nodes {
                 debug_assert!((*k as usize) < i, "inputs come first in NodeKind order");
@@ -374,8 +358,13 @@ pub fn column_plan(scene: &Scene, c: usize) -> ColumnPlan {
     ColumnPlan { nodes }
 }
 
+/// A scene's plan: every column's [`ColumnPlan`], in column order. The GUI and `render` make
+/// it once per change and hand it both to the cost estimate (`cost::estimate_plan`) and to the
+/// engine (`Engine::submit_planned`, `Evaluator::evaluate_planned`).
+pub type Plan = Vec<ColumnPlan>;
+
 /// Lists, per column, the nodes that the scene's visible panels and effects need.
-pub fn plan(scene: &Scene) -> Vec<ColumnPlan> {
+pub fn plan(scene: &Scene) -> Plan {
     (0..scene.columns.len())
         .map(|c| column_plan(scene, c))
         .collect()

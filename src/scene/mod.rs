@@ -26,8 +26,9 @@ pub use builtin::BUILTIN;
 pub use error::{Location, SceneError};
 pub use limits::{MAX_COLUMNS, MAX_ELEMENTARY_K, MAX_SCENE_N};
 pub use load::{MAX_SCENE_BYTES, RON_NESTING};
+pub use panels::Panels;
 pub use settings::{
-    Column, Effects, Panels, PixelSampling, ReconMode, ReconSettings, Scene, SpectrumSettings,
+    Column, Effects, PixelSampling, ReconMode, ReconSettings, Scene, SpectrumSettings,
 };
 
 pub use import::ImportedPoints;

@@ -1,6 +1,7 @@
-//! What a scene holds: its columns, shared settings, visible panels and effects (serde types and defaults).
+//! What a scene holds: its columns, shared settings and effects (serde types and defaults);
+//! its visible panels ([`Panels`]) live with the panel table in `panels.rs`.
 
-use super::{ImportedPoints, IntegrationSettings, Motion};
+use super::{ImportedPoints, IntegrationSettings, Motion, Panels};
 use crate::core::filter::Filter2D;
 use crate::core::pattern::Pattern;
 use crate::core::signal::theorem::TheoremSettings;
@@ -177,40 +178,6 @@ impl Default for ReconSettings {
         ReconSettings {
             mode: ReconMode::Scattered,
             size: 512,
-        }
-    }
-}
-
-/// Which panels are visible.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
-#[serde(default, deny_unknown_fields)]
-pub struct Panels {
-    pub pattern: bool,
-    pub spectrum: bool,
-    pub zoneplate: bool,
-    pub filter: bool,
-    /// The cost view (every node's time and error, and the convergence plot).
-    pub cost: bool,
-    /// The 1D sampling-theorem view (signal, replicas, filter, pre-/post-aliasing).
-    pub theorem: bool,
-    /// The integration-error study: MSE of the Monte Carlo estimate against N, every column
-    /// on one log–log plot.
-    pub integration: bool,
-    /// The points wrapped onto the sphere (the lecture's cylinder wrap and radial projection).
-    pub sphere: bool,
-}
-
-impl Default for Panels {
-    fn default() -> Self {
-        Panels {
-            pattern: true,
-            spectrum: true,
-            zoneplate: true,
-            filter: true,
-            cost: false,
-            theorem: false,
-            integration: false,
-            sphere: false,
         }
     }
 }

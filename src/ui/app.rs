@@ -6,9 +6,6 @@ use super::dropped::{self, PointImport};
 use super::figures::{self, FigureRequests};
 use super::gpu;
 use super::lecture;
-use super::panels::cost::CostPanel;
-use super::panels::integration::IntegrationPanel;
-use super::panels::theorem::TheoremPanel;
 use super::panels::{Panel, PanelCx};
 use super::playback::Playback;
 use super::results::{ColumnResults, CompleteResults, Shown};
@@ -57,9 +54,8 @@ pub struct SamplescopeApp {
     images: ImageView,
     /// The column panels and where each column was drawn.
     columns: Columns,
-    cost: CostPanel,
-    integration: IntegrationPanel,
-    theorem: TheoremPanel,
+    /// The panels docked below the columns (the panel table's docked rows, in its order).
+    docks: Vec<Box<dyn Panel>>,
     /// Playback of a scene with motion (frame shown, playing or not).
     playback: Playback,
     /// Point files brought into columns (the last failure, with its retry button).
@@ -119,9 +115,7 @@ impl SamplescopeApp {
             last_frame: None,
             images: ImageView::new(gpu),
             columns: Columns::default(),
-            cost: CostPanel,
-            integration: IntegrationPanel,
-            theorem: TheoremPanel::default(),
+            docks: columns::placed(crate::scene::panels::Place::Dock),
             playback: Playback::default(),
             import: PointImport::default(),
             applied_style: None,
@@ -204,8 +198,10 @@ impl SamplescopeApp {
         let moved = self.playback.moved_scene(&self.scene);
         let shown = moved.as_ref().unwrap_or(&self.scene);
         if self.submitted.as_ref() != Some(shown) {
-            // The same estimates as the CLI's guard: a scene beyond the budget is not started.
-            let over = crate::scene::cost::check(&self.scene, &self.budget).err();
+            // Planned once: the same estimates as the CLI's guard (a scene beyond the budget is
+            // not started), and the plan the engine runs.
+            let plan = Arc::new(crate::scene::graph::plan(shown));
+            let over = crate::scene::cost::check_plan(shown, &plan, &self.budget).err();
             self.submitted = Some(shown.clone());
             self.results
                 .resize_with(self.scene.columns.len(), HashMap::new);
@@ -218,7 +214,7 @@ impl SamplescopeApp {
                 return;
             }
             self.over_budget = None;
-            self.engine.submit(shown);
+            self.engine.submit_planned(shown, plan);
             self.results
                 .resize_with(self.scene.columns.len(), HashMap::new);
             self.results.truncate(self.scene.columns.len());
@@ -402,7 +398,7 @@ impl SamplescopeApp {
         }
     }
 
-    /// The panels: the cost view and the theorem view docked below, the columns in the middle
+    /// The panels: the docked ones (cost, integration, theorem) below, the columns in the middle
     /// (letterboxed to 16:9 in lecture mode), each drawn from one context lent for the frame.
     fn panels_ui(&mut self, ui: &mut egui::Ui) {
         let SamplescopeApp {
@@ -412,9 +408,7 @@ impl SamplescopeApp {
             view,
             images,
             columns,
-            cost,
-            theorem,
-            integration,
+            docks,
             figures,
             ..
         } = self;
@@ -428,23 +422,14 @@ impl SamplescopeApp {
             evaluator: engine.evaluator(),
             side: 0.0,
         };
-        if cost.is_shown(&cx.scene.panels) {
-            egui::Panel::bottom("samplescope-cost")
-                .resizable(true)
-                .default_size(220.0)
-                .show(ui, |ui| cost.ui(ui, &mut cx));
-        }
-        if integration.is_shown(&cx.scene.panels) {
-            egui::Panel::bottom("samplescope-integration")
-                .resizable(true)
-                .default_size(380.0)
-                .show(ui, |ui| integration.ui(ui, &mut cx));
-        }
-        if theorem.is_shown(&cx.scene.panels) {
-            egui::Panel::bottom("samplescope-theorem")
-                .resizable(true)
-                .default_size(520.0)
-                .show(ui, |ui| theorem.ui(ui, &mut cx));
+        for dock in docks {
+            if dock.is_shown(&cx.scene.panels) {
+                let id = format!("samplescope-{}", dock.kind().spec().name);
+                egui::Panel::bottom(id)
+                    .resizable(true)
+                    .default_size(dock.dock_size())
+                    .show(ui, |ui| dock.ui(ui, &mut cx));
+            }
         }
         egui::CentralPanel::default().show(ui, |ui| {
             if cx.view.lecture {

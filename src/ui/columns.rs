@@ -1,17 +1,37 @@
-//! The columns side by side, each a grid of its visible column panels; and adding a column.
+//! The panels of the panel table (one made per row, [`make`]), and the columns side by side,
+//! each a grid of its visible column panels; and adding a column.
 
-use super::panels::filter::FilterPanel;
-use super::panels::pattern::PatternPanel;
-use super::panels::spectrum::SpectrumPanel;
-use super::panels::sphere::SpherePanel;
-use super::panels::zoneplate::ZonePlatePanel;
-use super::panels::{Panel, PanelCx};
+use super::panels::{self, Panel, PanelCx};
 use crate::scene::graph::NodeKind;
+use crate::scene::panels::{PanelKind, Place};
 use crate::scene::{Scene, MAX_COLUMNS};
 use eframe::egui::{self, Rect, Vec2};
 
-/// The column grid: the column panels in their order, and each column's screen rectangle as
-/// last drawn (files dropped on the window go to the column under the pointer).
+/// The panel of row `kind` of the panel table, in its initial state.
+pub fn make(kind: PanelKind) -> Box<dyn Panel> {
+    match kind {
+        PanelKind::Pattern => Box::new(panels::pattern::PatternPanel),
+        PanelKind::Sphere => Box::new(panels::sphere::SpherePanel::default()),
+        PanelKind::Spectrum => Box::new(panels::spectrum::SpectrumPanel),
+        PanelKind::ZonePlate => Box::new(panels::zoneplate::ZonePlatePanel),
+        PanelKind::Filter => Box::new(panels::filter::FilterPanel),
+        PanelKind::Cost => Box::new(panels::cost::CostPanel),
+        PanelKind::Integration => Box::new(panels::integration::IntegrationPanel),
+        PanelKind::Theorem => Box::new(panels::theorem::TheoremPanel::default()),
+    }
+}
+
+/// The panels placed at `place`, in table order.
+pub fn placed(place: Place) -> Vec<Box<dyn Panel>> {
+    PanelKind::ALL
+        .into_iter()
+        .filter(|k| k.spec().place == place)
+        .map(make)
+        .collect()
+}
+
+/// The column grid: the column panels in the panel table's order, and each column's screen
+/// rectangle as last drawn (files dropped on the window go to the column under the pointer).
 pub struct Columns {
     panels: Vec<Box<dyn Panel>>,
     rects: Vec<Rect>,
@@ -20,13 +40,7 @@ pub struct Columns {
 impl Default for Columns {
     fn default() -> Self {
         Columns {
-            panels: vec![
-                Box::new(PatternPanel),
-                Box::new(SpherePanel::default()),
-                Box::new(SpectrumPanel),
-                Box::new(ZonePlatePanel),
-                Box::new(FilterPanel),
-            ],
+            panels: placed(Place::Column),
             rects: Vec::new(),
         }
     }
@@ -133,5 +147,22 @@ pub fn add_column(scene: &mut Scene) {
         let mut c = scene.columns.last().cloned().unwrap_or_default();
         c.seed = c.seed.wrapping_add(1);
         scene.columns.push(c);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_row_of_the_panel_table_is_made_once_at_its_place() {
+        for kind in PanelKind::ALL {
+            assert_eq!(make(kind).kind(), kind);
+        }
+        let columns: Vec<PanelKind> = placed(Place::Column).iter().map(|p| p.kind()).collect();
+        let docks: Vec<PanelKind> = placed(Place::Dock).iter().map(|p| p.kind()).collect();
+        let mut all = [columns, docks].concat();
+        all.sort();
+        assert_eq!(all, PanelKind::ALL.to_vec());
     }
 }

@@ -10,6 +10,7 @@
 use crate::export::figure::{self, FileFormat};
 use crate::export::publish::{self, Format};
 use crate::model::{Colormap, ColumnData, FigureContext, FigureKind, Publication};
+use crate::scene::panels::PanelKind;
 use crate::scene::{self, Scene};
 use eframe::egui;
 use std::path::{Path, PathBuf};
@@ -85,10 +86,12 @@ impl FigureRequests {
             .map(|r| (r.column, r.kind))
     }
 
-    /// A small "Save" menu for the figures of one panel: PNG 1×/2×/3×, SVG, CSV, clipboard.
-    pub fn panel_menu_ui(&mut self, ui: &mut egui::Ui, column: usize, kinds: &[FigureKind]) {
+    /// A small "Save" menu for the figures of panel `panel` (those of its row of the panel
+    /// table, in its order): PNG 1×/2×/3×, SVG, CSV, clipboard.
+    pub fn panel_menu_ui(&mut self, ui: &mut egui::Ui, column: usize, panel: PanelKind) {
+        let kinds = panel.spec().figures;
         ui.menu_button("Save", |ui| {
-            for &kind in kinds {
+            for &(kind, _) in kinds {
                 if kinds.len() > 1 {
                     ui.label(egui::RichText::new(kind.name()).strong());
                 }
@@ -216,12 +219,7 @@ impl Snapshot {
         ctx.spectrum_colormap = self.colormap;
         ctx.response_db = self.response_db;
         ctx.elementary_k = ctx.elementary_k.or(self.elementary_k);
-        if self.strata {
-            let col = &self.scene.columns[column];
-            if col.points.is_none() {
-                ctx.strata = ctx.strata.or(col.pattern.strata(self.scene.n));
-            }
-        }
+        ctx.strata = scene::figure::strata(&self.scene, column, self.strata);
         Ok(ctx)
     }
 

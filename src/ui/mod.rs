@@ -5,12 +5,13 @@
 //! # Layering
 //!
 //! Each line may import the lines below it, never one above, so there is no import circle
-//! (`panels/mod.rs` declares the panel files but imports none of them):
+//! (`panels/mod.rs` declares the panel files but imports none of them; `columns` makes them):
 //!
 //! ```text
 //! app                  SamplescopeApp: owns the state, lends it to everything below
 //! dropped, playback    components owning their state: point import, motion playback
-//! columns              the column grid (the column panels, each column's rectangle), add_column
+//! columns              the panel of each row of the panel table (make), the column grid
+//!                      (the column panels, each column's rectangle), add_column
 //! lecture              lecture-mode style and letterbox
 //! panels/<name>        one panel each: a struct implementing panels::Panel, reading a PanelCx
 //! panels (mod.rs)      the Panel trait and PanelCx

@@ -51,9 +51,10 @@
 //!   uninterpolated image.
 //!
 //! **Adding a figure** for data a column already has: a [`FigureKind`] variant (with its name,
-//! in `model/panel.rs`), a file here implementing [`Figure`], its line in [`figure`] (and the
-//! `mod` line above it), and the arm of `scene::panels::shows` saying which scene switch shows
-//! it; the compiler points at each of the three matches.
+//! in `model/figure_kind.rs`), a file here implementing [`Figure`], its line in [`figure`] (and
+//! the `mod` line above it), and its entry in its panel's row of the panel table
+//! (`scene::panels::PANELS`, which says when it is shown); the compiler points at the matches,
+//! and a test that every figure has one panel at the row.
 
 mod canvas;
 mod composite;

@@ -10,9 +10,7 @@ use super::csv::curve;
 use super::draw::{axes, chart, draw_err, empty, present, Frame, GUIDE, INK, INTERVALS};
 use super::{context_metadata, Area, Figure};
 use crate::export::ExportError;
-use crate::model::{
-    elementary_grid, palette, ColumnData, FigureContext, FigureKind, MAX_STRATA_LINES,
-};
+use crate::model::{drawn_strata, elementary_grid, palette, ColumnData, FigureContext, FigureKind};
 use plotters::prelude::*;
 
 /// The pattern figure.
@@ -20,12 +18,6 @@ pub(super) struct Pattern;
 
 /// The strata's lines (the GUI's overlay colour).
 const STRATA: RGBColor = RGBColor(palette::STRATA[0], palette::STRATA[1], palette::STRATA[2]);
-
-/// The strata the figure draws: the context's, up to [`MAX_STRATA_LINES`] per axis.
-fn drawn_strata(ctx: &FigureContext) -> Option<(usize, usize)> {
-    ctx.strata
-        .filter(|&(c, r)| c <= MAX_STRATA_LINES && r <= MAX_STRATA_LINES)
-}
 
 /// The inner lines of a `cols` × `rows` grid over the unit square.
 fn grid(
@@ -101,7 +93,7 @@ impl Figure for Pattern {
         let mut ch = chart(body, -pad..1.0 + pad, -pad..1.0 + pad, look, KIND)?;
         axes(&mut ch, "x", "y", false, false, look, KIND)?;
         // The strata, then the elementary intervals.
-        if let Some((cols, rows)) = drawn_strata(f.ctx) {
+        if let Some((cols, rows)) = drawn_strata(f.ctx.strata) {
             grid(&mut ch, cols, rows, look.line(STRATA, 1)).map_err(de)?;
         }
         if let Some((cols, rows)) = elementary_grid(f.ctx.elementary_k, pts.len()) {
@@ -138,7 +130,7 @@ impl Figure for Pattern {
     /// The context, and the strata and elementary intervals when they are drawn.
     fn metadata(&self, ctx: &FigureContext, data: &ColumnData) -> Vec<(String, String)> {
         let mut m = context_metadata(ctx);
-        if let Some((c, r)) = drawn_strata(ctx) {
+        if let Some((c, r)) = drawn_strata(ctx.strata) {
             m.push(("strata".into(), format!("{c}×{r} cells")));
         }
         if let Some(grid) = data

@@ -2,9 +2,8 @@
 //! the convergence curves (RMSE against samples per pixel and against time).
 
 use super::{Panel, PanelCx};
-use crate::model::FigureKind;
 use crate::scene::graph::{NodeKind, NodeValue};
-use crate::scene::Panels;
+use crate::scene::panels::PanelKind;
 use eframe::egui;
 use egui_plot::{Line, Plot};
 
@@ -16,12 +15,8 @@ type Curve = (String, Vec<[f64; 2]>, Vec<[f64; 2]>);
 pub struct CostPanel;
 
 impl Panel for CostPanel {
-    fn kind(&self) -> FigureKind {
-        FigureKind::Convergence
-    }
-
-    fn is_shown(&self, panels: &Panels) -> bool {
-        panels.cost
+    fn kind(&self) -> PanelKind {
+        PanelKind::Cost
     }
 
     fn ui(&mut self, ui: &mut egui::Ui, cx: &mut PanelCx<'_>) {

@@ -4,8 +4,9 @@
 use super::{Panel, PanelCx};
 use crate::model::FigureKind;
 use crate::scene::graph::{NodeKind, NodeValue};
-use crate::scene::Panels;
+use crate::scene::panels::PanelKind;
 use crate::ui::gpu::DisplayRange;
+use crate::ui::view::ViewState;
 use crate::ui::widgets::status::{error_label, time_label};
 use eframe::egui::{self, Color32};
 use egui_plot::{Line, Plot, VLine};
@@ -15,12 +16,13 @@ use egui_plot::{Line, Plot, VLine};
 pub struct FilterPanel;
 
 impl Panel for FilterPanel {
-    fn kind(&self) -> FigureKind {
-        FigureKind::Response
+    fn kind(&self) -> PanelKind {
+        PanelKind::Filter
     }
 
-    fn is_shown(&self, panels: &Panels) -> bool {
-        panels.filter
+    /// Ctrl+S over the panel saves the frequency response (its main plot).
+    fn figure(&self, _view: &ViewState) -> FigureKind {
+        FigureKind::Response
     }
 
     fn ui(&mut self, ui: &mut egui::Ui, cx: &mut PanelCx<'_>) {
@@ -28,8 +30,7 @@ impl Panel for FilterPanel {
         ui.horizontal_wrapped(|ui| {
             ui.label("Filter");
             ui.checkbox(&mut cx.view.response_db, "dB");
-            cx.figures
-                .panel_menu_ui(ui, ci, &[FigureKind::Kernel, FigureKind::Response]);
+            cx.figures.panel_menu_ui(ui, ci, PanelKind::Filter);
         });
         let Some(r) = cx.result(NodeKind::Response) else {
             ui.spinner();

@@ -5,10 +5,10 @@
 //! R), and the panel says how many are in.
 
 use super::{Panel, PanelCx};
-use crate::model::{guide_line, palette, FigureKind, IntegrationData, GUIDE_SLOPES};
+use crate::model::{guide_line, palette, IntegrationData, GUIDE_SLOPES};
 use crate::scene::graph::{NodeKind, NodeValue};
 use crate::scene::integration::limits;
-use crate::scene::Panels;
+use crate::scene::panels::PanelKind;
 use crate::ui::gpu::DisplayRange;
 use crate::ui::widgets::params::{integrand_ui, setting_ui};
 use crate::ui::widgets::status::error_label;
@@ -32,12 +32,12 @@ fn powers_of_two(lo: u32, hi: u32) -> Vec<usize> {
 }
 
 impl Panel for IntegrationPanel {
-    fn kind(&self) -> FigureKind {
-        FigureKind::Integration
+    fn kind(&self) -> PanelKind {
+        PanelKind::Integration
     }
 
-    fn is_shown(&self, panels: &Panels) -> bool {
-        panels.integration
+    fn dock_size(&self) -> f32 {
+        380.0
     }
 
     fn ui(&mut self, ui: &mut egui::Ui, cx: &mut PanelCx<'_>) {
@@ -56,7 +56,7 @@ impl Panel for IntegrationPanel {
                 ui.set_max_width(260.0);
                 ui.horizontal(|ui| {
                     ui.strong("Integration error");
-                    cx.figures.panel_menu_ui(ui, 0, &[FigureKind::Integration]);
+                    cx.figures.panel_menu_ui(ui, 0, PanelKind::Integration);
                 });
                 let s = &mut cx.scene.integration;
                 integrand_ui(ui, &mut s.integrand);

@@ -2,11 +2,12 @@
 //! maths here). A panel implements [`Panel`] and reads everything it needs from a [`PanelCx`]
 //! lent by the app for the frame.
 //!
+//! Which panels exist, when each is shown, where it goes and which figures it saves is the
+//! panel table ([`crate::scene::panels::PANELS`]); `columns::make` builds each row's panel.
 //! The column panels ([`pattern`], [`sphere`], [`spectrum`], [`zoneplate`], [`filter`]) are
-//! laid out per column by [`crate::ui::columns`]; [`cost`], [`integration`] and [`theorem`] are
-//! docked below the columns by the app. A new panel is a new file here implementing [`Panel`],
-//! plus one line where it is
-//! placed (the column list in `columns.rs`, or a dock in `app.rs`).
+//! laid out per column by [`crate::ui::columns`]; the docked ones ([`cost`], [`integration`],
+//! [`theorem`]) go below the columns (the app). A new panel is a new file here implementing
+//! [`Panel`], its `pub mod` line and its arm in `columns::make`.
 
 pub mod cost;
 pub mod filter;
@@ -20,6 +21,7 @@ pub mod zoneplate;
 use crate::engine::Evaluator;
 use crate::model::FigureKind;
 use crate::scene::graph::NodeKind;
+use crate::scene::panels::PanelKind;
 use crate::scene::{Panels, Scene};
 use crate::ui::figures::FigureRequests;
 use crate::ui::results::{ColumnResults, Shown};
@@ -29,16 +31,24 @@ use eframe::egui;
 
 /// A panel: a small struct holding its own display state, drawn from a [`PanelCx`].
 pub trait Panel {
-    /// The panel's identity: the figure it stands for.
-    fn kind(&self) -> FigureKind;
+    /// The panel's identity: its row of the panel table ([`crate::scene::panels::PANELS`]),
+    /// which says when it is shown and which figures its Save menu lists.
+    fn kind(&self) -> PanelKind;
 
-    /// Whether the scene shows the panel (its switch in the scene's panels).
-    fn is_shown(&self, panels: &Panels) -> bool;
+    /// Whether the scene shows the panel: its switch, as the table says.
+    fn is_shown(&self, panels: &Panels) -> bool {
+        self.kind().is_shown(panels)
+    }
 
     /// The figure saved by Ctrl+S over the panel, which may follow the view (the zone plate
-    /// shows one of three images); by default the panel's [`Panel::kind`].
+    /// shows one of three images); by default the first figure of the panel's row.
     fn figure(&self, _view: &ViewState) -> FigureKind {
-        self.kind()
+        self.kind().spec().figures[0].0
+    }
+
+    /// The height a docked panel first gets, in points (column panels are sized by the grid).
+    fn dock_size(&self) -> f32 {
+        220.0
     }
 
     /// Draws the panel.

@@ -3,9 +3,8 @@
 //! statistics.
 
 use super::{Panel, PanelCx};
-use crate::model::FigureKind;
 use crate::scene::graph::{NodeKind, NodeValue};
-use crate::scene::{Panels, Scene};
+use crate::scene::panels::PanelKind;
 use crate::ui::gpu;
 use crate::ui::view::screen_from_unit;
 use crate::ui::widgets::status::{error_label, time_label};
@@ -17,19 +16,15 @@ use eframe::egui_wgpu;
 pub struct PatternPanel;
 
 impl Panel for PatternPanel {
-    fn kind(&self) -> FigureKind {
-        FigureKind::Pattern
-    }
-
-    fn is_shown(&self, panels: &Panels) -> bool {
-        panels.pattern
+    fn kind(&self) -> PanelKind {
+        PanelKind::Pattern
     }
 
     fn ui(&mut self, ui: &mut egui::Ui, cx: &mut PanelCx<'_>) {
         let (ci, side) = (cx.column, cx.side);
         ui.horizontal_wrapped(|ui| {
             ui.label("Sample pattern");
-            cx.figures.panel_menu_ui(ui, ci, &[FigureKind::Pattern]);
+            cx.figures.panel_menu_ui(ui, ci, PanelKind::Pattern);
         });
         let (rect, _) = ui.allocate_exact_size(Vec2::splat(side), egui::Sense::hover());
         let painter = ui.painter_at(rect);
@@ -53,8 +48,8 @@ impl Panel for PatternPanel {
             let [r, g, b] = crate::model::palette::STRATA;
             Stroke::new(0.5, Color32::from_rgb(r, g, b))
         };
-        if cx.view.show_strata {
-            let (c, rws) = strata_shape(cx.scene, ci, data.points.len());
+        // The figure's rule: the column's own strata or the overlay, all of them or none.
+        if let Some((c, rws)) = crate::scene::figure::strata(&r.scene, ci, cx.view.show_strata) {
             grid_lines(&painter, rect, c, rws, grid_stroke);
         }
         let k = cx.scene.columns[ci].elementary_k.or(cx.view.elementary_k);
@@ -166,16 +161,6 @@ impl Panel for PatternPanel {
             }
         }
     }
-}
-
-/// Columns × rows of the strata drawn for a pattern (at most
-/// [`crate::model::MAX_STRATA_LINES`] lines each way on screen).
-fn strata_shape(scene: &Scene, ci: usize, n: usize) -> (usize, usize) {
-    let most = crate::model::MAX_STRATA_LINES;
-    scene.columns[ci]
-        .pattern
-        .strata(n)
-        .map_or((1, 1), |(c, r)| (c.min(most), r.min(most)))
 }
 
 /// The inner lines of a `cols × rows` grid over the unit square drawn in `rect`.

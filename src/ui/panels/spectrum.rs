@@ -2,9 +2,8 @@
 //! averaged power spectrum and the anisotropy.
 
 use super::{Panel, PanelCx};
-use crate::model::FigureKind;
 use crate::scene::graph::{NodeKind, NodeValue};
-use crate::scene::Panels;
+use crate::scene::panels::PanelKind;
 use crate::ui::gpu::DisplayRange;
 use crate::ui::widgets::status::{error_label, time_label};
 use eframe::egui::{self, Color32};
@@ -15,12 +14,8 @@ use egui_plot::{Line, Plot};
 pub struct SpectrumPanel;
 
 impl Panel for SpectrumPanel {
-    fn kind(&self) -> FigureKind {
-        FigureKind::Spectrum
-    }
-
-    fn is_shown(&self, panels: &Panels) -> bool {
-        panels.spectrum
+    fn kind(&self) -> PanelKind {
+        PanelKind::Spectrum
     }
 
     fn ui(&mut self, ui: &mut egui::Ui, cx: &mut PanelCx<'_>) {
@@ -30,8 +25,7 @@ impl Panel for SpectrumPanel {
                 .result(NodeKind::Spectrum)
                 .map_or(cx.scene.spectrum.size, |r| r.scene.spectrum.size);
             ui.label(format!("Periodogram {size}² (log10 P, centred)"));
-            cx.figures
-                .panel_menu_ui(ui, ci, &[FigureKind::Spectrum, FigureKind::Raps]);
+            cx.figures.panel_menu_ui(ui, ci, PanelKind::Spectrum);
         });
         let Some(r) = cx.result(NodeKind::Spectrum) else {
             ui.spinner();

@@ -4,9 +4,8 @@
 
 use super::{Panel, PanelCx};
 use crate::core::pattern::sphere::{square_to_sphere, OrthoView};
-use crate::model::FigureKind;
 use crate::scene::graph::{NodeKind, NodeValue};
-use crate::scene::Panels;
+use crate::scene::panels::PanelKind;
 use crate::ui::widgets::status::{error_label, time_label};
 use eframe::egui::{self, Color32, Pos2, Sense, Stroke, Vec2};
 
@@ -31,19 +30,15 @@ impl Default for SpherePanel {
 }
 
 impl Panel for SpherePanel {
-    fn kind(&self) -> FigureKind {
-        FigureKind::Sphere
-    }
-
-    fn is_shown(&self, panels: &Panels) -> bool {
-        panels.sphere
+    fn kind(&self) -> PanelKind {
+        PanelKind::Sphere
     }
 
     fn ui(&mut self, ui: &mut egui::Ui, cx: &mut PanelCx<'_>) {
         let (ci, side) = (cx.column, cx.side);
         ui.horizontal_wrapped(|ui| {
             ui.label("Sphere (cylinder wrap)");
-            cx.figures.panel_menu_ui(ui, ci, &[FigureKind::Sphere]);
+            cx.figures.panel_menu_ui(ui, ci, PanelKind::Sphere);
         });
         let (rect, response) = ui.allocate_exact_size(Vec2::splat(side), Sense::click_and_drag());
         response.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Image, true, "sphere view"));

@@ -9,7 +9,7 @@ use crate::core::signal::theorem::{
 };
 use crate::model::{palette, FigureKind};
 use crate::scene::graph::{NodeKind, NodeValue};
-use crate::scene::Panels;
+use crate::scene::panels::PanelKind;
 use crate::ui::figures::FigureRequests;
 use crate::ui::widgets::params::{family_ui, labelled_params_ui, params_ui};
 use eframe::egui::{self, Color32};
@@ -43,12 +43,12 @@ pub struct TheoremPanel {
 }
 
 impl Panel for TheoremPanel {
-    fn kind(&self) -> FigureKind {
-        FigureKind::TheoremSignal
+    fn kind(&self) -> PanelKind {
+        PanelKind::Theorem
     }
 
-    fn is_shown(&self, panels: &Panels) -> bool {
-        panels.theorem
+    fn dock_size(&self) -> f32 {
+        520.0
     }
 
     /// Draws the controls (editing the scene's theorem settings) and the plots of the theorem
@@ -90,7 +90,7 @@ impl TheoremPanel {
         // The numbers first, so that they stay in view when the panel is short.
         ui.horizontal(|ui| {
             // The view belongs to column 0 (it does not depend on the column).
-            figures.panel_menu_ui(ui, 0, &FigureKind::THEOREM);
+            figures.panel_menu_ui(ui, 0, PanelKind::Theorem);
             ui.weak("figures of the three plots below (Ctrl+S over a plot saves it)");
         });
         errors_ui(ui, &v.errors, v.settings.rate);

@@ -5,7 +5,7 @@ use super::{Panel, PanelCx};
 use crate::model::Colormap;
 use crate::model::FigureKind;
 use crate::scene::graph::{NodeKind, NodeValue};
-use crate::scene::Panels;
+use crate::scene::panels::PanelKind;
 use crate::ui::gpu::DisplayRange;
 use crate::ui::view::{ViewState, ZoneImage};
 use crate::ui::widgets::status::{error_label, time_label};
@@ -16,12 +16,8 @@ use eframe::egui::{self, Color32};
 pub struct ZonePlatePanel;
 
 impl Panel for ZonePlatePanel {
-    fn kind(&self) -> FigureKind {
-        FigureKind::Reconstruction
-    }
-
-    fn is_shown(&self, panels: &Panels) -> bool {
-        panels.zoneplate
+    fn kind(&self) -> PanelKind {
+        PanelKind::ZonePlate
     }
 
     fn figure(&self, view: &ViewState) -> FigureKind {
@@ -48,15 +44,7 @@ impl Panel for ZonePlatePanel {
                 "error spectrum",
             )
             .on_hover_text("periodogram of the signed error (log10 P, DC in the centre)");
-            cx.figures.panel_menu_ui(
-                ui,
-                ci,
-                &[
-                    FigureKind::Reconstruction,
-                    FigureKind::Reference,
-                    FigureKind::Error,
-                ],
-            );
+            cx.figures.panel_menu_ui(ui, ci, PanelKind::ZonePlate);
         });
         if !cx.scene.effects.reconstruction {
             ui.small("reconstruction effect is off");
