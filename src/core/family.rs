@@ -321,6 +321,7 @@ mod tests {
         check::<Filter>();
         check::<Integrand>();
         check::<Signal>();
+        check::<crate::core::signal::theorem::Signal1D>();
     }
 
     #[test]

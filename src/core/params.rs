@@ -497,6 +497,9 @@ pub fn params_json(p: &impl Params) -> serde_json::Value {
 /// `declare_params! { impl Type = "owner" { … } }` implements [`Params`] for an existing struct
 /// over the fields listed (a scene setting whose other fields are families or lists).
 ///
+/// `Type = "name" in "owner", "summary" { … }` names errors after `owner` instead of `name`
+/// (the theorem's 1D signals all say `signal.width`).
+///
 /// Field kinds:
 /// - `int(default, min, max, "doc")`, stored as `u32`; `count(default, min, max, "doc")`, stored
 ///   as `usize`;
@@ -511,7 +514,7 @@ pub fn params_json(p: &impl Params) -> serde_json::Value {
 macro_rules! declare_params {
     (
         $(#[$meta:meta])*
-        $ty:ident = $name:literal, $summary:literal {
+        $ty:ident = $name:literal $( in $owner:literal )?, $summary:literal {
             $( $(#[$fmeta:meta])* $field:ident : $kind:ident ( $($arg:tt)* ) ),* $(,)?
         }
         $( check($p:ident) $body:block )?
@@ -536,7 +539,7 @@ macro_rules! declare_params {
             pub const SUMMARY: &'static str = $summary;
         }
 
-        $crate::core::params::declare_params!(@impl $ty = $name {
+        $crate::core::params::declare_params!(@impl $ty = [$name $($owner)?] {
             $( $field : $kind ( $($arg)* ) ),*
         } $( check($p) $body )?);
     };
@@ -548,19 +551,19 @@ macro_rules! declare_params {
         }
         $( check($p:ident) $body:block )?
     ) => {
-        $crate::core::params::declare_params!(@impl $ty = $name {
+        $crate::core::params::declare_params!(@impl $ty = [$name] {
             $( $field : $kind ( $($arg)* ) ),*
         } $( check($p) $body )?);
     };
     (
-        @impl $ty:ident = $name:literal {
+        @impl $ty:ident = [$name:literal $($owner:literal)?] {
             $( $field:ident : $kind:ident ( $($arg:tt)* ) ),*
         }
         $( check($p:ident) $body:block )?
     ) => {
         impl $crate::core::params::Params for $ty {
             fn owner(&self) -> &'static str {
-                $name
+                $crate::core::params::declare_params!(@owner $name $($owner)?)
             }
 
             fn specs(&self) -> Vec<$crate::core::params::ParamSpec> {
@@ -592,6 +595,8 @@ macro_rules! declare_params {
             }
         }
     };
+    (@owner $name:literal) => { $name };
+    (@owner $name:literal $owner:literal) => { $owner };
     (@ty int ($($a:tt)*)) => { u32 };
     (@ty count ($($a:tt)*)) => { usize };
     (@ty float ($($a:tt)*)) => { f64 };

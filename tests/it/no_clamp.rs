@@ -10,6 +10,7 @@ use samplescope::core::filter::{Filter, Window, WindowedSinc};
 use samplescope::core::integration::Integrand;
 use samplescope::core::params::{ParamKind, ParamValue, Params};
 use samplescope::core::pattern::Pattern;
+use samplescope::core::signal::theorem::Gaussian1D;
 use samplescope::core::signal::theorem::{
     Signal1D, EXTENT_RANGE, MAX_RATE, MAX_VDC_ROWS, MIN_RATE, PAIR_SCALE_RANGE, PAIR_SHIFT_RANGE,
 };
@@ -180,7 +181,7 @@ fn limit_scenes() -> Vec<(String, Scene)> {
         "theorem.rate=max".into(),
         th(&|s| {
             s.theorem.rate = MAX_RATE;
-            s.theorem.signal = Signal1D::Gaussian { sigma: 0.01 };
+            s.theorem.signal = Signal1D::Gaussian(Gaussian1D { sigma: 0.01 });
             s.theorem.extent = EXTENT_RANGE.0;
         }),
     );

@@ -12,6 +12,9 @@ use samplescope::core::signal::theorem::{
     aliasing_errors, compute_view, merged_lines, samples, PairKind, Reconstructor, Signal1D,
     TheoremError, TheoremSettings, TransformPair, ERROR_BAND,
 };
+use samplescope::core::signal::theorem::{
+    Box1D, Cosines1D, Gaussian1D, PulseTrain1D, Sinc1D, SincSquared1D, Tent1D,
+};
 use samplescope::engine::Evaluator;
 use samplescope::scene::graph::NodeKind;
 use samplescope::scene::{Scene, BUILTIN};
@@ -43,9 +46,9 @@ fn closed_form_transforms_match_numeric_fourier_integrals() {
     // Compact support or fast decay: forward transform over the support (Simpson, 2·10⁵
     // intervals; the box integrates its smooth inside, so the error is O(h⁴)). Tolerance 1e-9.
     let cases = [
-        (Signal1D::Box { width: 0.8 }, 0.4),
-        (Signal1D::Tent { radius: 1.3 }, 1.3),
-        (Signal1D::Gaussian { sigma: 0.35 }, 0.35 * 12.0),
+        (Signal1D::Box(Box1D { width: 0.8 }), 0.4),
+        (Signal1D::Tent(Tent1D { radius: 1.3 }), 1.3),
+        (Signal1D::Gaussian(Gaussian1D { sigma: 0.35 }), 0.35 * 12.0),
     ];
     for (s, half) in cases {
         // Stop 1e-12 short of the box's jumps, where f takes the mid-value ½.
@@ -53,7 +56,7 @@ fn closed_form_transforms_match_numeric_fourier_integrals() {
         for w in OMEGAS {
             let (re, im) = fourier(|x| s.eval(x), w, -half, half, 200_000);
             // The tent has kinks at 0: integrate each half separately.
-            let re = if let Signal1D::Tent { .. } = s {
+            let re = if let Signal1D::Tent(Tent1D { .. }) = s {
                 fourier(|x| s.eval(x), w, -half, 0.0, 100_000).0
                     + fourier(|x| s.eval(x), w, 0.0, half, 100_000).0
             } else {
@@ -66,8 +69,8 @@ fn closed_form_transforms_match_numeric_fourier_integrals() {
     }
     // Band-limited: f(x) = ∫_{−B}^{B} F(ω) e^{2πiωx} dω (the inverse transform over the band).
     for s in [
-        Signal1D::Sinc { bandwidth: 1.7 },
-        Signal1D::SincSquared { bandwidth: 0.9 },
+        Signal1D::Sinc(Sinc1D { bandwidth: 1.7 }),
+        Signal1D::SincSquared(SincSquared1D { bandwidth: 0.9 }),
     ] {
         // Stop 1e-12 short of ±B, where the sinc's F takes the mid-value.
         let b = s.bandwidth().unwrap() - 1e-12;
@@ -93,7 +96,7 @@ fn closed_form_transforms_match_numeric_fourier_integrals() {
     }
     // Lines: the cosines are their lines; the pulse train's Fourier coefficients
     // c_m = (1/p)∫_{−p/2}^{p/2} f(x) e^{−2πimx/p} dx (numeric over the pulse) equal d sinc(md).
-    let c = Signal1D::Cosines { bandwidth: 1.3 };
+    let c = Signal1D::Cosines(Cosines1D { bandwidth: 1.3 });
     let (lines, dropped) = c.lines();
     assert_eq!(dropped, 0.0);
     for x in [0.0, 0.3, 1.7, -4.2] {
@@ -103,10 +106,10 @@ fn closed_form_transforms_match_numeric_fourier_integrals() {
             .sum();
         assert!((sum - c.eval(x)).abs() < 1e-13);
     }
-    let p = Signal1D::PulseTrain {
+    let p = Signal1D::PulseTrain(PulseTrain1D {
         period: 1.5,
         duty: 0.3,
-    };
+    });
     let (lines, dropped) = p.lines();
     assert!(dropped <= 2.0 / (PI * PI * 1024.0) + 1e-15);
     for m in 0..6i64 {
@@ -129,9 +132,9 @@ fn closed_form_transforms_match_numeric_fourier_integrals() {
 fn energies_match_parseval_in_both_domains() {
     // Spatial ∫f² for compact/fast-decaying signals, spectral ∫F² for band-limited ones.
     let spatial = [
-        (Signal1D::Box { width: 0.8 }, 0.4),
-        (Signal1D::Tent { radius: 1.3 }, 1.3),
-        (Signal1D::Gaussian { sigma: 0.35 }, 5.0),
+        (Signal1D::Box(Box1D { width: 0.8 }), 0.4),
+        (Signal1D::Tent(Tent1D { radius: 1.3 }), 1.3),
+        (Signal1D::Gaussian(Gaussian1D { sigma: 0.35 }), 5.0),
     ];
     for (s, half) in spatial {
         let half = half - 1e-12;
@@ -140,21 +143,21 @@ fn energies_match_parseval_in_both_domains() {
         assert!((e - s.energy()).abs() < 1e-10, "{}: {e}", s.name());
     }
     for s in [
-        Signal1D::Sinc { bandwidth: 1.7 },
-        Signal1D::SincSquared { bandwidth: 0.9 },
+        Signal1D::Sinc(Sinc1D { bandwidth: 1.7 }),
+        Signal1D::SincSquared(SincSquared1D { bandwidth: 0.9 }),
     ] {
         let b = s.bandwidth().unwrap() - 1e-12;
         let e = 2.0 * simpson(|w| s.transform(w).powi(2), 0.0, b, 100_000);
         assert!((e - s.energy()).abs() < 1e-10, "{}: {e}", s.name());
     }
     // Mean powers over one common period (Simpson, periodic integrand).
-    let c = Signal1D::Cosines { bandwidth: 1.0 };
+    let c = Signal1D::Cosines(Cosines1D { bandwidth: 1.0 });
     let m = simpson(|x| c.eval(x).powi(2), 0.0, 4.0, 200_000) / 4.0;
     assert!((m - c.energy()).abs() < 1e-12, "{m}");
-    let p = Signal1D::PulseTrain {
+    let p = Signal1D::PulseTrain(PulseTrain1D {
         period: 2.0,
         duty: 0.3,
-    };
+    });
     assert_eq!(p.energy(), 0.3);
 }
 
@@ -248,7 +251,7 @@ fn replica_sum_matches_poisson_sample_sum() {
     // P(ω) = Σ_k F(ω − k f_s) = T Σ_n f(nT) e^{−2πiωnT}.
     // Gaussian: the crate sums replicas; compare with the direct sample sum (|n| ≤ 2000,
     // remainder below e^{−(2000T)²/2σ²}). Tolerance 1e-13 (relative to F(0)).
-    let g = Signal1D::Gaussian { sigma: 0.4 };
+    let g = Signal1D::Gaussian(Gaussian1D { sigma: 0.4 });
     for rate in [1.0, 2.5, 7.0] {
         let t = 1.0 / rate;
         for w in [0.0, 0.3, 0.5 * rate, 1.9, 5.5] {
@@ -265,7 +268,7 @@ fn replica_sum_matches_poisson_sample_sum() {
     }
     // Tent: the crate uses the finite sample sum; compare with the replica sum over
     // |k| ≤ K = 2·10⁵, whose tail is ≤ 2 Σ_{k>K} 1/(π²w(k f_s − |ω|)²) ≤ 2/(π²w f_s²(K − 1 − |ω|/f_s)).
-    let tent = Signal1D::Tent { radius: 0.9 };
+    let tent = Signal1D::Tent(Tent1D { radius: 0.9 });
     let k_max = 200_000i64;
     for rate in [1.0, 2.5, 7.0] {
         for w in [0.0, 0.3, 0.5 * rate, 1.9, 5.5] {
@@ -280,7 +283,7 @@ fn replica_sum_matches_poisson_sample_sum() {
     }
     // Sinc²: the crate sums the finitely many replicas; compare with the sample sum over
     // |n| ≤ N = 10⁶, remainder ≤ 2T Σ_{n>N} 1/(πB nT)² ≤ 2/(π²B²T N).
-    let s2 = Signal1D::SincSquared { bandwidth: 1.0 };
+    let s2 = Signal1D::SincSquared(SincSquared1D { bandwidth: 1.0 });
     let n_max = 1_000_000i64;
     for rate in [1.5, 3.0] {
         let t = 1.0 / rate;
@@ -304,7 +307,7 @@ fn ideal_sinc_reconstruction_recovers_band_limited_signal_above_nyquist() {
     // term by |f(nT)|/(π|u − n|), summed over |n| ≤ 10⁶ (the rest is below 10⁻¹²). The result
     // is divided by H(0) = ∫h: 1 for the ideal low-pass, Si(πr)·2/π for the truncated sinc,
     // which adds |f(x)|·|1/H(0) − 1| to the bound.
-    let s = Signal1D::SincSquared { bandwidth: 1.0 };
+    let s = Signal1D::SincSquared(SincSquared1D { bandwidth: 1.0 });
     let rate = 3.0;
     for filter in [
         Filter::LowPass(LowPass {
@@ -351,9 +354,9 @@ fn ideal() -> Filter {
 #[test]
 fn pre_aliasing_is_zero_above_nyquist_and_positive_below() {
     for s in [
-        Signal1D::Sinc { bandwidth: 1.0 },
-        Signal1D::SincSquared { bandwidth: 1.0 },
-        Signal1D::Cosines { bandwidth: 1.0 },
+        Signal1D::Sinc(Sinc1D { bandwidth: 1.0 }),
+        Signal1D::SincSquared(SincSquared1D { bandwidth: 1.0 }),
+        Signal1D::Cosines(Cosines1D { bandwidth: 1.0 }),
     ] {
         let above = aliasing_errors(&s, 2.5, ideal()).unwrap();
         assert!(above.pre_aliasing <= 1e-15, "{}: {above:?}", s.name());
@@ -371,19 +374,24 @@ fn pre_aliasing_is_zero_above_nyquist_and_positive_below() {
     // Closed form for sinc(2Bx) at B < f_s < 2B: in |ω| < f_s/2 the replicas k = ±1 cover
     // f_s − B < |ω| < f_s/2 at height 1/(2B): pre = 2(B − f_s/2)/(4B²).
     for (b, fs) in [(1.0, 1.5), (1.0, 1.2), (2.0, 3.1)] {
-        let e = aliasing_errors(&Signal1D::Sinc { bandwidth: b }, fs, ideal()).unwrap();
+        let e = aliasing_errors(&Signal1D::Sinc(Sinc1D { bandwidth: b }), fs, ideal()).unwrap();
         let exact = 2.0 * (b - 0.5 * fs) / (4.0 * b * b);
         assert!((e.pre_aliasing - exact).abs() < 1e-9, "{e:?} vs {exact}");
     }
     // A cosine at exactly f_s/2 is not sampled above the Nyquist rate: it pre-aliases.
-    let at = aliasing_errors(&Signal1D::Cosines { bandwidth: 1.0 }, 2.0, ideal()).unwrap();
+    let at = aliasing_errors(
+        &Signal1D::Cosines(Cosines1D { bandwidth: 1.0 }),
+        2.0,
+        ideal(),
+    )
+    .unwrap();
     assert!(at.pre_aliasing > 1e-3, "{at:?}");
     // Not band-limited: pre-aliasing at every rate; with the ideal filter the error is exactly
     // pre-aliasing plus the lost band (to the quadrature tolerance).
     for s in [
-        Signal1D::Box { width: 1.0 },
-        Signal1D::Tent { radius: 1.0 },
-        Signal1D::Gaussian { sigma: 0.3 },
+        Signal1D::Box(Box1D { width: 1.0 }),
+        Signal1D::Tent(Tent1D { radius: 1.0 }),
+        Signal1D::Gaussian(Gaussian1D { sigma: 0.3 }),
     ] {
         let e = aliasing_errors(&s, 4.0, ideal()).unwrap();
         assert!(e.pre_aliasing > 0.0, "{}: {e:?}", s.name());
@@ -406,10 +414,10 @@ fn post_aliasing_of_box_exceeds_tent_exceeds_windowed_sinc() {
         window: Window::Lanczos,
     });
     for (s, rate) in [
-        (Signal1D::Gaussian { sigma: 0.4 }, 4.0),
-        (Signal1D::Sinc { bandwidth: 1.0 }, 3.0),
-        (Signal1D::Cosines { bandwidth: 1.0 }, 3.0),
-        (Signal1D::Tent { radius: 1.0 }, 5.0),
+        (Signal1D::Gaussian(Gaussian1D { sigma: 0.4 }), 4.0),
+        (Signal1D::Sinc(Sinc1D { bandwidth: 1.0 }), 3.0),
+        (Signal1D::Cosines(Cosines1D { bandwidth: 1.0 }), 3.0),
+        (Signal1D::Tent(Tent1D { radius: 1.0 }), 5.0),
     ] {
         let p: Vec<f64> = [boxf, tent, lanczos]
             .iter()
@@ -427,7 +435,7 @@ fn post_aliasing_of_box_exceeds_tent_exceeds_windowed_sinc() {
 fn total_error_matches_the_spatial_error_parseval() {
     // ∫|F_r − F|² dω (spectral, crate) against ∫|f_r − f|² dx (spatial, Simpson on a fine grid
     // through the reconstruction). Gaussian: both decay fast; tolerance 1e-6 relative.
-    let g = Signal1D::Gaussian { sigma: 0.4 };
+    let g = Signal1D::Gaussian(Gaussian1D { sigma: 0.4 });
     for (rate, filter) in [
         (3.0, Filter::Tent(Tent { radius: 1.0 })),
         (2.0, Filter::Mitchell(Mitchell::default())),
@@ -465,7 +473,7 @@ fn total_error_matches_the_spatial_error_parseval() {
     // its mean square is the total power. The lines the filter passes beyond ±Ω (not in the
     // crate's sum) are added up here: Σ_ν Σ_{|ν + k f_s| > Ω} |G(ν + k f_s) c_ν|², |k| ≤ 10⁴
     // (the tent's G = sinc² leaves < 1e-12 beyond).
-    let c = Signal1D::Cosines { bandwidth: 1.0 };
+    let c = Signal1D::Cosines(Cosines1D { bandwidth: 1.0 });
     let tent = Filter::Tent(Tent { radius: 1.0 });
     let e = aliasing_errors(&c, 2.5, tent).unwrap();
     let rec = Reconstructor::new(tent, 2.5, ERROR_BAND * 2.5).unwrap();
@@ -504,13 +512,13 @@ fn total_error_matches_the_spatial_error_parseval() {
 
 #[test]
 fn sinc_at_zero_and_tiny_x_is_finite() {
-    let s = Signal1D::Sinc { bandwidth: 1.0 };
+    let s = Signal1D::Sinc(Sinc1D { bandwidth: 1.0 });
     assert_eq!(s.eval(0.0), 1.0);
     for x in [1e-300, 5e-324, -1e-200, 1e-9, 1e-5] {
         let v = s.eval(x);
         assert!(v.is_finite() && (v - 1.0).abs() < 1e-8, "x={x}: {v}");
     }
-    let sq = Signal1D::SincSquared { bandwidth: 1.0 };
+    let sq = Signal1D::SincSquared(SincSquared1D { bandwidth: 1.0 });
     assert_eq!(sq.eval(0.0), 1.0);
     assert!(sq.eval(5e-324).is_finite());
     let rec = Reconstructor::new(ideal(), 3.0, 10.0).unwrap();
@@ -520,7 +528,7 @@ fn sinc_at_zero_and_tiny_x_is_finite() {
     let b = TransformPair::default();
     assert_eq!(b.transform(0.0).re, 1.0);
     assert!(b.transform(1e-300).re.is_finite());
-    let box1 = Signal1D::Box { width: 1.0 };
+    let box1 = Signal1D::Box(Box1D { width: 1.0 });
     assert_eq!(box1.transform(0.0), 1.0);
     assert!((box1.transform(5e-324) - 1.0).abs() < 1e-15);
 }
@@ -551,7 +559,7 @@ fn bad_input_gives_typed_errors_naming_field_and_range() {
     // Too many samples across the signal's width (cost of the error integrals).
     cases.push((
         TheoremSettings {
-            signal: Signal1D::Box { width: 10.0 },
+            signal: Signal1D::Box(Box1D { width: 10.0 }),
             rate: 100.0,
             ..base
         },
@@ -563,7 +571,7 @@ fn bad_input_gives_typed_errors_naming_field_and_range() {
     for width in [0.0, -2.0, f64::NAN, 1e300] {
         cases.push((
             TheoremSettings {
-                signal: Signal1D::Box { width },
+                signal: Signal1D::Box(Box1D { width }),
                 ..base
             },
             "signal.width",
@@ -571,10 +579,10 @@ fn bad_input_gives_typed_errors_naming_field_and_range() {
     }
     cases.push((
         TheoremSettings {
-            signal: Signal1D::PulseTrain {
+            signal: Signal1D::PulseTrain(PulseTrain1D {
                 period: 1.0,
                 duty: 1.5,
-            },
+            }),
             ..base
         },
         "signal.duty",
@@ -617,11 +625,19 @@ fn bad_input_gives_typed_errors_naming_field_and_range() {
         assert_eq!(s.validate().unwrap_err(), e);
     }
     assert!(matches!(
-        samples(&Signal1D::Gaussian { sigma: 1.0 }, f64::NAN, 1.0),
+        samples(
+            &Signal1D::Gaussian(Gaussian1D { sigma: 1.0 }),
+            f64::NAN,
+            1.0
+        ),
         Err(TheoremError::InvalidParam { field: "rate", .. })
     ));
     assert!(matches!(
-        aliasing_errors(&Signal1D::Gaussian { sigma: 1.0 }, -3.0, ideal()),
+        aliasing_errors(
+            &Signal1D::Gaussian(Gaussian1D { sigma: 1.0 }),
+            -3.0,
+            ideal()
+        ),
         Err(TheoremError::InvalidParam { field: "rate", .. })
     ));
 }
@@ -629,7 +645,7 @@ fn bad_input_gives_typed_errors_naming_field_and_range() {
 #[test]
 fn view_has_samples_replicas_and_the_van_der_corput_table() {
     let s = TheoremSettings {
-        signal: Signal1D::Gaussian { sigma: 0.3 },
+        signal: Signal1D::Gaussian(Gaussian1D { sigma: 0.3 }),
         rate: 2.0,
         extent: 2.0,
         vdc_rows: 8,
@@ -658,7 +674,7 @@ fn view_has_samples_replicas_and_the_van_der_corput_table() {
     assert_eq!(rows.len(), 8);
     // Line signals carry lines, not curves.
     let c = compute_view(&TheoremSettings {
-        signal: Signal1D::Cosines { bandwidth: 1.0 },
+        signal: Signal1D::Cosines(Cosines1D { bandwidth: 1.0 }),
         ..s
     })
     .unwrap();
@@ -835,6 +851,6 @@ fn panel_controls_edit_the_settings_and_show_both_errors() {
     h.run();
     assert_eq!(
         h.state().scene.theorem.signal,
-        Signal1D::Gaussian { sigma: 0.3 }
+        Signal1D::Gaussian(Gaussian1D { sigma: 0.3 })
     );
 }

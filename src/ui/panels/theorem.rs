@@ -4,8 +4,8 @@
 use super::{Panel, PanelCx};
 use crate::core::filter::Filter;
 use crate::core::signal::theorem::{
-    AliasingErrors, PairKind, Reconstructor, Signal1D, TheoremSettings, TheoremView, EXTENT_RANGE,
-    MAX_RATE, MAX_VDC_ROWS, MIN_RATE, PAIR_SCALE_RANGE, PAIR_SHIFT_RANGE,
+    AliasingErrors, PairKind, Reconstructor, TheoremSettings, TheoremView, EXTENT_RANGE, MAX_RATE,
+    MAX_VDC_ROWS, MIN_RATE, PAIR_SCALE_RANGE, PAIR_SHIFT_RANGE,
 };
 use crate::model::{palette, FigureKind};
 use crate::scene::graph::{NodeKind, NodeValue};
@@ -137,19 +137,7 @@ impl TheoremPanel {
 
 fn controls_ui(ui: &mut egui::Ui, s: &mut TheoremSettings) {
     ui.heading("Sampling theorem (1D)");
-    let mut name = s.signal.name();
-    egui::ComboBox::new("theorem-signal", "Signal")
-        .selected_text(name)
-        .show_ui(ui, |ui| {
-            for sig in Signal1D::all() {
-                ui.selectable_value(&mut name, sig.name(), sig.name());
-            }
-        });
-    if name != s.signal.name() {
-        if let Some(sig) = Signal1D::all().into_iter().find(|g| g.name() == name) {
-            s.signal = sig;
-        }
-    }
+    family_ui(ui, "theorem-signal", "Signal", &mut s.signal, |_| true);
     labelled_params_ui(ui, &mut s.signal, "signal ");
     ui.add(
         egui::Slider::new(&mut s.rate, MIN_RATE..=MAX_RATE)

@@ -1,7 +1,7 @@
 //! The lecture's error terms ([`AliasingErrors`]): pre-aliasing, post-aliasing, smoothing, lost, total.
 
 use super::{
-    check, Reconstructor, Signal1D, SpectrumKind, TheoremError, ERROR_BAND, MAX_RATE,
+    check, Gaussian1D, Reconstructor, Signal1D, SpectrumKind, TheoremError, ERROR_BAND, MAX_RATE,
     MAX_WIDTH_SAMPLES, MIN_RATE,
 };
 use crate::core::filter::{quad, Filter};
@@ -112,7 +112,7 @@ fn continuous_errors(
     if let Some(s) = signal.support() {
         width = width.min(0.5 / s);
     }
-    if let Signal1D::Gaussian { sigma } = *signal {
+    if let Signal1D::Gaussian(Gaussian1D { sigma }) = *signal {
         width = width.min(0.5 / sigma);
     }
     width = width.min(0.5 * rate / rec.filter.radius().max(1e-3));

@@ -66,7 +66,10 @@ pub use errors::{aliasing_errors, merged_lines, AliasingErrors, MergedLine};
 pub use pairs::{pair_plots, PairKind, PairPlots, TransformPair};
 pub use reconstruct::{samples, Reconstructor};
 pub use settings::TheoremSettings;
-pub use signal1d::{Signal1D, SpectrumKind, COSINES};
+pub use signal1d::{
+    Box1D, Cosines1D, Gaussian1D, PulseTrain1D, Signal1D, Sinc1D, SincSquared1D, SpectrumKind,
+    Tent1D, COSINES,
+};
 pub use view::{compute_view, SpectrumPlots, TheoremView};
 
 use crate::core::filter::FilterError;

@@ -1,110 +1,73 @@
 //! The theorem's 1D test signals ([`Signal1D`]): f(x), F(ω), lines, energy and their parameters.
 
 use super::{TheoremError, PARAM_RANGE, PULSE_HARMONICS};
+use crate::core::family::family;
 use crate::core::filter::special::{cos_pi, sinc};
-use crate::core::params::{ParamKind, ParamSpec, ParamValue, Params};
-use serde::{Deserialize, Serialize};
+use crate::core::params::{declare_params, Params};
 use std::f64::consts::PI;
 
-/// A 1D test signal with a closed-form Fourier transform (see the module table).
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-#[serde(tag = "kind", rename_all = "kebab-case")]
-pub enum Signal1D {
+declare_params! {
     /// ½cos 2π(B/4)x + 0.3cos 2π(B/2)x + 0.2cos 2πBx: band-limited to B.
-    Cosines { bandwidth: f64 },
+    Cosines1D = "cosines" in "signal", "½cos 2π(B/4)x + 0.3cos 2π(B/2)x + 0.2cos 2πBx: lines at ±B/4, ±B/2, ±B (band-limited to B)" {
+        bandwidth: float(1.5, PARAM_RANGE.0, PARAM_RANGE.1, "bandwidth B, cycles per unit"),
+    }
+}
+declare_params! {
     /// sinc(2Bx): F = 1/(2B) on |ω| < B.
-    Sinc { bandwidth: f64 },
+    Sinc1D = "sinc" in "signal", "sinc(2Bx): F = 1/(2B) on |ω| < B (band-limited to B)" {
+        bandwidth: float(1.5, PARAM_RANGE.0, PARAM_RANGE.1, "bandwidth B, cycles per unit"),
+    }
+}
+declare_params! {
     /// sinc²(Bx): F = (1/B)(1 − |ω|/B)₊.
-    SincSquared { bandwidth: f64 },
+    SincSquared1D = "sinc-squared" in "signal", "sinc²(Bx): F = (1/B)(1 − |ω|/B)₊ (band-limited to B)" {
+        bandwidth: float(1.5, PARAM_RANGE.0, PARAM_RANGE.1, "bandwidth B, cycles per unit"),
+    }
+}
+declare_params! {
     /// The box of width w: F = w sinc(wω).
-    Box { width: f64 },
+    Box1D = "box" in "signal", "the box of width w: F = w sinc(wω)" {
+        width: float(1.0, PARAM_RANGE.0, PARAM_RANGE.1, "width w, units"),
+    }
+}
+declare_params! {
     /// The tent of radius w: F = w sinc²(wω).
-    Tent { radius: f64 },
+    Tent1D = "tent" in "signal", "the tent of radius w: F = w sinc²(wω)" {
+        radius: float(1.0, PARAM_RANGE.0, PARAM_RANGE.1, "radius w, units"),
+    }
+}
+declare_params! {
     /// e^{−x²/2σ²}: F = σ√(2π)e^{−2π²σ²ω²}.
-    Gaussian { sigma: f64 },
+    Gaussian1D = "gaussian" in "signal", "e^(−x²/2σ²): F = σ√(2π)e^(−2π²σ²ω²)" {
+        sigma: float(0.3, PARAM_RANGE.0, PARAM_RANGE.1, "standard deviation σ, units"),
+    }
+}
+declare_params! {
     /// Pulses of width d·p every p: Fourier series c_m = d sinc(md).
-    PulseTrain { period: f64, duty: f64 },
-}
-
-fn param_spec(name: &'static str, doc: &'static str, default: f64, range: (f64, f64)) -> ParamSpec {
-    ParamSpec {
-        name,
-        doc,
-        kind: ParamKind::Float {
-            default,
-            min: range.0,
-            max: range.1,
-            min_exclusive: false,
-            max_exclusive: false,
-        },
+    PulseTrain1D = "pulse-train" in "signal", "pulses of width d·p every p: lines c_m = d sinc(md) at m/p" {
+        period: float(2.0, PARAM_RANGE.0, PARAM_RANGE.1, "period p, units"),
+        duty: float(0.5, 0.01, 0.99, "duty cycle d (pulse width d·p)"),
     }
 }
 
-/// The theorem's 1D signals share the one parameter mechanism; errors start with `signal.`.
-impl Params for Signal1D {
-    fn owner(&self) -> &'static str {
-        "signal"
-    }
-
-    fn specs(&self) -> Vec<ParamSpec> {
-        let r = PARAM_RANGE;
-        match self {
-            Signal1D::Cosines { .. } | Signal1D::Sinc { .. } | Signal1D::SincSquared { .. } => {
-                vec![param_spec(
-                    "bandwidth",
-                    "bandwidth B, cycles per unit",
-                    1.5,
-                    r,
-                )]
-            }
-            Signal1D::Box { .. } => vec![param_spec("width", "width w, units", 1.0, r)],
-            Signal1D::Tent { .. } => vec![param_spec("radius", "radius w, units", 1.0, r)],
-            Signal1D::Gaussian { .. } => {
-                vec![param_spec("sigma", "standard deviation σ, units", 0.3, r)]
-            }
-            Signal1D::PulseTrain { .. } => vec![
-                param_spec("period", "period p, units", 2.0, r),
-                param_spec("duty", "duty cycle d (pulse width d·p)", 0.5, (0.01, 0.99)),
-            ],
-        }
-    }
-
-    fn get(&self, key: &str) -> Option<ParamValue> {
-        let v = match (*self, key) {
-            (
-                Signal1D::Cosines { bandwidth }
-                | Signal1D::Sinc { bandwidth }
-                | Signal1D::SincSquared { bandwidth },
-                "bandwidth",
-            ) => bandwidth,
-            (Signal1D::Box { width }, "width") => width,
-            (Signal1D::Tent { radius }, "radius") => radius,
-            (Signal1D::Gaussian { sigma }, "sigma") => sigma,
-            (Signal1D::PulseTrain { period, .. }, "period") => period,
-            (Signal1D::PulseTrain { duty, .. }, "duty") => duty,
-            _ => return None,
-        };
-        Some(ParamValue::Float(v))
-    }
-
-    fn put(&mut self, key: &str, value: ParamValue) {
-        let ParamValue::Float(value) = value else {
-            return;
-        };
-        match (self, key) {
-            (
-                Signal1D::Cosines { bandwidth }
-                | Signal1D::Sinc { bandwidth }
-                | Signal1D::SincSquared { bandwidth },
-                "bandwidth",
-            ) => *bandwidth = value,
-            (Signal1D::Box { width }, "width") => *width = value,
-            (Signal1D::Tent { radius }, "radius") => *radius = value,
-            (Signal1D::Gaussian { sigma }, "sigma") => *sigma = value,
-            (Signal1D::PulseTrain { period, .. }, "period") => *period = value,
-            (Signal1D::PulseTrain { duty, .. }, "duty") => *duty = value,
-            _ => {}
-        }
+family! {
+    /// A 1D test signal with a closed-form Fourier transform (see the module table). Errors
+    /// name `signal.<parameter>`.
+    Signal1D = "signal", "signals" {
+        /// ½cos 2π(B/4)x + 0.3cos 2π(B/2)x + 0.2cos 2πBx: band-limited to B.
+        Cosines(Cosines1D) = "cosines",
+        /// sinc(2Bx): F = 1/(2B) on |ω| < B.
+        Sinc(Sinc1D) = "sinc",
+        /// sinc²(Bx): F = (1/B)(1 − |ω|/B)₊.
+        SincSquared(SincSquared1D) = "sinc-squared",
+        /// The box of width w: F = w sinc(wω).
+        Box(Box1D) = "box",
+        /// The tent of radius w: F = w sinc²(wω).
+        Tent(Tent1D) = "tent",
+        /// e^{−x²/2σ²}: F = σ√(2π)e^{−2π²σ²ω²}.
+        Gaussian(Gaussian1D) = "gaussian",
+        /// Pulses of width d·p every p: Fourier series c_m = d sinc(md).
+        PulseTrain(PulseTrain1D) = "pulse-train",
     }
 }
 
@@ -122,40 +85,11 @@ pub enum SpectrumKind {
 
 impl Default for Signal1D {
     fn default() -> Self {
-        Signal1D::Tent { radius: 1.0 }
+        Signal1D::Tent(Tent1D::default())
     }
 }
 
 impl Signal1D {
-    /// Every signal with its default parameters.
-    pub fn all() -> Vec<Signal1D> {
-        vec![
-            Signal1D::Cosines { bandwidth: 1.5 },
-            Signal1D::Sinc { bandwidth: 1.5 },
-            Signal1D::SincSquared { bandwidth: 1.5 },
-            Signal1D::Box { width: 1.0 },
-            Signal1D::Tent { radius: 1.0 },
-            Signal1D::Gaussian { sigma: 0.3 },
-            Signal1D::PulseTrain {
-                period: 2.0,
-                duty: 0.5,
-            },
-        ]
-    }
-
-    /// Name in scene files.
-    pub fn name(&self) -> &'static str {
-        match self {
-            Signal1D::Cosines { .. } => "cosines",
-            Signal1D::Sinc { .. } => "sinc",
-            Signal1D::SincSquared { .. } => "sinc-squared",
-            Signal1D::Box { .. } => "box",
-            Signal1D::Tent { .. } => "tent",
-            Signal1D::Gaussian { .. } => "gaussian",
-            Signal1D::PulseTrain { .. } => "pulse-train",
-        }
-    }
-
     /// Checks every parameter; the error names `signal.<param>`.
     pub fn validate(&self) -> Result<(), TheoremError> {
         Ok(self.check_params()?)
@@ -164,7 +98,9 @@ impl Signal1D {
     /// Continuous spectrum or lines.
     pub fn spectrum_kind(&self) -> SpectrumKind {
         match self {
-            Signal1D::Cosines { .. } | Signal1D::PulseTrain { .. } => SpectrumKind::Lines,
+            Signal1D::Cosines(Cosines1D { .. }) | Signal1D::PulseTrain(PulseTrain1D { .. }) => {
+                SpectrumKind::Lines
+            }
             _ => SpectrumKind::Continuous,
         }
     }
@@ -172,9 +108,9 @@ impl Signal1D {
     /// The highest frequency of F (cycles per unit), `None` if not band-limited.
     pub fn bandwidth(&self) -> Option<f64> {
         match *self {
-            Signal1D::Cosines { bandwidth }
-            | Signal1D::Sinc { bandwidth }
-            | Signal1D::SincSquared { bandwidth } => Some(bandwidth),
+            Signal1D::Cosines(Cosines1D { bandwidth })
+            | Signal1D::Sinc(Sinc1D { bandwidth })
+            | Signal1D::SincSquared(SincSquared1D { bandwidth }) => Some(bandwidth),
             _ => None,
         }
     }
@@ -182,19 +118,19 @@ impl Signal1D {
     /// f(x).
     pub fn eval(&self, x: f64) -> f64 {
         match *self {
-            Signal1D::Cosines { bandwidth } => COSINES
+            Signal1D::Cosines(Cosines1D { bandwidth }) => COSINES
                 .iter()
                 .map(|&(a, r)| a * cos_pi(2.0 * r * bandwidth * x))
                 .sum(),
-            Signal1D::Sinc { bandwidth } => sinc(2.0 * bandwidth * x),
-            Signal1D::SincSquared { bandwidth } => {
+            Signal1D::Sinc(Sinc1D { bandwidth }) => sinc(2.0 * bandwidth * x),
+            Signal1D::SincSquared(SincSquared1D { bandwidth }) => {
                 let s = sinc(bandwidth * x);
                 s * s
             }
-            Signal1D::Box { width } => edge_value(x.abs(), 0.5 * width),
-            Signal1D::Tent { radius } => (1.0 - x.abs() / radius).max(0.0),
-            Signal1D::Gaussian { sigma } => (-x * x / (2.0 * sigma * sigma)).exp(),
-            Signal1D::PulseTrain { period, duty } => {
+            Signal1D::Box(Box1D { width }) => edge_value(x.abs(), 0.5 * width),
+            Signal1D::Tent(Tent1D { radius }) => (1.0 - x.abs() / radius).max(0.0),
+            Signal1D::Gaussian(Gaussian1D { sigma }) => (-x * x / (2.0 * sigma * sigma)).exp(),
+            Signal1D::PulseTrain(PulseTrain1D { period, duty }) => {
                 let t = x / period;
                 let d = (t - t.round()).abs();
                 edge_value(d, 0.5 * duty)
@@ -205,19 +141,21 @@ impl Signal1D {
     /// F(ω) for continuous spectra (real: every signal here is even); 0 for line spectra.
     pub fn transform(&self, omega: f64) -> f64 {
         match *self {
-            Signal1D::Sinc { bandwidth } => edge_value(omega.abs(), bandwidth) / (2.0 * bandwidth),
-            Signal1D::SincSquared { bandwidth } => {
+            Signal1D::Sinc(Sinc1D { bandwidth }) => {
+                edge_value(omega.abs(), bandwidth) / (2.0 * bandwidth)
+            }
+            Signal1D::SincSquared(SincSquared1D { bandwidth }) => {
                 (1.0 - omega.abs() / bandwidth).max(0.0) / bandwidth
             }
-            Signal1D::Box { width } => width * sinc(width * omega),
-            Signal1D::Tent { radius } => {
+            Signal1D::Box(Box1D { width }) => width * sinc(width * omega),
+            Signal1D::Tent(Tent1D { radius }) => {
                 let s = sinc(radius * omega);
                 radius * s * s
             }
-            Signal1D::Gaussian { sigma } => {
+            Signal1D::Gaussian(Gaussian1D { sigma }) => {
                 sigma * (2.0 * PI).sqrt() * (-2.0 * PI * PI * sigma * sigma * omega * omega).exp()
             }
-            Signal1D::Cosines { .. } | Signal1D::PulseTrain { .. } => 0.0,
+            Signal1D::Cosines(Cosines1D { .. }) | Signal1D::PulseTrain(PulseTrain1D { .. }) => 0.0,
         }
     }
 
@@ -226,7 +164,7 @@ impl Signal1D {
     /// [`PULSE_HARMONICS`]).
     pub fn lines(&self) -> (Vec<(f64, f64)>, f64) {
         match *self {
-            Signal1D::Cosines { bandwidth } => {
+            Signal1D::Cosines(Cosines1D { bandwidth }) => {
                 let mut v = Vec::new();
                 for &(a, r) in &COSINES {
                     v.push((-r * bandwidth, 0.5 * a));
@@ -234,7 +172,7 @@ impl Signal1D {
                 }
                 (v, 0.0)
             }
-            Signal1D::PulseTrain { period, duty } => {
+            Signal1D::PulseTrain(PulseTrain1D { period, duty }) => {
                 let v = (-PULSE_HARMONICS..=PULSE_HARMONICS)
                     .map(|m| (m as f64 / period, duty * sinc(m as f64 * duty)))
                     .collect();
@@ -249,21 +187,21 @@ impl Signal1D {
     /// pulse train d.
     pub fn energy(&self) -> f64 {
         match *self {
-            Signal1D::Cosines { .. } => COSINES.iter().map(|&(a, _)| 0.5 * a * a).sum(),
-            Signal1D::Sinc { bandwidth } => 0.5 / bandwidth,
-            Signal1D::SincSquared { bandwidth } => 2.0 / (3.0 * bandwidth),
-            Signal1D::Box { width } => width,
-            Signal1D::Tent { radius } => 2.0 * radius / 3.0,
-            Signal1D::Gaussian { sigma } => sigma * PI.sqrt(),
-            Signal1D::PulseTrain { duty, .. } => duty,
+            Signal1D::Cosines(Cosines1D { .. }) => COSINES.iter().map(|&(a, _)| 0.5 * a * a).sum(),
+            Signal1D::Sinc(Sinc1D { bandwidth }) => 0.5 / bandwidth,
+            Signal1D::SincSquared(SincSquared1D { bandwidth }) => 2.0 / (3.0 * bandwidth),
+            Signal1D::Box(Box1D { width }) => width,
+            Signal1D::Tent(Tent1D { radius }) => 2.0 * radius / 3.0,
+            Signal1D::Gaussian(Gaussian1D { sigma }) => sigma * PI.sqrt(),
+            Signal1D::PulseTrain(PulseTrain1D { duty, .. }) => duty,
         }
     }
 
     /// Half-width of the support of f (`None` when unbounded).
     pub fn support(&self) -> Option<f64> {
         match *self {
-            Signal1D::Box { width } => Some(0.5 * width),
-            Signal1D::Tent { radius } => Some(radius),
+            Signal1D::Box(Box1D { width }) => Some(0.5 * width),
+            Signal1D::Tent(Tent1D { radius }) => Some(radius),
             _ => None,
         }
     }
@@ -271,7 +209,7 @@ impl Signal1D {
     /// The width that sets the error integrals' cost: 2·support (box, tent), 8σ (Gaussian).
     pub fn cost_width(&self) -> Option<f64> {
         match *self {
-            Signal1D::Gaussian { sigma } => Some(8.0 * sigma),
+            Signal1D::Gaussian(Gaussian1D { sigma }) => Some(8.0 * sigma),
             _ => self.support().map(|s| 2.0 * s),
         }
     }
@@ -302,11 +240,10 @@ impl Signal1D {
             (f + a, a)
         };
         match *self {
-            Signal1D::Sinc { bandwidth } | Signal1D::SincSquared { bandwidth } => {
-                replicas(bandwidth)
-            }
-            Signal1D::Gaussian { sigma } => replicas(Self::gaussian_cut(sigma)),
-            Signal1D::Box { .. } | Signal1D::Tent { .. } => {
+            Signal1D::Sinc(Sinc1D { bandwidth })
+            | Signal1D::SincSquared(SincSquared1D { bandwidth }) => replicas(bandwidth),
+            Signal1D::Gaussian(Gaussian1D { sigma }) => replicas(Self::gaussian_cut(sigma)),
+            Signal1D::Box(Box1D { .. }) | Signal1D::Tent(Tent1D { .. }) => {
                 let t = 1.0 / rate;
                 let n_max = (self.support().unwrap_or(0.0) * rate).floor() as i64;
                 let mut p = self.eval(0.0);
@@ -316,7 +253,9 @@ impl Signal1D {
                 p *= t;
                 (p, p - self.transform(omega))
             }
-            Signal1D::Cosines { .. } | Signal1D::PulseTrain { .. } => (0.0, 0.0),
+            Signal1D::Cosines(Cosines1D { .. }) | Signal1D::PulseTrain(PulseTrain1D { .. }) => {
+                (0.0, 0.0)
+            }
         }
     }
 
@@ -328,10 +267,11 @@ impl Signal1D {
     /// An upper bound on |P(ω)| over all ω (continuous spectra).
     pub(super) fn periodized_bound(&self, rate: f64) -> f64 {
         match *self {
-            Signal1D::Sinc { bandwidth } | Signal1D::SincSquared { bandwidth } => {
+            Signal1D::Sinc(Sinc1D { bandwidth })
+            | Signal1D::SincSquared(SincSquared1D { bandwidth }) => {
                 self.transform(0.0) * (2.0 * bandwidth / rate + 1.0)
             }
-            Signal1D::Gaussian { .. } => {
+            Signal1D::Gaussian(Gaussian1D { .. }) => {
                 // F is even and decreasing in |ω|: on each side of the nearest replica the
                 // terms are at most (1/f_s)∫F, so Σ_k F(ω − k f_s) ≤ 2F(0) + f(0)/f_s.
                 2.0 * self.transform(0.0) + 1.0 / rate
@@ -366,16 +306,19 @@ mod tests {
 
     #[test]
     fn edge_values_are_mid_values_at_jumps() {
-        assert_eq!(Signal1D::Box { width: 1.0 }.eval(0.5), 0.5);
-        assert_eq!(Signal1D::Box { width: 1.0 }.eval(0.49), 1.0);
+        assert_eq!(Signal1D::Box(Box1D { width: 1.0 }).eval(0.5), 0.5);
+        assert_eq!(Signal1D::Box(Box1D { width: 1.0 }).eval(0.49), 1.0);
         assert_eq!(
-            Signal1D::PulseTrain {
+            Signal1D::PulseTrain(PulseTrain1D {
                 period: 2.0,
                 duty: 0.5
-            }
+            })
             .eval(2.5),
             0.5
         );
-        assert_eq!(Signal1D::Sinc { bandwidth: 2.0 }.transform(2.0), 0.125);
+        assert_eq!(
+            Signal1D::Sinc(Sinc1D { bandwidth: 2.0 }).transform(2.0),
+            0.125
+        );
     }
 }
