@@ -54,6 +54,7 @@
 //! faults of a virtual machine), which the large images make visible.
 
 use crate::core::filter::{Filter2D, Mode2D};
+use crate::core::format::significant;
 use crate::core::pattern::poisson::{default_radius, max_radius};
 use crate::core::pattern::{self, Pattern};
 use crate::core::recon::{self, ReferenceMethod, ReferenceOptions};
@@ -138,7 +139,7 @@ impl Estimate {
         }
     }
 
-    /// "best-candidate n = 200000, m = 1: about 2.0e10 candidates, about 12 min here".
+    /// "best-candidate n = 200000, m = 1: about 2e10 candidates, about 12 min here".
     pub fn describe(&self) -> String {
         format!(
             "{}: about {} {}, about {} here",
@@ -259,33 +260,12 @@ fn largest_bytes(plan: &[Estimate]) -> f64 {
     plan.iter().map(|e| e.bytes).fold(0.0, f64::max)
 }
 
-/// `x` with at most `digits` significant digits, without trailing zeros ("60", "12.3457").
-pub fn format_significant(x: f64, digits: usize) -> String {
-    if !x.is_finite() {
-        return format!("{x}");
-    }
-    if x == 0.0 {
-        return "0".into();
-    }
-    let magnitude = x.abs().log10().floor() as i32;
-    if !(-4..15).contains(&magnitude) {
-        return format!("{:.*e}", digits.saturating_sub(1), x);
-    }
-    let decimals = (digits as i32 - 1 - magnitude).max(0) as usize;
-    let s = format!("{x:.decimals$}");
-    if s.contains('.') {
-        s.trim_end_matches('0').trim_end_matches('.').to_string()
-    } else {
-        s
-    }
-}
-
-/// A count: exact below 10⁶ ("32640"), else two significant digits ("2.0e10").
+/// A count: exact below 10⁶ ("32640"), else two significant digits ("2e10").
 pub fn format_amount(x: f64) -> String {
     if x < 1e6 {
         format!("{}", x.round())
     } else {
-        format!("{x:.1e}")
+        significant(x, 2)
     }
 }
 
@@ -294,7 +274,7 @@ pub fn format_seconds(s: f64) -> String {
     if !s.is_finite() {
         "forever".into()
     } else if s < 10.0 {
-        format!("{} s", format_significant(s.max(0.0), 2))
+        format!("{} s", significant(s.max(0.0), 2))
     } else if s < 120.0 {
         format!("{:.0} s", s)
     } else if s < 2.0 * 3600.0 {
@@ -307,7 +287,7 @@ pub fn format_seconds(s: f64) -> String {
 }
 
 fn format_limit_seconds(s: f64) -> String {
-    format!("{} s", format_significant(s, 6))
+    format!("{} s", significant(s, 6))
 }
 
 /// Bytes for people: "512 KiB", "1.6 GiB".
@@ -325,7 +305,7 @@ pub fn format_bytes(b: f64) -> String {
     } else {
         (b / (KIB * KIB * KIB * KIB), "TiB")
     };
-    format!("{} {unit}", format_significant(value, 2))
+    format!("{} {unit}", significant(value, 2))
 }
 
 // ---------------------------------------------------------------------------------------
@@ -584,12 +564,12 @@ fn pattern_label(p: &Pattern, n: usize) -> String {
         Pattern::BestCandidate(b) => format!("best-candidate n = {n}, m = {}", b.m),
         Pattern::PoissonDart(d) => format!(
             "poisson-dart n = {n}, radius = {}, max_misses = {}",
-            format_significant(resolved_radius(d.radius, n), 6),
+            significant(resolved_radius(d.radius, n), 6),
             d.max_misses
         ),
         Pattern::PoissonBridson(b) => format!(
             "poisson-bridson n = {n}, radius = {}, k = {}",
-            format_significant(resolved_radius(b.radius, n), 6),
+            significant(resolved_radius(b.radius, n), 6),
             b.k
         ),
         Pattern::Pmj02bn(p) => format!("pmj02bn n = {n}, candidates = {}", p.candidates),
@@ -799,7 +779,7 @@ pub fn scattered(n: usize, w: usize, filter: &Filter2D) -> Estimate {
     Estimate::new(
         format!(
             "scattered reconstruction of {n} samples on {w}×{w} ({} px support)",
-            format_significant(r_px, 3)
+            significant(r_px, 3)
         ),
         taps,
         Unit::Taps,
@@ -1149,9 +1129,9 @@ mod tests {
     use super::*;
     use crate::core::cancel::Cancel;
     use crate::core::filter::Filter;
-    use crate::core::pattern::poisson::toroidal_distance_squared;
     use crate::core::pattern::{BestCandidate, Jitter, PoissonBridson, PoissonDart};
     use crate::core::rng::Rng;
+    use crate::core::torus;
     use glam::DVec2;
 
     #[test]
@@ -1179,7 +1159,10 @@ mod tests {
         while pts.len() < n {
             darts += 1;
             let c = DVec2::new(rng.next_f64(), rng.next_f64());
-            if pts.iter().any(|&q| toroidal_distance_squared(c, q) < r * r) {
+            if pts
+                .iter()
+                .any(|&q| torus::distance_squared(c, q, 1.0) < r * r)
+            {
                 misses += 1;
                 if misses >= max_misses {
                     break;
@@ -1262,7 +1245,7 @@ mod tests {
                 let c = DVec2::new(wrap(centre.x + d.x), wrap(centre.y + d.y));
                 if pts
                     .iter()
-                    .all(|&q| toroidal_distance_squared(c, q) >= r * r)
+                    .all(|&q| torus::distance_squared(c, q, 1.0) >= r * r)
                 {
                     active.push(pts.len());
                     pts.push(c);
@@ -1430,9 +1413,7 @@ mod tests {
         ];
         let err = Budget::default().check(&plan).expect_err("over budget");
         let text = err.to_string();
-        assert!(
-            text.starts_with("best-candidate n = 200000, m = 1: about 2.0e10 candidates, about ")
-        );
+        assert!(text.starts_with("best-candidate n = 200000, m = 1: about 2e10 candidates, about "));
         assert!(text.ends_with("; the limit is 60 s"), "{text}");
         assert!(matches!(err, OverBudget::Time { .. }));
         // Raised far enough, it passes; memory is a limit of its own.
@@ -1454,14 +1435,9 @@ mod tests {
     }
 
     #[test]
-    fn numbers_have_at_most_six_significant_digits() {
-        assert_eq!(format_significant(60.0, 6), "60");
-        assert_eq!(format_significant(12.345_678_9, 6), "12.3457");
-        assert_eq!(format_significant(0.25, 6), "0.25");
-        assert_eq!(format_significant(123_456_789.0, 6), "123456789");
-        assert_eq!(format_significant(1e-7, 6), "1.00000e-7");
+    fn amounts_durations_and_bytes_read_as_people_write_them() {
         assert_eq!(format_amount(32640.0), "32640");
-        assert_eq!(format_amount(2e10), "2.0e10");
+        assert_eq!(format_amount(2e10), "2e10");
         assert_eq!(format_seconds(0.123), "0.12 s");
         assert_eq!(format_seconds(43.2), "43 s");
         assert_eq!(format_seconds(720.0), "12 min");

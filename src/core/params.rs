@@ -122,37 +122,7 @@ impl ParamError {
     }
 }
 
-/// A number for an error message or a label: at most 6 significant digits, plain notation for
-/// 10⁻⁴ ≤ |v| < 10⁶ and scientific notation outside (so 5e-324 is `5e-324`, not 330 digits).
-pub fn fmt_num(v: f64) -> String {
-    if !v.is_finite() || v == 0.0 {
-        return format!("{v}");
-    }
-    let shortest = format!("{v:e}");
-    let digits = shortest
-        .split('e')
-        .next()
-        .unwrap_or("")
-        .chars()
-        .filter(char::is_ascii_digit)
-        .count();
-    let sci = if digits <= 6 {
-        shortest
-    } else {
-        format!("{v:.5e}")
-    };
-    let (mantissa, exp) = sci.split_once('e').unwrap_or((&sci, "0"));
-    let rounded: f64 = sci.parse().unwrap_or(v);
-    if (1e-4..1e6).contains(&rounded.abs()) {
-        return format!("{rounded}");
-    }
-    let mantissa = if mantissa.contains('.') {
-        mantissa.trim_end_matches('0').trim_end_matches('.')
-    } else {
-        mantissa
-    };
-    format!("{mantissa}e{exp}")
-}
+pub use crate::core::format::fmt_num;
 
 /// A number as text that parses back to the same f64: the shortest round-trip digits, in
 /// scientific notation when the plain form would be longer than 20 characters.

@@ -45,7 +45,7 @@ fn the_measured_failures_are_refused_at_once() {
     // Θ(m N²) candidates: ≥ 15 min measured at 200 000 points, far more at the pattern limit.
     assert_refused(
         &["points", "best-candidate", "-n", "200000"],
-        "best-candidate n = 200000, m = 1: about 2.0e10 candidates, about",
+        "best-candidate n = 200000, m = 1: about 2e10 candidates, about",
         limit,
     );
     assert_refused(

@@ -9,13 +9,14 @@ use glam::DVec2;
 use samplescope::core::cancel::Cancel;
 use samplescope::core::pattern::best_candidate::{best_candidate, best_candidate_naive, tile};
 use samplescope::core::pattern::poisson::{
-    bridson, bridson_min_radius, dart, dart_naive, default_radius, max_radius, toroidal_distance,
+    bridson, bridson_min_radius, dart, dart_naive, default_radius, max_radius,
     DEFAULT_RADIUS_FRACTION,
 };
 use samplescope::core::pattern::{
     BestCandidate, Generated, Pattern, PatternError, PoissonBridson, PoissonDart, MAX_N,
 };
 use samplescope::core::rng::Rng;
+use samplescope::core::torus;
 use std::time::{Duration, Instant};
 
 fn never() -> Cancel {
@@ -27,7 +28,7 @@ fn min_distance(points: &[DVec2]) -> f64 {
     let mut d = f64::INFINITY;
     for i in 0..points.len() {
         for j in 0..i {
-            d = d.min(toroidal_distance(points[i], points[j]));
+            d = d.min(torus::distance(points[i], points[j], 1.0));
         }
     }
     d
@@ -327,7 +328,7 @@ fn bridson_maximal_set_leaves_little_room_for_another_disk() {
     let fits = (0..darts)
         .filter(|_| {
             let q = DVec2::new(rng.next_f64(), rng.next_f64());
-            g.points.iter().all(|&x| toroidal_distance(q, x) >= r)
+            g.points.iter().all(|&x| torus::distance(q, x, 1.0) >= r)
         })
         .count();
     assert!(
@@ -650,7 +651,7 @@ fn tile_is_seamless_and_counts_right() {
         for i in 0..tiled.len() {
             for j in 0..i {
                 if tile_of(i) != tile_of(j) {
-                    across = across.min(toroidal_distance(tiled[i], tiled[j]));
+                    across = across.min(torus::distance(tiled[i], tiled[j], 1.0));
                 }
             }
         }

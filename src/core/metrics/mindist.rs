@@ -13,6 +13,7 @@
 //!
 //! Duplicate points give `d_min = 0` (a valid answer, not an error).
 
+use crate::core::torus;
 use glam::DVec2;
 use serde::Serialize;
 
@@ -45,16 +46,6 @@ pub struct MinDistance {
 /// hexagon of area 1/N = (√3/2)·d²). PSA's normalisation factor `√(√3·N/2)` is `1/d_hex(N)`.
 pub fn hex_distance(n: usize) -> f64 {
     (2.0 / (3f64.sqrt() * n as f64)).sqrt()
-}
-
-/// Squared toroidal distance.
-#[inline]
-fn torus_d2(p: DVec2, q: DVec2) -> f64 {
-    let mut dx = (p.x - q.x).abs();
-    let mut dy = (p.y - q.y).abs();
-    dx = dx.min(1.0 - dx);
-    dy = dy.min(1.0 - dy);
-    dx * dx + dy * dy
 }
 
 /// Per-point nearest neighbour: (squared distance, index), ties broken by the smaller index.
@@ -138,7 +129,7 @@ pub fn min_distance_naive(points: &[DVec2], cancel: &Cancel) -> Result<MinDistan
             cancel.check()?;
         }
         for j in i + 1..n {
-            let d2 = torus_d2(points[i], points[j]);
+            let d2 = torus::distance_squared(points[i], points[j], 1.0);
             nn[i].offer(d2, j);
             nn[j].offer(d2, i);
         }
@@ -199,7 +190,7 @@ pub fn min_distance(points: &[DVec2], cancel: &Cancel) -> Result<MinDistance, Me
             for &(q, j) in &sorted[start[c] as usize..start[c + 1] as usize] {
                 let j = j as usize;
                 if j != i {
-                    best.offer(torus_d2(p, q), j);
+                    best.offer(torus::distance_squared(p, q, 1.0), j);
                 }
             }
         };
@@ -210,7 +201,7 @@ pub fn min_distance(points: &[DVec2], cancel: &Cancel) -> Result<MinDistance, Me
                 // The ring would wrap onto cells already searched: finish by brute force.
                 for (j, &q) in points.iter().enumerate() {
                     if j != i {
-                        best.offer(torus_d2(p, q), j);
+                        best.offer(torus::distance_squared(p, q, 1.0), j);
                     }
                 }
                 break;
@@ -260,7 +251,7 @@ mod tests {
 
     #[test]
     fn wrap_around_distance() {
-        let d2 = torus_d2(DVec2::new(0.01, 0.5), DVec2::new(0.99, 0.5));
+        let d2 = torus::distance_squared(DVec2::new(0.01, 0.5), DVec2::new(0.99, 0.5), 1.0);
         assert!((d2.sqrt() - 0.02).abs() < 1e-15);
     }
 }

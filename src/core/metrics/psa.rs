@@ -105,7 +105,7 @@ use std::f64::consts::{FRAC_PI_4, PI, TAU};
 
 use super::{hex_distance, validate, Cancel, MetricsError, CANCEL_STRIDE};
 use crate::core::filter::special::bessel_j0;
-use crate::core::pattern::poisson::torus_d2;
+use crate::core::torus;
 use crate::core::torus::{circumcircle, circumdisc_in_band};
 
 /// The fewest points the PSA statistics accept (an RDF needs a pair).
@@ -303,7 +303,7 @@ pub fn rdf(
                 cancel.check()?;
                 let p = points[i];
                 for q in &points[i + 1..] {
-                    if let Some(b) = bin_of(torus_d2(p, *q).sqrt(), dr, bins) {
+                    if let Some(b) = bin_of(torus::distance_squared(p, *q, 1.0).sqrt(), dr, bins) {
                         h[b] += 1;
                     }
                 }
@@ -337,7 +337,11 @@ pub fn rdf_naive(
             cancel.check()?;
         }
         for j in i + 1..n {
-            if let Some(b) = bin_of(torus_d2(points[i], points[j]).sqrt(), dr, bins) {
+            if let Some(b) = bin_of(
+                torus::distance_squared(points[i], points[j], 1.0).sqrt(),
+                dr,
+                bins,
+            ) {
                 counts[b] += 1;
             }
         }
@@ -641,9 +645,10 @@ fn toroidal_rings(points: &[DVec2], w: f64, accept: bool) -> Option<Vec<Vec<DVec
     // point (rare: a linear search each).
     for i in dropped {
         let p = points[i];
-        let best = (0..n)
-            .filter(|&j| inedge[j] != EMPTY)
-            .min_by(|&a, &b| torus_d2(p, points[a]).total_cmp(&torus_d2(p, points[b])));
+        let best = (0..n).filter(|&j| inedge[j] != EMPTY).min_by(|&a, &b| {
+            torus::distance_squared(p, points[a], 1.0)
+                .total_cmp(&torus::distance_squared(p, points[b], 1.0))
+        });
         if let Some(j) = best {
             rings[i] = rings[j].clone();
         }

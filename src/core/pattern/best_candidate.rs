@@ -15,7 +15,7 @@
 //!
 //! Everything comes from `Rng::new(seed)`: point 0 is two [`Rng::next_f64`] calls (x then y),
 //! then every candidate of every point, in order, is two more (x then y). Distances are
-//! [`toroidal_distance_squared`](super::poisson::toroidal_distance_squared); candidate q replaces the current best when D(q)² > best D².
+//! [`torus::distance_squared`](crate::core::torus::distance_squared); candidate q replaces the current best when D(q)² > best D².
 //!
 //! # Acceleration
 //!
@@ -30,16 +30,17 @@
 //!    any cell not yet visited (then it is the exact minimum).
 //!
 //! Every distance is the same expression as the scan's (the toroidal squared distance of
-//! [`toroidal_distance_squared`](super::poisson::toroidal_distance_squared)), so [`best_candidate()`] returns
+//! [`torus::distance_squared`](crate::core::torus::distance_squared)), so [`best_candidate()`] returns
 //! the same points as [`best_candidate_naive`], bit for bit; the cost per candidate is O(1)
 //! expected instead of O(i). The total work stays Θ(m N²) candidates, each costing two random
 //! numbers, which bounds the speed from below.
 //!
 //! # Reference
 //! D. P. Mitchell, "Spectrally optimal sampling for distribution ray tracing", SIGGRAPH 1991.
-use super::poisson::{torus_d2, TorusGrid, NONE};
+use super::poisson::{TorusGrid, NONE};
 use super::*;
 use crate::core::rng::Rng;
+use crate::core::torus;
 
 /// Grid cells per placed point used by the accelerated search (applied at each rebuild).
 pub const CELLS_PER_POINT: f64 = 2.0;
@@ -164,7 +165,7 @@ impl NearRaster {
         let (dist, near) = (&mut self.dist, &mut self.near);
         let mut claim = |x: usize, y: usize| {
             let c = DVec2::new((x as f64 + 0.5) * inv, (y as f64 + 0.5) * inv);
-            let d = torus_d2(c, p);
+            let d = torus::distance_squared(c, p, 1.0);
             let k = y * h + x;
             if d < dist[k] {
                 dist[k] = d;
@@ -223,7 +224,7 @@ impl Accel {
     /// Same value as [`nearest_beyond_naive`].
     #[inline(always)]
     fn nearest_beyond(&self, points: &[DVec2], q: DVec2, best_d2: f64) -> Option<f64> {
-        if torus_d2(q, self.raster.proposal(q)) <= best_d2 {
+        if torus::distance_squared(q, self.raster.proposal(q), 1.0) <= best_d2 {
             return None;
         }
         nearest_beyond(&self.grid, points, q, best_d2)
@@ -287,7 +288,7 @@ fn generate(
 fn nearest_beyond_naive(points: &[DVec2], q: DVec2, best_d2: f64) -> Option<f64> {
     let mut dmin = f64::INFINITY;
     for &x in points {
-        let d2 = torus_d2(q, x);
+        let d2 = torus::distance_squared(q, x, 1.0);
         if d2 <= best_d2 {
             return None;
         }
@@ -317,7 +318,7 @@ fn nearest_beyond(grid: &TorusGrid, points: &[DVec2], q: DVec2, best_d2: f64) ->
         ($x:expr, $y:expr) => {{
             let mut i = grid.first($x, $y);
             while i != NONE {
-                let d2 = torus_d2(q, points[i as usize]);
+                let d2 = torus::distance_squared(q, points[i as usize], 1.0);
                 if d2 <= best_d2 {
                     return None;
                 }
@@ -451,7 +452,7 @@ mod tests {
     fn naive_nearest(points: &[DVec2], q: DVec2) -> f64 {
         points
             .iter()
-            .map(|&x| torus_d2(q, x))
+            .map(|&x| torus::distance_squared(q, x, 1.0))
             .fold(f64::INFINITY, f64::min)
     }
 

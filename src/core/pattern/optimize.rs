@@ -96,9 +96,9 @@
 //! gradient up to the truncation bound above. The iterations themselves are what the papers
 //! prescribe: they converge towards, not to, the optimum.
 
-use super::poisson::torus_d2;
 use super::{clamp_unit, Cancel, PatternError, MAX_N};
 use crate::core::rng::Rng;
+use crate::core::torus;
 use crate::core::torus::{circumcircle, circumdisc_in_band};
 use glam::DVec2;
 use rayon::prelude::*;
@@ -164,21 +164,6 @@ fn wrap_unit(x: f64) -> f64 {
 #[inline]
 fn wrap_point(p: DVec2) -> DVec2 {
     DVec2::new(wrap_unit(p.x), wrap_unit(p.y))
-}
-
-/// The toroidal displacement a − b reduced to [−½, ½] per coordinate (a, b in [0,1)²).
-#[inline]
-fn torus_delta(a: DVec2, b: DVec2) -> DVec2 {
-    let wrap = |d: f64| {
-        if d > 0.5 {
-            d - 1.0
-        } else if d < -0.5 {
-            d + 1.0
-        } else {
-            d
-        }
-    };
-    DVec2::new(wrap(a.x - b.x), wrap(a.y - b.y))
 }
 
 /// The checks of [`sot`]: `n`, `iterations` and `directions`.
@@ -461,7 +446,7 @@ fn raster_labels(points: &[DVec2], r: usize, cancel: &Cancel) -> Result<Vec<u32>
                     let q = DVec2::new((x as f64 + 0.5) / r as f64, qy);
                     let mut best = (f64::INFINITY, 0u32);
                     for (i, &p) in points.iter().enumerate() {
-                        let d2 = torus_d2(q, p);
+                        let d2 = torus::distance_squared(q, p, 1.0);
                         if d2 < best.0 {
                             best = (d2, i as u32);
                         }
@@ -484,7 +469,7 @@ fn raster_centroids(points: &[DVec2], labels: &[u32], r: usize) -> Vec<DVec2> {
             ((k / r) as f64 + 0.5) / r as f64,
         );
         let i = i as usize;
-        sum[i] += torus_delta(q, points[i]);
+        sum[i] += torus::delta(q, points[i], 1.0);
         count[i] += 1;
     }
     points
@@ -793,7 +778,7 @@ fn gbn_interactions(
         let mut f = DVec2::ZERO;
         let mut visit = |q: DVec2, j: usize| {
             if j != i {
-                let d = torus_delta(p, q);
+                let d = torus::delta(p, q, 1.0);
                 let d2 = d.length_squared();
                 if d2 < r2 {
                     let w = (k * d2).exp();
@@ -969,7 +954,7 @@ mod tests {
     fn max_torus_gap(a: &[DVec2], b: &[DVec2]) -> f64 {
         a.iter()
             .zip(b)
-            .map(|(p, q)| torus_d2(*p, *q).sqrt())
+            .map(|(p, q)| torus::distance_squared(*p, *q, 1.0).sqrt())
             .fold(0.0, f64::max)
     }
 
@@ -1007,7 +992,7 @@ mod tests {
                 ((k / r) as f64 + 0.5) / r as f64,
             );
             count[i as usize] += 1;
-            energy += torus_delta(q, pts[i as usize]).length_squared();
+            energy += torus::delta(q, pts[i as usize], 1.0).length_squared();
         }
         energy /= (r * r) as f64;
         let exact: f64 = cells.iter().map(|c| c.energy).sum();
@@ -1034,7 +1019,7 @@ mod tests {
         let widest = voronoi_with_band(&pts, MAX_BAND, true).unwrap();
         for (a, b) in auto.iter().zip(&widest) {
             assert!((a.area - b.area).abs() < 1e-15);
-            assert!(torus_d2(a.centroid, b.centroid).sqrt() < 1e-15);
+            assert!(torus::distance_squared(a.centroid, b.centroid, 1.0).sqrt() < 1e-15);
             assert!((a.energy - b.energy).abs() < 1e-17);
         }
     }
@@ -1360,7 +1345,9 @@ mod tests {
             .iter()
             .enumerate()
             .filter(|&(j, _)| j != i)
-            .map(|(_, &q)| (-torus_delta(x, q).length_squared() / (2.0 * sigma * sigma)).exp())
+            .map(|(_, &q)| {
+                (-torus::delta(x, q, 1.0).length_squared() / (2.0 * sigma * sigma)).exp()
+            })
             .sum()
     }
 

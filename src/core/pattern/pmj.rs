@@ -69,9 +69,9 @@
 //!   Computer Graphics Forum 37(4) (EGSR 2018).
 //! - M. Pharr, "Efficient generation of points that satisfy two-dimensional elementary
 //!   intervals", JCGT 8(1), 2019.
-use super::poisson::torus_d2;
 use super::*;
 use crate::core::rng::Rng;
+use crate::core::torus;
 
 /// Largest allowed `candidates` for [`pmj02bn`].
 pub const MAX_CANDIDATES: u32 = 1024;
@@ -328,7 +328,7 @@ impl BnGrid {
     fn nearest_beyond(&self, points: &[DVec2], q: DVec2, best_d2: f64) -> Option<f64> {
         let mut dmin = f64::INFINITY;
         for &i in &self.spill {
-            let d2 = torus_d2(q, points[i as usize]);
+            let d2 = torus::distance_squared(q, points[i as usize], 1.0);
             if d2 <= best_d2 {
                 return None;
             }
@@ -352,7 +352,7 @@ impl BnGrid {
                     if i == NONE {
                         break;
                     }
-                    let d2 = torus_d2(q, points[i as usize]);
+                    let d2 = torus::distance_squared(q, points[i as usize], 1.0);
                     if d2 <= best_d2 {
                         return None;
                     }
@@ -557,7 +557,7 @@ fn generate_naive(
                 }
                 let d2 = pts
                     .iter()
-                    .map(|&p| torus_d2(q, p))
+                    .map(|&p| torus::distance_squared(q, p, 1.0))
                     .fold(f64::INFINITY, f64::min);
                 if t == 0 || d2 > best_d2 {
                     best = q;
@@ -716,7 +716,7 @@ mod tests {
                 let q = DVec2::new(rng.next_f64(), rng.next_f64());
                 let exact = pts[..used]
                     .iter()
-                    .map(|&p| torus_d2(q, p))
+                    .map(|&p| torus::distance_squared(q, p, 1.0))
                     .fold(f64::INFINITY, f64::min);
                 assert_eq!(grid.nearest_beyond(&pts, q, -1.0), Some(exact), "k {k}");
                 assert_eq!(grid.nearest_beyond(&pts, q, 0.5 * exact), Some(exact));
@@ -761,7 +761,7 @@ mod tests {
             let mut nn = vec![f64::INFINITY; pts.len()];
             for i in 0..pts.len() {
                 for j in i + 1..pts.len() {
-                    let d2 = torus_d2(pts[i], pts[j]);
+                    let d2 = torus::distance_squared(pts[i], pts[j], 1.0);
                     nn[i] = nn[i].min(d2);
                     nn[j] = nn[j].min(d2);
                 }

@@ -5,7 +5,7 @@
 //!
 //! - Points live in [0,1)² and every distance is **toroidal**:
 //!   d(a, b)² = Δx² + Δy² with Δ = min(|a − b|, 1 − |a − b|) per coordinate
-//!   ([`toroidal_distance`]). A pattern computed on the torus tiles the plane seamlessly.
+//!   ([`torus::distance`](crate::core::torus::distance)). A pattern computed on the torus tiles the plane seamlessly.
 //! - **Radius.** `radius` is the minimum toroidal distance between two points of the pattern.
 //!   The lecture's pseudo-code rejects a dart when d² < (2 r_p)² (r_p is the radius of the disk
 //!   drawn around each point, so disks may touch but not overlap); hence `radius = 2 r_p`, and a
@@ -29,6 +29,7 @@
 use super::*;
 use crate::core::params::fmt_num;
 use crate::core::rng::Rng;
+use crate::core::torus;
 
 /// Fraction of the hexagonal packing distance used when `radius = 0`: r = 0.65 · d_max(n).
 pub const DEFAULT_RADIUS_FRACTION: f64 = 0.65;
@@ -52,41 +53,6 @@ pub fn max_radius(n: usize) -> f64 {
 /// Radius used when the `radius` parameter is 0: [`DEFAULT_RADIUS_FRACTION`] · [`max_radius`]`(n)`.
 pub fn default_radius(n: usize) -> f64 {
     DEFAULT_RADIUS_FRACTION * max_radius(n)
-}
-
-/// Squared toroidal distance on the unit torus:
-/// Δx² + Δy² with Δ = min(|a − b| mod 1, 1 − |a − b| mod 1) per coordinate.
-///
-/// For points in [0,1)² the reduction modulo 1 never triggers and the result is bitwise the
-/// crate-internal unit-domain form that every Poisson-disk and best-candidate routine uses (fast
-/// paths and naive references alike, so their accept/reject decisions agree bit for bit).
-pub fn toroidal_distance_squared(a: DVec2, b: DVec2) -> f64 {
-    let wrap = |d: f64| {
-        let d = d.abs() % 1.0;
-        d.min(1.0 - d)
-    };
-    let dx = wrap(a.x - b.x);
-    let dy = wrap(a.y - b.y);
-    dx * dx + dy * dy
-}
-
-/// Squared toroidal distance of two points of [0,1)² (so |a − b| < 1 per coordinate):
-/// Δx² + Δy² with Δ = min(|a − b|, 1 − |a − b|). Branch-free; the hot path of every search here.
-#[inline(always)]
-pub(crate) fn torus_d2(a: DVec2, b: DVec2) -> f64 {
-    let dx = (a.x - b.x).abs();
-    let dy = (a.y - b.y).abs();
-    // `if d < 1 − d` rather than f64::min: the same value for every non-NaN d, one instruction.
-    let (ex, ey) = (1.0 - dx, 1.0 - dy);
-    let dx = if dx < ex { dx } else { ex };
-    let dy = if dy < ey { dy } else { ey };
-    dx * dx + dy * dy
-}
-
-/// Toroidal (periodic) distance on the unit torus, in units of the square's side:
-/// √(Δx² + Δy²), Δ = min(|a − b| mod 1, 1 − |a − b| mod 1). At most √2 / 2.
-pub fn toroidal_distance(a: DVec2, b: DVec2) -> f64 {
-    toroidal_distance_squared(a, b).sqrt()
 }
 
 /// Resolves the `radius` parameter: 0 → [`default_radius`]; otherwise it must be finite, in
@@ -190,7 +156,7 @@ impl TorusGrid {
         let scan = |x: usize, y: usize| {
             let mut i = self.first(x, y);
             while i != NONE {
-                if torus_d2(q, points[i as usize]) < r2 {
+                if torus::distance_squared(q, points[i as usize], 1.0) < r2 {
                     return true;
                 }
                 i = self.after(i);
@@ -304,11 +270,11 @@ impl PaddedGrid {
         // The 3 × 3 block without branches (most conflicts are there), then the rest.
         let (near, far) = self.offsets.split_at(self.offsets.len().min(9));
         let hit = near.iter().fold(false, |acc, &o| {
-            acc | (torus_d2(q, points[corner[o] as usize]) < r2)
+            acc | (torus::distance_squared(q, points[corner[o] as usize], 1.0) < r2)
         });
         hit || far
             .iter()
-            .any(|&o| torus_d2(q, points[corner[o] as usize]) < r2)
+            .any(|&o| torus::distance_squared(q, points[corner[o] as usize], 1.0) < r2)
     }
 }
 
@@ -417,7 +383,9 @@ fn dart_impl(
         let c = DVec2::new(x, y);
         let reject = match &grid {
             Some(g) => g.any_within(&points, c, r2, k),
-            None => points.iter().any(|&q| torus_d2(c, q) < r2),
+            None => points
+                .iter()
+                .any(|&q| torus::distance_squared(c, q, 1.0) < r2),
         };
         if reject {
             misses += 1;
@@ -623,39 +591,6 @@ mod tests {
     }
 
     #[test]
-    fn toroidal_distance_wraps_across_the_border() {
-        let a = DVec2::new(0.05, 0.5);
-        let b = DVec2::new(0.95, 0.5);
-        assert!((toroidal_distance(a, b) - 0.1).abs() < 1e-15);
-        let c = DVec2::new(0.02, 0.03);
-        let d = DVec2::new(0.99, 0.98);
-        assert!((toroidal_distance(c, d) - (0.03f64.hypot(0.05))).abs() < 1e-15);
-        // Largest possible distance: half the diagonal.
-        let e = DVec2::new(0.5, 0.5);
-        assert!((toroidal_distance(DVec2::ZERO, e) - 0.5f64.sqrt()).abs() < 1e-15);
-        // Points outside [0,1)² are reduced modulo 1.
-        assert!((toroidal_distance(DVec2::new(2.25, 0.0), DVec2::ZERO) - 0.25).abs() < 1e-15);
-    }
-
-    #[test]
-    fn unit_domain_distance_is_bitwise_the_public_one() {
-        let mut rng = Rng::new(2);
-        for _ in 0..100_000 {
-            let a = DVec2::new(rng.next_f64(), rng.next_f64());
-            let b = DVec2::new(rng.next_f64(), rng.next_f64());
-            assert_eq!(
-                torus_d2(a, b).to_bits(),
-                toroidal_distance_squared(a, b).to_bits()
-            );
-        }
-        let edge = DVec2::new(ONE_MINUS_EPSILON, 0.5);
-        assert_eq!(
-            torus_d2(edge, DVec2::ZERO).to_bits(),
-            toroidal_distance_squared(edge, DVec2::ZERO).to_bits()
-        );
-    }
-
-    #[test]
     fn padded_grid_any_within_equals_scan_of_every_point() {
         let mut rng = Rng::new(8);
         for &r in &[0.011, 0.05, 0.3, 0.6, 1.0] {
@@ -665,14 +600,19 @@ mod tests {
             let mut pts = vec![NAN_POINT];
             for _ in 0..3000 {
                 let q = DVec2::new(rng.next_f64(), rng.next_f64());
-                if pts[1..].iter().all(|&p| torus_d2(q, p) >= r * r) {
+                if pts[1..]
+                    .iter()
+                    .all(|&p| torus::distance_squared(q, p, 1.0) >= r * r)
+                {
                     grid.insert(pts.len() as u32, q);
                     pts.push(q);
                 }
             }
             for _ in 0..3000 {
                 let q = DVec2::new(rng.next_f64(), rng.next_f64());
-                let scan = pts[1..].iter().any(|&p| torus_d2(q, p) < r * r);
+                let scan = pts[1..]
+                    .iter()
+                    .any(|&p| torus::distance_squared(q, p, 1.0) < r * r);
                 assert_eq!(grid.any_within(&pts, q, r * r), scan, "r = {r}, q = {q}");
             }
         }
@@ -692,7 +632,9 @@ mod tests {
             let k = reach(r, grid.g);
             for _ in 0..2000 {
                 let q = DVec2::new(rng.next_f64(), rng.next_f64());
-                let scan = pts.iter().any(|&p| torus_d2(q, p) < r * r);
+                let scan = pts
+                    .iter()
+                    .any(|&p| torus::distance_squared(q, p, 1.0) < r * r);
                 assert_eq!(grid.any_within(&pts, q, r * r, k), scan, "r = {r}, q = {q}");
             }
         }

@@ -87,6 +87,7 @@ use crate::core::cancel::Cancel;
 use crate::core::pattern::lowdisc::{owen_scramble, sobol_point_u32};
 use crate::core::pattern::{clamp_unit, Pattern};
 use crate::core::rng::derive_seed;
+use crate::core::torus;
 use glam::DVec2;
 use rayon::prelude::*;
 use rustfft::num_complex::Complex;
@@ -189,14 +190,6 @@ fn own_offset(p: DVec2, t: usize) -> DVec2 {
     )
 }
 
-/// Squared distance on the torus of side T (tile units).
-#[inline]
-fn torus_d2(a: DVec2, b: DVec2, t: f64) -> f64 {
-    let d = (a - b).abs();
-    let d = DVec2::new(d.x.min(t - d.x), d.y.min(t - d.y));
-    d.length_squared()
-}
-
 /// The placed offsets of the tile, cell-major (cell c = cy·T + cx owns slots c·s ..< (c+1)·s,
 /// the first `filled[c]` of them used), with the pattern index of each.
 struct Placement {
@@ -229,7 +222,7 @@ impl Placement {
                 for &u in &self.offsets[used] {
                     let p = corner + u;
                     for (b, a) in best.iter_mut().zip(at) {
-                        *b = b.min(torus_d2(*a, p, tf));
+                        *b = b.min(torus::distance_squared(*a, p, tf));
                     }
                 }
             }
@@ -290,7 +283,11 @@ fn relocate(
         let score = pl.nearest_d2(&at, bx, by);
         let mut best: Option<(f64, f64, DVec2)> = None; // (score, −displacement², offset)
         for k in 0..4 {
-            let cand = (score[k], -torus_d2(at[k], origin, tf), images[k]);
+            let cand = (
+                score[k],
+                -torus::distance_squared(at[k], origin, tf),
+                images[k],
+            );
             if best.is_none_or(|(s0, d0, _)| (cand.0, cand.1) > (s0, d0)) {
                 best = Some(cand);
             }

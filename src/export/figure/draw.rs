@@ -12,6 +12,7 @@
 use super::canvas::{ensure_font, Area, Canvas, Chart, PlacedImage, FONT, SUB};
 use super::drawing::Drawing;
 use super::{Figure, Rgb};
+use crate::core::format;
 use crate::export::ExportError;
 use crate::model::{palette, Colormap, ColumnData, FigureContext, FigureKind, ImageData};
 use plotters::prelude::*;
@@ -454,14 +455,10 @@ pub(super) fn log_ticks(lo: f64, hi: f64) -> Vec<f64> {
     }
 }
 
-/// A tick value with as many decimals as its magnitude needs (0.02, 0.5, 20).
+/// A tick value of a log axis (m·10^k, m = 1…9) with as many decimals as its magnitude needs:
+/// one significant digit in plain notation ([`format::plain`]: 0.02, 0.5, 20, 1000000).
 pub(super) fn tick_label(v: &f64) -> String {
-    let decimals = if *v > 0.0 {
-        (-v.log10().floor()).max(0.0) as usize
-    } else {
-        0
-    };
-    format!("{v:.decimals$}")
+    format::plain(*v, 1)
 }
 
 /// Stems from 0 to each point, with a filled marker of `radius` (× scale) on top when there
@@ -705,6 +702,27 @@ mod tests {
         assert_eq!(tick_label(&0.02), "0.02");
         assert_eq!(tick_label(&0.5), "0.5");
         assert_eq!(tick_label(&200.0), "200");
+    }
+
+    /// The tick labels are what they were before the one formatter (decimals from the
+    /// magnitude's floor), for every tick any log axis can have: m·10^k, m = 1…9, |k| ≤ 15.
+    #[test]
+    fn tick_labels_are_unchanged_on_every_log_tick() {
+        let before = |v: f64| {
+            let decimals = (-v.log10().floor()).max(0.0) as usize;
+            format!("{v:.decimals$}")
+        };
+        for lo in [1e-15, 3e-9, 1e-3, 0.7, 5.0, 1e3, 2e6, 1e12] {
+            for v in log_ticks(lo, lo * 1e3) {
+                assert_eq!(tick_label(&v), before(v), "{v:e}");
+            }
+        }
+        for k in -15..=15 {
+            for m in 1..=9 {
+                let v = f64::from(m) * 10f64.powi(k);
+                assert_eq!(tick_label(&v), before(v), "{v:e}");
+            }
+        }
     }
 
     #[test]
