@@ -18,6 +18,7 @@ mod figure_kind;
 mod filter;
 mod image;
 mod integration;
+pub mod marks;
 pub mod palette;
 mod points;
 mod publication;

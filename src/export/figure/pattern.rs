@@ -10,7 +10,9 @@ use super::csv::curve;
 use super::draw::{axes, chart, draw_err, empty, present, Frame, GUIDE, INK, INTERVALS};
 use super::{context_metadata, Area, Figure};
 use crate::export::ExportError;
-use crate::model::{drawn_strata, elementary_grid, palette, ColumnData, FigureContext, FigureKind};
+use crate::model::{
+    drawn_strata, elementary_grid, marks, palette, ColumnData, FigureContext, FigureKind,
+};
 use plotters::prelude::*;
 
 /// The pattern figure.
@@ -43,8 +45,8 @@ const KIND: FigureKind = FigureKind::Pattern;
 /// pixels (`s` of them per base pixel): about a fifth of the mean spacing, from one page
 /// pixel to 4 base pixels.
 fn marker_radius(side: f64, n: usize, s: u32) -> u32 {
-    (side / (n.max(1) as f64).sqrt() * 0.18)
-        .clamp(SUB as f64, 4.0 * s as f64)
+    marks::marker_radius(side, n)
+        .clamp(SUB as f64, marks::MAX_RADIUS_PX * s as f64)
         .round() as u32
 }
 

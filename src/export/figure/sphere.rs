@@ -8,7 +8,7 @@ use super::draw::{draw_err, empty, fitted_text, present, Frame, DESC_PX, INK, MA
 use super::{context_metadata, Area, Figure};
 use crate::core::pattern::sphere::{pattern_to_sphere, OrthoView};
 use crate::export::ExportError;
-use crate::model::{ColumnData, FigureContext, FigureKind};
+use crate::model::{marks, ColumnData, FigureContext, FigureKind};
 use plotters::prelude::*;
 use std::fmt::Write as _;
 
@@ -37,8 +37,8 @@ fn view_label(name: &str, v: OrthoView) -> String {
 /// Radius of a point's disc on a sphere of radius `r` (plotters' pixels) with `n` points:
 /// an eighth of the mean spacing √(4π/n)·r, from one page pixel to 4 base pixels.
 fn disc_radius(r: f64, n: usize, s: u32) -> u32 {
-    (0.125 * r * (4.0 * std::f64::consts::PI / n.max(1) as f64).sqrt())
-        .clamp(super::canvas::SUB as f64, 4.0 * s as f64)
+    marks::disc_radius(r, n)
+        .clamp(super::canvas::SUB as f64, marks::MAX_RADIUS_PX * s as f64)
         .round() as u32
 }
 

@@ -3,6 +3,7 @@
 //! statistics.
 
 use super::{Panel, PanelCx};
+use crate::model::{marks, palette};
 use crate::scene::graph::{NodeKind, NodeValue};
 use crate::scene::panels::PanelKind;
 use crate::ui::gpu;
@@ -42,7 +43,8 @@ impl Panel for PatternPanel {
             }
         };
         let count = cx.view.prefix.unwrap_or(usize::MAX).min(data.points.len());
-        let radius = (side / (data.points.len() as f32).sqrt() * 0.18).clamp(0.8, 4.0);
+        let radius = marks::marker_radius(f64::from(side), data.points.len())
+            .clamp(marks::MIN_RADIUS_PX, marks::MAX_RADIUS_PX) as f32;
         // Overlays under the points.
         let grid_stroke = {
             let [r, g, b] = crate::model::palette::STRATA;
@@ -88,7 +90,8 @@ impl Panel for PatternPanel {
                 }
             }
         }
-        let color = Color32::from_rgb(20, 20, 30);
+        let [ir, ig, ib] = palette::INK;
+        let color = Color32::from_rgb(ir, ig, ib);
         if cx.images.gpu() {
             let ppp = ui.ctx().pixels_per_point();
             let cb = gpu::PointsCallback {

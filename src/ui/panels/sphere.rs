@@ -4,6 +4,7 @@
 
 use super::{Panel, PanelCx};
 use crate::core::pattern::sphere::{square_to_sphere, OrthoView};
+use crate::model::{marks, palette};
 use crate::scene::graph::{NodeKind, NodeValue};
 use crate::scene::panels::PanelKind;
 use crate::ui::widgets::status::{error_label, time_label};
@@ -71,8 +72,8 @@ impl Panel for SpherePanel {
         };
         let shown = cx.view.prefix.unwrap_or(usize::MAX).min(data.points.len());
         let count = shown.min(MAX_SPLATS);
-        let n = count.max(1) as f32;
-        let rad = (0.125 * r * (4.0 * std::f32::consts::PI / n).sqrt()).clamp(0.8, 4.0);
+        let rad = marks::disc_radius(f64::from(r), count)
+            .clamp(marks::MIN_RADIUS_PX, marks::MAX_RADIUS_PX) as f32;
         let view = self.view;
         let screen =
             |s: glam::DVec2| Pos2::new(centre.x + s.x as f32 * r, centre.y - s.y as f32 * r);
@@ -90,7 +91,8 @@ impl Panel for SpherePanel {
             }
         }
         painter.circle_stroke(centre, r, Stroke::new(1.0, Color32::from_gray(60)));
-        let ink = Color32::from_rgb(20, 20, 30);
+        let [ir, ig, ib] = palette::INK;
+        let ink = Color32::from_rgb(ir, ig, ib);
         for &(p, near) in &projected {
             if near {
                 painter.circle_filled(p, rad, ink);
