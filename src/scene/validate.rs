@@ -1,5 +1,6 @@
 //! A scene's check of every value against its documented range and every parameter against its descriptor.
 
+use super::graph::NodeKind;
 use super::{
     limits, motion, Location, Motion, PixelSampling, ReconMode, Scene, SceneError, MAX_SCENE_N,
 };
@@ -191,8 +192,11 @@ impl Scene {
                 &e.to_string(),
             ));
         }
-        let reconstructs = (self.panels.zoneplate && self.effects.reconstruction)
-            || (self.panels.cost && self.effects.convergence);
+        // Whether a shown panel asks for a node that reconstructs (the panel table's rule; the
+        // reconstruction and convergence nodes do not depend on the column).
+        let reconstructs = [NodeKind::Reconstruction, NodeKind::Convergence]
+            .into_iter()
+            .any(|k| super::panels::asks_for(self, 0, k));
         if reconstructs && self.filter.reconstruction_refusal().is_some() {
             return Err(invalid(
                 "filter.filter",
