@@ -1,6 +1,8 @@
-//! The documented range of every scene value that is not a pattern, signal or filter
-//! parameter (those have their own descriptors). [`Scene::validate`] enforces them and the
-//! GUI's widgets span exactly them, so no widget can clamp a value a scene file may hold.
+//! The documented range of every scene value that has no descriptor: N, the columns, texts,
+//! `recon.mode`'s grid and spp (patterns, signals, filters, integrands and the spectrum,
+//! reconstruction and integration settings have descriptors, [`crate::core::params`]).
+//! [`Scene::validate`] enforces them and the GUI's widgets span exactly them, so no widget
+//! can clamp a value a scene file may hold.
 
 use std::ops::RangeInclusive;
 
@@ -17,14 +19,6 @@ pub const N: RangeInclusive<usize> = 1..=MAX_SCENE_N;
 pub const COLUMNS: RangeInclusive<usize> = 1..=MAX_COLUMNS;
 /// A column's elementary-interval exponent k (further bounded by N = 2^m: k ≤ m).
 pub const ELEMENTARY_K: RangeInclusive<u32> = 0..=MAX_ELEMENTARY_K;
-/// Side of the spectrum image (`spectrum.size`).
-pub const SPECTRUM_SIZE: RangeInclusive<usize> = 8..=2048;
-/// Relative tolerance of the fast spectrum (`spectrum.tolerance`).
-pub const TOLERANCE: RangeInclusive<f64> = 1e-12..=1e-2;
-/// Pattern realizations averaged into the spectrum (`spectrum.realizations`).
-pub const REALIZATIONS: RangeInclusive<usize> = 1..=256;
-/// Side of the reconstruction (`recon.size`).
-pub const RECON_SIZE: RangeInclusive<usize> = 16..=2048;
 /// Resampling grid (`recon.mode: Resample(grid: …)`).
 pub const GRID: RangeInclusive<usize> = 2..=4096;
 /// Samples per pixel (`recon.mode: Supersample(spp: …)`).

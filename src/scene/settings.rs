@@ -3,6 +3,7 @@
 
 use super::{ImportedPoints, IntegrationSettings, Motion, Panels};
 use crate::core::filter::Filter2D;
+use crate::core::params::declare_params;
 use crate::core::pattern::Pattern;
 use crate::core::signal::theorem::TheoremSettings;
 use crate::core::signal::Signal;
@@ -107,31 +108,15 @@ pub enum ReconMode {
     Resample { grid: usize },
 }
 
-/// Spectrum settings.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-#[serde(default, deny_unknown_fields)]
-pub struct SpectrumSettings {
-    /// Frequencies per side (M×M integer frequencies, DC in the middle).
-    pub size: usize,
-    /// NUFFT tolerance (relative ℓ2); ignored when `exact`.
-    pub tolerance: f64,
-    /// Use the exact DFT instead of the NUFFT.
-    pub exact: bool,
-    /// Number of realizations averaged (seeds derived from the column's seed).
-    pub realizations: usize,
-    /// Hide the DC peak P(0) = N.
-    pub mask_dc: bool,
-}
-
-impl Default for SpectrumSettings {
-    fn default() -> Self {
-        SpectrumSettings {
-            size: 256,
-            tolerance: 1e-6,
-            exact: false,
-            realizations: 1,
-            mask_dc: true,
-        }
+declare_params! {
+    /// Spectrum settings: every field is a parameter (descriptor: range, default, doc), so
+    /// `Scene::validate` and the GUI's controls come from the declaration.
+    SpectrumSettings = "spectrum", "the power spectrum of every column's points" {
+        size: count(256, 8, 2048, "frequencies per side (M×M integer frequencies, DC in the middle)"),
+        tolerance: float(1e-6, 1e-12, 1e-2, "NUFFT tolerance (relative ℓ2); ignored when exact"),
+        exact: flag(false, "use the exact DFT instead of the NUFFT"),
+        realizations: count(1, 1, 256, "number of realizations averaged (seeds derived from the column's seed)"),
+        mask_dc: flag(true, "hide the DC peak P(0) = N"),
     }
 }
 
@@ -167,10 +152,16 @@ impl SpectrumSettings {
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(default, deny_unknown_fields)]
 pub struct ReconSettings {
-    /// How samples are taken.
+    /// How samples are taken (its `spp` and `grid` are ranged by [`super::limits`]).
     pub mode: ReconMode,
-    /// Output image size W (W×W pixels).
+    /// Output image size W (W×W pixels); descriptor below.
     pub size: usize,
+}
+
+declare_params! {
+    impl ReconSettings = "recon" {
+        size: count(512, 16, 2048, "output image size W (W×W pixels)"),
+    }
 }
 
 impl Default for ReconSettings {
@@ -248,5 +239,31 @@ impl Default for Scene {
             theorem: TheoremSettings::default(),
             integration: IntegrationSettings::default(),
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::core::params::Params;
+
+    /// A setting's `Default` and its descriptors' defaults agree, and the defaults are valid.
+    fn defaults_agree(p: &impl Params) {
+        for spec in p.specs() {
+            assert_eq!(
+                p.get(spec.name),
+                Some(spec.default_value()),
+                "{}",
+                spec.name
+            );
+        }
+        p.check_params().unwrap();
+    }
+
+    #[test]
+    fn every_setting_s_default_is_its_descriptors_default() {
+        defaults_agree(&SpectrumSettings::default());
+        defaults_agree(&ReconSettings::default());
+        defaults_agree(&crate::scene::IntegrationSettings::default());
     }
 }

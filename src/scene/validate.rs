@@ -4,7 +4,7 @@ use super::graph::NodeKind;
 use super::{
     limits, motion, Location, Motion, PixelSampling, ReconMode, Scene, SceneError, MAX_SCENE_N,
 };
-use crate::core::params::{fmt_num, ParamError, Params};
+use crate::core::params::{ParamError, Params};
 use crate::core::signal::theorem::TheoremError;
 
 impl Scene {
@@ -204,31 +204,10 @@ impl Scene {
                 "a filter that passes constants (H(0) ≠ 0: not band-pass, high-pass or cosc, nor a setting that makes H(0) vanish) while effects.reconstruction or effects.convergence is on; turn those off to show the kernel alone",
             ));
         }
-        let s = &self.spectrum;
-        if let Some(allowed) = int_range(s.size, &limits::SPECTRUM_SIZE) {
-            return Err(invalid("spectrum.size", s.size.to_string(), &allowed));
-        }
-        if !limits::TOLERANCE.contains(&s.tolerance) {
-            return Err(invalid(
-                "spectrum.tolerance",
-                fmt_num(s.tolerance),
-                &format!(
-                    "a number in [{}, {}]",
-                    fmt_num(*limits::TOLERANCE.start()),
-                    fmt_num(*limits::TOLERANCE.end())
-                ),
-            ));
-        }
-        if let Some(allowed) = int_range(s.realizations, &limits::REALIZATIONS) {
-            return Err(invalid(
-                "spectrum.realizations",
-                s.realizations.to_string(),
-                &allowed,
-            ));
-        }
-        if let Some(allowed) = int_range(self.recon.size, &limits::RECON_SIZE) {
-            return Err(invalid("recon.size", self.recon.size.to_string(), &allowed));
-        }
+        self.spectrum
+            .check_params()
+            .map_err(|e| param("spectrum", e))?;
+        self.recon.check_params().map_err(|e| param("recon", e))?;
         if let ReconMode::Resample { grid } = self.recon.mode {
             if let Some(allowed) = int_range(grid, &limits::GRID) {
                 return Err(invalid("recon.mode.grid", grid.to_string(), &allowed));

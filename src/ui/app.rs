@@ -599,15 +599,12 @@ impl SamplescopeApp {
                     ui.selectable_value(&mut s.size, m, format!("{m}²"));
                 }
             });
-        ui.checkbox(&mut s.exact, "Exact DFT");
-        ui.add_enabled(
-            !s.exact,
-            egui::Slider::new(&mut s.tolerance, limits::TOLERANCE)
-                .logarithmic(true)
-                .text("tolerance"),
-        );
-        ui.add(egui::Slider::new(&mut s.realizations, limits::REALIZATIONS).text("realizations K"));
-        ui.checkbox(&mut s.mask_dc, "Mask DC");
+        params::setting_ui(ui, s, "exact", "Exact DFT");
+        ui.add_enabled_ui(!s.exact, |ui| {
+            params::setting_ui(ui, s, "tolerance", "tolerance")
+        });
+        params::setting_ui(ui, s, "realizations", "realizations K");
+        params::setting_ui(ui, s, "mask_dc", "Mask DC");
         ui.heading("Reconstruction");
         params::signal_ui(ui, &mut self.scene.signal);
         let r = &mut self.scene.recon;

@@ -79,25 +79,20 @@ fn limit_scenes() -> Vec<(String, Scene)> {
     for n in [*limits::N.start(), *limits::N.end()] {
         push(format!("n={n}"), Scene { n, ..base.clone() });
     }
-    for size in [*limits::SPECTRUM_SIZE.start(), *limits::SPECTRUM_SIZE.end()] {
-        let mut s = base.clone();
-        s.spectrum.size = size;
-        push(format!("spectrum.size={size}"), s);
+    // The settings with descriptors: every parameter at each end of its range.
+    for spectrum in at_limits(&base.spectrum) {
+        let s = Scene {
+            spectrum,
+            ..base.clone()
+        };
+        push(format!("spectrum={spectrum:?}"), s);
     }
-    for tolerance in [*limits::TOLERANCE.start(), *limits::TOLERANCE.end()] {
-        let mut s = base.clone();
-        s.spectrum.tolerance = tolerance;
-        push(format!("spectrum.tolerance={tolerance}"), s);
-    }
-    for k in [*limits::REALIZATIONS.start(), *limits::REALIZATIONS.end()] {
-        let mut s = base.clone();
-        s.spectrum.realizations = k;
-        push(format!("spectrum.realizations={k}"), s);
-    }
-    for size in [*limits::RECON_SIZE.start(), *limits::RECON_SIZE.end()] {
-        let mut s = base.clone();
-        s.recon.size = size;
-        push(format!("recon.size={size}"), s);
+    for recon in at_limits(&base.recon) {
+        let s = Scene {
+            recon,
+            ..base.clone()
+        };
+        push(format!("recon={recon:?}"), s);
     }
     for spp in [*limits::SPP.start(), *limits::SPP.end()] {
         let mut s = base.clone();
