@@ -7,14 +7,21 @@ use super::{from_args, parse_n, CliError};
 use samplescope::core::budget;
 use samplescope::core::filter::{Filter, Filter2D, Mode2D};
 use samplescope::core::pattern::Pattern;
-use samplescope::core::recon::{
-    error_report, reconstruct_scattered, reference_image_with, sample_signal, supersample,
-    PatternProvider, ReconError, ReferenceOptions, MAX_SPP, MAX_W,
-};
+use samplescope::core::pattern::PatternError;
+use samplescope::core::recon::{ReconError, MAX_SPP, MAX_W};
 use samplescope::core::signal::Signal;
-use samplescope::export::{flip_rows, png_bytes};
-use samplescope::model::Colormap;
+use samplescope::engine::cache::DEFAULT_BUDGET;
+use samplescope::engine::Evaluator;
+use samplescope::export::figure::{base_size, Aspect, FileFormat};
+use samplescope::export::publish::{publish, Format, Target};
+use samplescope::export::ExportError;
+use samplescope::model::FigureKind;
+use samplescope::scene::graph::{NodeKind, NodeResult, NodeValue};
+use samplescope::scene::node::NodeError;
+use samplescope::scene::{figure, Column, ImportedPoints, Panels, ReconMode, Scene};
+use std::collections::HashMap;
 use std::path::Path;
+use std::sync::Arc;
 use std::time::Instant;
 
 /// The reconstruction's estimator, as the JSON output names it (`core::recon` module docs).
@@ -87,6 +94,69 @@ pub fn filter_from_args(name: &str, settings: &[String], mode: &str) -> Result<F
     Filter2D::new(f, mode).map_err(|e| CliError::Usage(e.to_string()))
 }
 
+/// The one-column scene `recon` runs: the signal sampled by the pattern (`Err(n)`: n scattered
+/// samples; `Ok(spp)`: supersampled), reconstructed with the filter at W×W, the reference and
+/// the error; the zone-plate panel with its reconstruction and error effects, nothing else.
+fn one_column_scene(
+    signal: Signal,
+    pattern: Pattern,
+    filter: Filter2D,
+    seed: u64,
+    w: usize,
+    sampling: Result<usize, usize>,
+) -> Scene {
+    let mut scene = Scene {
+        title: "recon".into(),
+        columns: vec![Column {
+            pattern,
+            seed,
+            ..Column::default()
+        }],
+        signal,
+        filter,
+        ..Scene::default()
+    };
+    scene.recon.size = w;
+    match sampling {
+        Ok(spp) => {
+            scene.recon.mode = ReconMode::Supersample { spp };
+            scene.n = spp;
+        }
+        Err(n) => {
+            scene.recon.mode = ReconMode::Scattered;
+            scene.n = n;
+        }
+    }
+    scene.panels = Panels {
+        pattern: false,
+        sphere: false,
+        spectrum: false,
+        zoneplate: true,
+        filter: false,
+        cost: false,
+        integration: false,
+        theorem: false,
+    };
+    scene.effects.reconstruction = true;
+    scene.effects.error = true;
+    scene.effects.convergence = false;
+    scene.effects.statistics = false;
+    scene
+}
+
+/// A node's failure as `recon` reports it: the pattern's and the reconstruction's errors as
+/// before (bad input), a pattern that stopped short with the `--allow-fewer` hint.
+fn node_error(e: &NodeError) -> CliError {
+    match e {
+        NodeError::Pattern(e @ PatternError::TooFew { .. }) => CliError::Usage(format!(
+            "{e}; or pass --allow-fewer to keep the points placed"
+        )),
+        NodeError::Pattern(e) => CliError::Pattern(e.clone()),
+        NodeError::Cancelled => CliError::Cancelled,
+        e => CliError::Usage(e.to_string()),
+    }
+}
+
 /// Runs `samplescope recon`.
 pub fn run(args: &ReconArgs, session: &Session) -> Result<(), CliError> {
     let cancel = &session.cancel;
@@ -137,72 +207,110 @@ pub fn run(args: &ReconArgs, session: &Session) -> Result<(), CliError> {
             ))
         }
     };
-    let mut plan = match sampling {
+    match sampling {
         Ok(spp) => {
             range("--spp", spp, MAX_SPP)?;
             pattern.validate(spp)?;
-            vec![budget::supersampling(&signal, w, spp, &pattern, &filter)]
         }
-        Err(n) => {
-            pattern.validate(n)?;
-            vec![
-                budget::pattern(&pattern, n),
-                budget::sampling(&signal, n),
-                budget::scattered(n, w, &filter),
-            ]
-        }
-    };
-    let after = plan.len();
-    plan.push(budget::reference(&signal, w));
-    plan.push(budget::error_image(w));
-    if args.out.is_some() {
-        plan.push(budget::png(w, w));
+        Err(n) => pattern.validate(n)?,
     }
     check_outputs(&[("--out", args.out.as_deref())])?;
+    // A pattern that may stop short with --allow-fewer: its points are generated here (as the
+    // scene's points node would) and the column shows them as imported points.
+    let kept = match sampling {
+        Err(n) if args.allow_fewer => Some(n),
+        _ => None,
+    };
+    // The scene's estimate (its points node's included, made here with --allow-fewer).
+    let mut scene = one_column_scene(signal, pattern, filter, seed, w, sampling);
+    let mut plan = samplescope::scene::cost::estimate(&scene);
+    if args.out.is_some() {
+        // The reconstruction figure's PNG, at its base size.
+        let (fw, fh) = base_size(FigureKind::Reconstruction);
+        plan.push(budget::png(fw as usize, fh as usize));
+    }
     let Some(progress) = session.admit(plan)? else {
         return Ok(());
     };
     progress.stage(0);
     let t0 = Instant::now();
-    let recon = match sampling {
-        Ok(spp) => {
-            let provider = PatternProvider { pattern, seed };
-            supersample(&signal, w, spp, &provider, &filter, cancel).map_err(|e| usage(&e))?
+    if let Some(n) = kept {
+        let g = pattern.generate_with(n, seed, cancel)?;
+        let points = super::require_points(g, &pattern, true)?;
+        scene.columns[0].points = Some(ImportedPoints {
+            path: String::new(),
+            normalize: false,
+            points: points.iter().map(|p| [p.x, p.y]).collect(),
+            ..Default::default()
+        });
+    }
+    let generated_ms = t0.elapsed().as_secs_f64() * 1e3;
+    // The scene's reconstruction, reference and error nodes, run by the engine's evaluator
+    // (no disk cache: recon computes its reference).
+    let mut results: HashMap<NodeKind, Arc<NodeResult>> = HashMap::new();
+    Evaluator::new(DEFAULT_BUDGET, None).evaluate(&scene, cancel, &mut |_, kind, r| {
+        results.insert(kind, r);
+    });
+    if cancel.is_cancelled() {
+        return Err(CliError::Cancelled);
+    }
+    let value = |kind: NodeKind| results.get(&kind).map(|r| &r.value);
+    // The first node that failed by itself (later ones fail through their inputs).
+    for kind in NodeKind::ALL {
+        match value(kind) {
+            Some(Err(NodeError::Input { .. })) | Some(Ok(_)) | None => {}
+            Some(Err(e)) => return Err(node_error(e)),
         }
-        Err(n) => {
-            let g = pattern.generate_with(n, seed, cancel)?;
-            let points = super::require_points(g, &pattern, args.allow_fewer)?;
-            progress.stage(1);
-            let values = sample_signal(&signal, &points, cancel).map_err(|e| usage(&e))?;
-            progress.stage(2);
-            reconstruct_scattered(&points, &values, w, &filter, cancel).map_err(|e| usage(&e))?
+    }
+    let wall = |kinds: &[NodeKind]| {
+        kinds
+            .iter()
+            .filter_map(|k| results.get(k))
+            .map(|r| r.wall.as_secs_f64() * 1e3)
+            .sum::<f64>()
+    };
+    // Sampling included, as before: the points (generated here or by the node) and samples.
+    let recon_ms = generated_ms
+        + wall(&[
+            NodeKind::Points,
+            NodeKind::Samples,
+            NodeKind::Reconstruction,
+        ]);
+    let reference_ms = wall(&[NodeKind::Reference]);
+    let (recon, reference, report) = match (
+        value(NodeKind::Reconstruction),
+        value(NodeKind::Reference),
+        value(NodeKind::Error),
+    ) {
+        (
+            Some(Ok(NodeValue::Reconstruction(a))),
+            Some(Ok(NodeValue::Reference(b))),
+            Some(Ok(NodeValue::Error(e))),
+        ) => (a.exact.clone(), b.clone(), e.clone()),
+        _ => {
+            return Err(CliError::Environment(
+                "recon: the reconstruction, reference or error node did not finish".into(),
+            ))
         }
     };
-    let recon_ms = t0.elapsed().as_secs_f64() * 1e3;
-    let t1 = Instant::now();
-    progress.stage(after);
-    let reference = reference_image_with(&signal, args.size, &ReferenceOptions::default(), cancel)
-        .map_err(|e| usage(&e))?;
-    let reference_ms = t1.elapsed().as_secs_f64() * 1e3;
-    progress.stage(after + 1);
-    let report = error_report(&recon, &reference.pixels).map_err(|e| usage(&e))?;
     if let Some(path) = &args.out {
-        progress.stage(after + 2);
-        let w = args.size;
-        let values = flip_rows(&recon.pixels, w);
-        let text = [
-            ("Software", "samplescope".to_string()),
-            (
-                "Parameters",
-                format!(
-                    "signal={signal:?} pattern={pattern:?} n={:?} spp={:?} seed={} filter={filter:?} size={w}",
-                    args.n, args.spp, seed
-                ),
-            ),
-        ];
-        let bytes =
-            png_bytes(&values, w, w, 0.0, 1.0, Colormap::Greys, &text).map_err(|e| usage(&e))?;
-        write_output(Path::new(path), &bytes, cancel)?;
+        // The reconstruction figure, published as `render` publishes it.
+        let columns = figure::figure_columns(&scene, std::slice::from_ref(&results), "recon")
+            .map_err(|e| usage(&e))?;
+        let publication = figure::publication(&scene, columns, "recon");
+        let target = Target::Panel {
+            column: 0,
+            kind: FigureKind::Reconstruction,
+        };
+        let png = [Format::Picture(FileFormat::Png)];
+        let made =
+            publish(&publication, target, &png, 1, Aspect::SLIDE, cancel).map_err(|e| match e {
+                ExportError::Cancelled => CliError::Cancelled,
+                e => usage(&e),
+            })?;
+        for (_, bytes) in made.files {
+            write_output(Path::new(path), &bytes, cancel)?;
+        }
     }
     drop(progress);
     if args.json {

@@ -69,6 +69,8 @@ pub struct ErrorData {
     pub rmse: f64,
     /// 10·log₁₀(1/MSE) dB (peak 1).
     pub psnr: f64,
+    /// The largest |reconstruction − reference| over the f64 pixels (the report's).
+    pub max_abs: f64,
     /// |reconstruction − reference| of the display images (f32).
     pub image: ImageData,
     /// The largest value of [`Self::image`] (the top of its colour range).

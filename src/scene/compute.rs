@@ -295,7 +295,7 @@ pub(super) fn error(ctx: &JobCtx) -> Output {
     // RMSE and PSNR over the f64 pixels, as `samplescope recon` reports them; the image
     // shown is the difference of the two display images.
     let report = crate::core::recon::error_report(&recon.exact, &reference.pixels)?;
-    let (rmse, psnr) = (report.rmse, report.psnr);
+    let (rmse, psnr, max_abs) = (report.rmse, report.psnr, report.max_abs);
     // Blue-noise error (image-plane samplers) keeps its energy away from low frequencies.
     let w = a.width;
     let signed: Vec<f64> = recon
@@ -336,6 +336,7 @@ pub(super) fn error(ctx: &JobCtx) -> Output {
         NodeValue::Error(Arc::new(ErrorData {
             rmse,
             psnr,
+            max_abs,
             image: ImageData::new(a.width, a.height, diff),
             max_error: max,
             low_frequency,

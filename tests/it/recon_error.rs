@@ -4,6 +4,7 @@ use crate::recon_kernels::BoxKernel;
 use glam::DVec2;
 use samplescope::core::cancel::Cancel;
 use samplescope::core::recon::{error_report, psnr, reconstruct_scattered, rmse, ReconError};
+use samplescope::model::FigureKind;
 
 #[test]
 fn rmse_and_psnr_closed_forms() {
@@ -188,5 +189,44 @@ fn engine_error_node_and_recon_cli_report_the_same_rmse_bit_for_bit() {
             );
         }
     }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// `recon --out` publishes the scene's reconstruction figure through the one publishing path:
+/// the figure's base size and metadata (no debug-printed parameters).
+#[test]
+fn recon_out_is_the_scenes_reconstruction_figure() {
+    let dir = std::env::temp_dir().join(format!("recon-out-{}", std::process::id()));
+    let _ = std::fs::create_dir_all(&dir);
+    let out = dir.join("zp.png");
+    let o = std::process::Command::new(env!("CARGO_BIN_EXE_samplescope"))
+        .args(["recon", "--pattern", "jitter", "-n", "1024", "--size", "48"])
+        .args(["--seed", "3", "--out", out.to_str().expect("utf-8")])
+        .output()
+        .expect("run samplescope");
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let bytes = std::fs::read(&out).expect("the PNG");
+    let reader = png::Decoder::new(std::io::Cursor::new(&bytes))
+        .read_info()
+        .expect("a PNG");
+    let info = reader.info();
+    let size = samplescope::export::figure::base_size(FigureKind::Reconstruction);
+    assert_eq!((info.width, info.height), size);
+    let text: Vec<(String, String)> = info
+        .uncompressed_latin1_text
+        .iter()
+        .map(|t| (t.keyword.clone(), t.text.clone()))
+        .chain(
+            info.utf8_text
+                .iter()
+                .map(|t| (t.keyword.clone(), t.get_text().unwrap_or_default())),
+        )
+        .collect();
+    assert!(
+        text.iter()
+            .any(|(k, v)| k == "figure" && v == "reconstruction"),
+        "{text:?}"
+    );
+    assert!(!text.iter().any(|(k, _)| k == "Parameters"), "{text:?}");
     let _ = std::fs::remove_dir_all(&dir);
 }
