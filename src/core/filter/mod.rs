@@ -62,6 +62,7 @@
 //!
 //! See [`metrics`] for the discretisation and its accuracy.
 
+pub mod cost;
 pub mod kernels;
 pub mod metrics;
 pub mod quad;

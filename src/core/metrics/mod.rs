@@ -67,6 +67,7 @@
 //! - D. Heck, T. Schlömer, O. Deussen, *Blue noise sampling with controlled aliasing*, ACM TOG
 //!   2013 (PSA's normalisation of distances).
 
+pub mod cost;
 mod dd;
 pub mod l2;
 pub mod mindist;

@@ -20,6 +20,7 @@
 //! round to 1.0. Sequences are indexed from i = 0.
 
 pub mod best_candidate;
+pub mod cost;
 pub mod halton_scramble;
 pub mod hex;
 pub mod lattice;

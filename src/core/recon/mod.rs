@@ -71,6 +71,7 @@
 //!   number of threads (parallel loops write disjoint pixels; splatting is serial).
 
 pub mod convergence;
+pub mod cost;
 pub mod coverage;
 pub mod filter_kernel;
 pub mod grid;

@@ -50,6 +50,7 @@
 //! list; [`pair_correlation_naive`] is the all-pairs reference, N ≤ 16 384).
 
 pub mod average;
+pub mod cost;
 pub mod dft;
 pub mod nufft;
 pub mod pair;

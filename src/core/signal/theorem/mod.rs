@@ -55,6 +55,7 @@
 //! check the result against closed forms and against ∫|f_r − f|² dx computed in space.
 //! [`AliasingErrors::tail_bound`] bounds what the band limit Ω leaves out.
 
+pub mod cost;
 mod errors;
 mod pairs;
 mod reconstruct;
