@@ -265,5 +265,6 @@ mod tests {
         defaults_agree(&SpectrumSettings::default());
         defaults_agree(&ReconSettings::default());
         defaults_agree(&crate::scene::IntegrationSettings::default());
+        defaults_agree(&TheoremSettings::default());
     }
 }

@@ -4,14 +4,14 @@
 use super::{Panel, PanelCx};
 use crate::core::filter::Filter;
 use crate::core::signal::theorem::{
-    AliasingErrors, PairKind, Reconstructor, TheoremSettings, TheoremView, EXTENT_RANGE, MAX_RATE,
-    MAX_VDC_ROWS, MIN_RATE, PAIR_SCALE_RANGE, PAIR_SHIFT_RANGE,
+    AliasingErrors, PairKind, Reconstructor, TheoremSettings, TheoremView, MAX_VDC_ROWS,
+    PAIR_SCALE_RANGE, PAIR_SHIFT_RANGE,
 };
 use crate::model::{palette, FigureKind};
 use crate::scene::graph::{NodeKind, NodeValue};
 use crate::scene::panels::PanelKind;
 use crate::ui::figures::FigureRequests;
-use crate::ui::widgets::params::{family_ui, labelled_params_ui, params_ui};
+use crate::ui::widgets::params::{family_ui, labelled_params_ui, params_ui, setting_ui};
 use eframe::egui::{self, Color32};
 use egui_plot::{Legend, Line, Plot, Points, VLine};
 
@@ -139,11 +139,7 @@ fn controls_ui(ui: &mut egui::Ui, s: &mut TheoremSettings) {
     ui.heading("Sampling theorem (1D)");
     family_ui(ui, "theorem-signal", "Signal", &mut s.signal, |_| true);
     labelled_params_ui(ui, &mut s.signal, "signal ");
-    ui.add(
-        egui::Slider::new(&mut s.rate, MIN_RATE..=MAX_RATE)
-            .logarithmic(true)
-            .text("sampling rate f_s"),
-    );
+    setting_ui(ui, s, "rate", "sampling rate f_s");
     if let Some(b) = s.signal.bandwidth() {
         ui.label(format!("Nyquist rate 2B = {:.3}", 2.0 * b));
     } else {
@@ -157,11 +153,7 @@ fn controls_ui(ui: &mut egui::Ui, s: &mut TheoremSettings) {
         |f: &Filter| Reconstructor::new(*f, 1.0, 1.0).is_ok(),
     );
     params_ui(ui, &mut s.filter);
-    ui.add(
-        egui::Slider::new(&mut s.extent, EXTENT_RANGE.0..=EXTENT_RANGE.1)
-            .logarithmic(true)
-            .text("plot half-width (units)"),
-    );
+    setting_ui(ui, s, "extent", "plot half-width (units)");
     ui.separator();
     ui.strong("Transform pair");
     egui::ComboBox::new("theorem-pair", "Pair")

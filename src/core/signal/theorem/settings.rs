@@ -2,10 +2,11 @@
 
 use super::errors::check_width_samples;
 use super::{
-    check, Reconstructor, Signal1D, TheoremError, TransformPair, ERROR_BAND, EXTENT_RANGE,
-    MAX_RATE, MAX_SAMPLES, MAX_VDC_ROWS, MIN_RATE,
+    Reconstructor, Signal1D, TheoremError, TransformPair, ERROR_BAND, EXTENT_RANGE, MAX_RATE,
+    MAX_SAMPLES, MAX_VDC_ROWS, MIN_RATE,
 };
 use crate::core::filter::Filter;
+use crate::core::params::{declare_params, ParamError, Params};
 use serde::{Deserialize, Serialize};
 
 /// Everything the sampling-theorem view shows (part of a scene).
@@ -14,7 +15,8 @@ use serde::{Deserialize, Serialize};
 pub struct TheoremSettings {
     /// The signal.
     pub signal: Signal1D,
-    /// Sampling rate f_s (samples per unit), in [0.05, 1000].
+    /// Sampling rate f_s (samples per unit), in [0.05, 1000]; this and `extent`, `vdc_rows`
+    /// have descriptors (below).
     pub rate: f64,
     /// The reconstruction filter (sample-spacing units, scaled to T = 1/f_s).
     pub filter: Filter,
@@ -39,22 +41,34 @@ impl Default for TheoremSettings {
     }
 }
 
+declare_params! {
+    impl TheoremSettings = "theorem" {
+        rate: float(4.0, MIN_RATE, MAX_RATE, "sampling rate f_s (samples per unit)"),
+        extent: float(3.0, EXTENT_RANGE.0, EXTENT_RANGE.1, "half-width of the spatial plots (units)"),
+        vdc_rows: count(8, 1, MAX_VDC_ROWS, "rows i = 0..n of the van der Corput table (base 2)"),
+    }
+}
+
 impl TheoremSettings {
     /// Checks every field; the error names it (`theorem.rate`, `theorem.signal.width`, …).
     pub fn validate(&self) -> Result<(), TheoremError> {
         self.signal.validate()?;
-        check("rate", self.rate, MIN_RATE, MAX_RATE)?;
+        self.check_params().map_err(|e| match e {
+            ParamError::Invalid {
+                field,
+                value,
+                allowed,
+                ..
+            } => TheoremError::InvalidParam {
+                field,
+                value,
+                allowed,
+            },
+            other => TheoremError::Param(other),
+        })?;
         check_width_samples(&self.signal, self.rate)?;
-        check("extent", self.extent, EXTENT_RANGE.0, EXTENT_RANGE.1)?;
         Reconstructor::new(self.filter, self.rate, ERROR_BAND * self.rate)?;
         self.pair.validate()?;
-        if self.vdc_rows == 0 || self.vdc_rows > MAX_VDC_ROWS {
-            return Err(TheoremError::InvalidParam {
-                field: "vdc_rows",
-                value: self.vdc_rows.to_string(),
-                allowed: format!("an integer in 1..={MAX_VDC_ROWS}"),
-            });
-        }
         if 2.0 * (self.extent * self.rate).floor() + 1.0 > MAX_SAMPLES as f64 {
             return Err(TheoremError::InvalidParam {
                 field: "rate",
