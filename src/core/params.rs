@@ -1,11 +1,15 @@
-//! The one parameter mechanism of patterns, filters, 2D signals and the theorem's 1D signals.
+//! The one parameter mechanism of patterns, filters, integrands, 2D and 1D signals and the
+//! scene's settings.
 //!
 //! Every parameter struct declares its fields once, with [`declare_params!`]: name, doc,
 //! default, range and kind (integer, float, enum, bool, list). The declaration gives the
 //! struct, its `Default`, its serde form (RON in scene files) and an implementation of
-//! [`Params`]: descriptors ([`ParamSpec`]), getters, checked setters and a whole-set check.
-//! The enums that dispatch over parameter structs (`Pattern`, `Filter`, `Signal`) implement
-//! [`Params`] by delegation ([`dispatch_params!`]). Every user of parameters goes through it:
+//! [`Params`]: descriptors ([`ParamSpec`]), getters, checked setters and a whole-set check;
+//! `declare_params! { impl T = "owner" { … } }` describes the scalar fields of an existing
+//! settings struct. The families that dispatch over parameter structs (`Pattern`, `Filter`,
+//! `Integrand`, `Signal`, `Signal1D`, declared with [`crate::core::family`]'s `family!`)
+//! implement [`Params`] by delegation ([`dispatch_params!`]). Every user of parameters goes
+//! through it:
 //!
 //! - the CLI's `--set key=value` ([`Params::set`]) and `points --list` / `filter --list`;
 //! - the GUI's widgets (one slider, drag value, checkbox or combo box per descriptor, over the
