@@ -1,8 +1,8 @@
 //! Saving figures from the GUI: any panel, a whole column or the whole comparison, as PNG at
 //! 1×, 2× or 3×, as SVG or as CSV, or copied to the clipboard.
 //!
-//! The figures are the ones `samplescope render` writes (same renderer, [`crate::export::figure`]),
-//! drawn on the CPU from the data the panels show, so a saved figure never depends on the
+//! The figures are the ones `samplescope render` writes (the same publishing path,
+//! [`crate::export::publish`], and names), drawn on the CPU from the data the panels show, so a saved figure never depends on the
 //! window's size, theme or GPU. Panels and menus only *request* a figure (into the app's
 //! [`FigureRequests`]); the app renders requests on a background thread and reports each file
 //! written, or the error, in the top bar.
