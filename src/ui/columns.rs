@@ -2,7 +2,7 @@
 //! each a grid of its visible column panels; and adding a column.
 
 use super::panels::{self, Panel, PanelCx};
-use crate::scene::graph::NodeKind;
+use crate::model::PointsData;
 use crate::scene::panels::{PanelKind, Place};
 use crate::scene::{Scene, MAX_COLUMNS};
 use eframe::egui::{self, Rect, Vec2};
@@ -133,7 +133,8 @@ fn column_header(cx: &PanelCx<'_>) -> String {
         Some(p) => format!("{} · N = {}", column.title(), p.points.len()),
         None => {
             let lab = cx
-                .result(NodeKind::Points)
+                .get::<PointsData>()
+                .shown()
                 .map_or(scene, |r| r.scene.as_ref());
             let c = lab.columns.get(ci).unwrap_or(column);
             format!("{} · N = {} · seed {}", c.title(), lab.n, c.seed)

@@ -17,7 +17,8 @@
 //! panels (mod.rs)      the Panel trait and PanelCx
 //! widgets/             image view (texture cache), parameter editors, status labels
 //! figures              figure requests (the outbox lent to panels), the background saver
-//! view, results        shared display state; the engine's results as the UI holds them
+//! view, results        shared display state; the engine's results as the UI holds them (the one
+//!                      decoder of the graph's values: panels get plain `model` data, `Slot`)
 //! gpu                  the wgpu display pipelines
 //! ```
 //!

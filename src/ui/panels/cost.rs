@@ -2,8 +2,9 @@
 //! the convergence curves (RMSE against samples per pixel and against time).
 
 use super::{Panel, PanelCx};
-use crate::scene::graph::{NodeKind, NodeValue};
+use crate::model::ConvergencePoint;
 use crate::scene::panels::PanelKind;
+use crate::ui::results::{node_names, node_results, slot};
 use eframe::egui;
 use egui_plot::{Line, Plot};
 
@@ -25,8 +26,8 @@ impl Panel for CostPanel {
                 ui.strong("Cost per node");
                 egui::Grid::new("cost-grid").striped(true).show(ui, |ui| {
                     ui.label("column");
-                    for k in NodeKind::ALL {
-                        ui.label(k.name());
+                    for name in node_names() {
+                        ui.label(name);
                     }
                     ui.end_row();
                     for (ci, col) in cx.results.iter().enumerate() {
@@ -37,8 +38,8 @@ impl Panel for CostPanel {
                                 .map(|c| c.title())
                                 .unwrap_or_default(),
                         );
-                        for k in NodeKind::ALL {
-                            match col.get(&k) {
+                        for result in node_results(col) {
+                            match result {
                                 Some(r) => {
                                     let t = format!("{:.1} ms", r.wall.as_secs_f64() * 1e3);
                                     let resp = ui.label(t);
@@ -54,8 +55,8 @@ impl Panel for CostPanel {
                         ui.end_row();
                     }
                     ui.label("evaluations");
-                    for k in NodeKind::ALL {
-                        ui.label(cx.evaluator.count(k).to_string());
+                    for (_, count) in cx.evaluator.counts() {
+                        ui.label(count.to_string());
                     }
                     ui.end_row();
                 });
@@ -69,9 +70,9 @@ impl Panel for CostPanel {
                     .results
                     .iter()
                     .enumerate()
-                    .filter_map(|(ci, col)| {
-                        match col.get(&NodeKind::Convergence).map(|r| &r.value) {
-                            Some(Ok(NodeValue::Convergence(c))) => Some((
+                    .filter_map(
+                        |(ci, col)| match slot::<Vec<ConvergencePoint>>(col).data() {
+                            Some(c) => Some((
                                 cx.scene
                                     .columns
                                     .get(ci)
@@ -87,8 +88,8 @@ impl Panel for CostPanel {
                                     .collect(),
                             )),
                             _ => None,
-                        }
-                    })
+                        },
+                    )
                     .collect();
                 ui.horizontal(|ui| {
                     Plot::new("conv-spp")

@@ -3,9 +3,10 @@
 
 use super::{Panel, PanelCx};
 use crate::model::FigureKind;
-use crate::scene::graph::{NodeKind, NodeValue};
+use crate::model::ResponseData;
 use crate::scene::panels::PanelKind;
 use crate::ui::gpu::DisplayRange;
+use crate::ui::results::Slot;
 use crate::ui::view::ViewState;
 use crate::ui::widgets::status::{error_label, time_label};
 use eframe::egui::{self, Color32};
@@ -32,15 +33,14 @@ impl Panel for FilterPanel {
             ui.checkbox(&mut cx.view.response_db, "dB");
             cx.figures.panel_menu_ui(ui, ci, PanelKind::Filter);
         });
-        let Some(r) = cx.result(NodeKind::Response) else {
-            ui.spinner();
-            return;
-        };
-        let d = match &r.value {
-            Ok(NodeValue::Response(d)) => d.clone(),
-            Ok(_) => return,
-            Err(e) => {
+        let (r, d) = match cx.get::<ResponseData>() {
+            Slot::Ready(r, d) => (r, d.clone()),
+            Slot::Failed(_, e) => {
                 error_label(ui, "filter", e);
+                return;
+            }
+            Slot::Missing => {
+                ui.spinner();
                 return;
             }
         };

@@ -6,10 +6,10 @@
 
 use super::{Panel, PanelCx};
 use crate::model::{guide_line, palette, IntegrationData, GUIDE_SLOPES};
-use crate::scene::graph::{NodeKind, NodeValue};
 use crate::scene::integration::limits;
 use crate::scene::panels::PanelKind;
 use crate::ui::gpu::DisplayRange;
+use crate::ui::results::Slot;
 use crate::ui::widgets::params::{integrand_ui, setting_ui};
 use crate::ui::widgets::status::error_label;
 use eframe::egui::{self, Color32};
@@ -41,15 +41,8 @@ impl Panel for IntegrationPanel {
     }
 
     fn ui(&mut self, ui: &mut egui::Ui, cx: &mut PanelCx<'_>) {
-        let studies: Vec<(usize, Option<&crate::ui::results::Shown>)> = (0..cx.scene.columns.len())
-            .map(|c| {
-                (
-                    c,
-                    cx.results
-                        .get(c)
-                        .and_then(|r| r.get(&NodeKind::Integration)),
-                )
-            })
+        let studies: Vec<(usize, Slot<'_, IntegrationData>)> = (0..cx.scene.columns.len())
+            .map(|c| (c, cx.get_in::<IntegrationData>(c)))
             .collect();
         ui.horizontal_top(|ui| {
             ui.vertical(|ui| {
@@ -61,9 +54,7 @@ impl Panel for IntegrationPanel {
                 let s = &mut cx.scene.integration;
                 integrand_ui(ui, &mut s.integrand);
                 // The image of f (column 0's study carries it).
-                if let Some(Ok(NodeValue::Integration(d))) =
-                    studies.first().and_then(|(_, r)| r.map(|r| &r.value))
-                {
+                if let Some(d) = studies.first().and_then(|(_, r)| r.data()) {
                     cx.images.ui(
                         ui,
                         egui::Id::NULL.with("integrand-thumbnail"),
@@ -110,10 +101,10 @@ impl Panel for IntegrationPanel {
                         .get(*c)
                         .map(|c| c.title())
                         .unwrap_or_default();
-                    match r.map(|r| &r.value) {
-                        Some(Ok(NodeValue::Integration(d))) => curves.push((*c, title, d.clone())),
-                        Some(Err(e)) => status.push((title, Err(e.to_string()))),
-                        _ => status.push((title, Ok("computing…".to_string()))),
+                    match r {
+                        Slot::Ready(_, d) => curves.push((*c, title, (*d).clone())),
+                        Slot::Failed(_, e) => status.push((title, Err(e.to_string()))),
+                        Slot::Missing => status.push((title, Ok("computing…".to_string()))),
                     }
                 }
                 let done = curves.iter().map(|c| c.2.done).min();

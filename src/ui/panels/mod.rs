@@ -1,6 +1,7 @@
 //! The panels: one file each, one struct each, drawing plain data computed by the engine (no
 //! maths here). A panel implements [`Panel`] and reads everything it needs from a [`PanelCx`]
-//! lent by the app for the frame.
+//! lent by the app for the frame: its column's plain `model` data with its status
+//! ([`PanelCx::get`], a [`Slot`]), never the graph's node values.
 //!
 //! Which panels exist, when each is shown, where it goes and which figures it saves is the
 //! panel table ([`crate::scene::panels::PANELS`]); `columns::make` builds each row's panel.
@@ -20,11 +21,10 @@ pub mod zoneplate;
 
 use crate::engine::Evaluator;
 use crate::model::FigureKind;
-use crate::scene::graph::NodeKind;
 use crate::scene::panels::PanelKind;
 use crate::scene::{Panels, Scene};
 use crate::ui::figures::FigureRequests;
-use crate::ui::results::{ColumnResults, Shown};
+use crate::ui::results::{slot, ColumnResults, NodeData, Slot};
 use crate::ui::view::ViewState;
 use crate::ui::widgets::image::ImageView;
 use eframe::egui;
@@ -78,10 +78,15 @@ pub struct PanelCx<'a> {
 }
 
 impl<'a> PanelCx<'a> {
-    /// The drawn column's latest result of `kind` (borrowed from the results, not from the
-    /// context, so the context stays usable while it is held).
-    pub fn result(&self, kind: NodeKind) -> Option<&'a Shown> {
+    /// The drawn column's latest `T` (borrowed from the results, not from the context, so the
+    /// context stays usable while it is held).
+    pub fn get<T: NodeData>(&self) -> Slot<'a, T> {
+        self.get_in(self.column)
+    }
+
+    /// Column `column`'s latest `T`.
+    pub fn get_in<T: NodeData>(&self, column: usize) -> Slot<'a, T> {
         let results: &'a [ColumnResults] = self.results;
-        results.get(self.column).and_then(|c| c.get(&kind))
+        results.get(column).map_or(Slot::Missing, slot)
     }
 }

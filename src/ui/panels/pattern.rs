@@ -4,9 +4,10 @@
 
 use super::{Panel, PanelCx};
 use crate::model::{marks, palette};
-use crate::scene::graph::{NodeKind, NodeValue};
+use crate::model::{PointsData, StatsData};
 use crate::scene::panels::PanelKind;
 use crate::ui::gpu;
+use crate::ui::results::Slot;
 use crate::ui::view::screen_from_unit;
 use crate::ui::widgets::status::{error_label, time_label};
 use eframe::egui::{self, Color32, Rect, Stroke, Vec2};
@@ -30,15 +31,14 @@ impl Panel for PatternPanel {
         let (rect, _) = ui.allocate_exact_size(Vec2::splat(side), egui::Sense::hover());
         let painter = ui.painter_at(rect);
         painter.rect_filled(rect, 0.0, Color32::WHITE);
-        let Some(r) = cx.result(NodeKind::Points) else {
-            ui.spinner();
-            return;
-        };
-        let data = match &r.value {
-            Ok(NodeValue::Points(d)) => d.clone(),
-            Ok(_) => return,
-            Err(e) => {
+        let (r, data) = match cx.get::<PointsData>() {
+            Slot::Ready(r, d) => (r, d.clone()),
+            Slot::Failed(_, e) => {
                 error_label(ui, "pattern", e);
+                return;
+            }
+            Slot::Missing => {
+                ui.spinner();
                 return;
             }
         };
@@ -60,10 +60,7 @@ impl Panel for PatternPanel {
             let stroke = Stroke::new(0.6, Color32::from_rgb(r, g, b));
             grid_lines(&painter, rect, cols, rows, stroke);
         }
-        let stats = match cx.result(NodeKind::Statistics).map(|r| &r.value) {
-            Some(Ok(NodeValue::Statistics(s))) => Some(s.clone()),
-            _ => None,
-        };
+        let stats = cx.get::<StatsData>().data().cloned();
         if let Some(s) = &stats {
             if cx.view.show_min_disc && data.points.len() <= 16384 {
                 let rad = (s.min_distance / 2.0) as f32 * side;

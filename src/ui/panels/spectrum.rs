@@ -2,9 +2,10 @@
 //! averaged power spectrum and the anisotropy.
 
 use super::{Panel, PanelCx};
-use crate::scene::graph::{NodeKind, NodeValue};
+use crate::model::SpectrumData;
 use crate::scene::panels::PanelKind;
 use crate::ui::gpu::DisplayRange;
+use crate::ui::results::Slot;
 use crate::ui::widgets::status::{error_label, time_label};
 use eframe::egui::{self, Color32};
 use egui_plot::{Line, Plot};
@@ -22,20 +23,20 @@ impl Panel for SpectrumPanel {
         let (ci, side) = (cx.column, cx.side);
         ui.horizontal_wrapped(|ui| {
             let size = cx
-                .result(NodeKind::Spectrum)
+                .get::<SpectrumData>()
+                .shown()
                 .map_or(cx.scene.spectrum.size, |r| r.scene.spectrum.size);
             ui.label(format!("Periodogram {size}² (log10 P, centred)"));
             cx.figures.panel_menu_ui(ui, ci, PanelKind::Spectrum);
         });
-        let Some(r) = cx.result(NodeKind::Spectrum) else {
-            ui.spinner();
-            return;
-        };
-        let d = match &r.value {
-            Ok(NodeValue::Spectrum(d)) => d.clone(),
-            Ok(_) => return,
-            Err(e) => {
+        let (r, d) = match cx.get::<SpectrumData>() {
+            Slot::Ready(r, d) => (r, d.clone()),
+            Slot::Failed(_, e) => {
                 error_label(ui, "spectrum", e);
+                return;
+            }
+            Slot::Missing => {
+                ui.spinner();
                 return;
             }
         };

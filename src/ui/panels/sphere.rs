@@ -4,9 +4,10 @@
 
 use super::{Panel, PanelCx};
 use crate::core::pattern::sphere::{square_to_sphere, OrthoView};
+use crate::model::PointsData;
 use crate::model::{marks, palette};
-use crate::scene::graph::{NodeKind, NodeValue};
 use crate::scene::panels::PanelKind;
+use crate::ui::results::Slot;
 use crate::ui::widgets::status::{error_label, time_label};
 use eframe::egui::{self, Color32, Pos2, Sense, Stroke, Vec2};
 
@@ -58,15 +59,14 @@ impl Panel for SpherePanel {
         painter.rect_filled(rect, 0.0, Color32::WHITE);
         let centre = rect.center();
         let r = side * 0.5 - 6.0;
-        let Some(res) = cx.result(NodeKind::Points) else {
-            ui.spinner();
-            return;
-        };
-        let data = match &res.value {
-            Ok(NodeValue::Points(d)) => d.clone(),
-            Ok(_) => return,
-            Err(e) => {
+        let (res, data) = match cx.get::<PointsData>() {
+            Slot::Ready(r, d) => (r, d.clone()),
+            Slot::Failed(_, e) => {
                 error_label(ui, "sphere", e);
+                return;
+            }
+            Slot::Missing => {
+                ui.spinner();
                 return;
             }
         };

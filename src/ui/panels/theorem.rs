@@ -8,9 +8,9 @@ use crate::core::signal::theorem::{
     PAIR_SCALE_RANGE, PAIR_SHIFT_RANGE,
 };
 use crate::model::{palette, FigureKind};
-use crate::scene::graph::{NodeKind, NodeValue};
 use crate::scene::panels::PanelKind;
 use crate::ui::figures::FigureRequests;
+use crate::ui::results::Slot;
 use crate::ui::widgets::params::{family_ui, labelled_params_ui, params_ui, setting_ui};
 use eframe::egui::{self, Color32};
 use egui_plot::{Legend, Line, Plot, Points, VLine};
@@ -54,7 +54,7 @@ impl Panel for TheoremPanel {
     /// Draws the controls (editing the scene's theorem settings) and the plots of the theorem
     /// node's result (column-independent: it is computed for column 0 only).
     fn ui(&mut self, ui: &mut egui::Ui, cx: &mut PanelCx<'_>) {
-        let result = cx.results.first().and_then(|c| c.get(&NodeKind::Theorem));
+        let result = cx.get_in::<TheoremView>(0);
         ui.horizontal_top(|ui| {
             ui.vertical(|ui| {
                 ui.set_width(270.0);
@@ -63,13 +63,13 @@ impl Panel for TheoremPanel {
                     .show(ui, |ui| controls_ui(ui, &mut cx.scene.theorem));
             });
             ui.separator();
-            let view = match result.map(|r| &r.value) {
-                Some(Ok(NodeValue::Theorem(v))) => v.clone(),
-                Some(Err(e)) => {
+            let view = match result {
+                Slot::Ready(_, v) => v.clone(),
+                Slot::Failed(_, e) => {
                     ui.colored_label(NYQUIST, format!("sampling theorem: {e}"));
                     return;
                 }
-                _ => {
+                Slot::Missing => {
                     ui.spinner();
                     return;
                 }

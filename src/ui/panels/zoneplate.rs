@@ -2,11 +2,11 @@
 //! (one at a time, chosen in the shared view state), with its metrics and the reference's method.
 
 use super::{Panel, PanelCx};
-use crate::model::Colormap;
 use crate::model::FigureKind;
-use crate::scene::graph::{NodeKind, NodeValue};
+use crate::model::{Colormap, ErrorData, ReconData, ReferenceData};
 use crate::scene::panels::PanelKind;
 use crate::ui::gpu::DisplayRange;
+use crate::ui::results::Slot;
 use crate::ui::view::{ViewState, ZoneImage};
 use crate::ui::widgets::status::{error_label, time_label};
 use eframe::egui::{self, Color32};
@@ -32,7 +32,8 @@ impl Panel for ZonePlatePanel {
         let (ci, side) = (cx.column, cx.side);
         ui.horizontal_wrapped(|ui| {
             let lab = cx
-                .result(NodeKind::Reconstruction)
+                .get::<ReconData>()
+                .shown()
                 .map_or(&*cx.scene, |r| r.scene.as_ref());
             ui.label(format!("{} {}²", lab.signal.name(), lab.recon.size));
             ui.selectable_value(&mut cx.view.zone_image, ZoneImage::Reconstruction, "recon");
@@ -50,72 +51,68 @@ impl Panel for ZonePlatePanel {
             ui.small("reconstruction effect is off");
             return;
         }
-        let kind = match cx.view.zone_image {
-            ZoneImage::Reconstruction => NodeKind::Reconstruction,
-            ZoneImage::Reference => NodeKind::Reference,
-            ZoneImage::Error | ZoneImage::ErrorSpectrum => NodeKind::Error,
-        };
-        let Some(r) = cx.result(kind) else {
-            if cx.view.zone_image != ZoneImage::Reconstruction && !cx.scene.effects.error {
-                ui.small("reference/error effect is off");
-            } else {
-                ui.spinner();
-            }
-            return;
-        };
         let grey = DisplayRange {
             lo: 0.0,
             hi: 1.0,
             colormap: Colormap::Greys,
         };
-        let (image, range) = match &r.value {
-            Ok(NodeValue::Reconstruction(d)) => (d.image.clone(), grey),
-            Ok(NodeValue::Reference(d)) => (d.image.clone(), grey),
-            Ok(NodeValue::Error(d)) if cx.view.zone_image == ZoneImage::ErrorSpectrum => {
-                match &d.spectrum {
+        let error_effect = cx.scene.effects.error;
+        let zone = cx.view.zone_image;
+        let (r, image, range, name) = match zone {
+            ZoneImage::Reconstruction => match cx.get::<ReconData>() {
+                Slot::Ready(r, d) => (r, d.image.clone(), grey, "reconstruction"),
+                other => return not_ready(ui, zone, error_effect, &other),
+            },
+            ZoneImage::Reference => match cx.get::<ReferenceData>() {
+                Slot::Ready(r, d) => (r, d.image.clone(), grey, "reference"),
+                other => return not_ready(ui, zone, error_effect, &other),
+            },
+            ZoneImage::ErrorSpectrum => match cx.get::<ErrorData>() {
+                Slot::Ready(r, d) => match &d.spectrum {
                     Some((img, lo, hi)) => (
+                        r,
                         img.clone(),
                         DisplayRange {
                             lo: *lo,
                             hi: *hi,
                             colormap: Colormap::Viridis,
                         },
+                        "error",
                     ),
                     None => {
                         ui.small("no error spectrum for this image size");
                         return;
                     }
-                }
-            }
-            Ok(NodeValue::Error(d)) => (
-                d.image.clone(),
-                DisplayRange {
-                    lo: 0.0,
-                    hi: d.max_error.max(1e-6),
-                    colormap: Colormap::Inferno,
                 },
-            ),
-            Ok(_) => return,
-            Err(e) => {
-                error_label(ui, "reconstruction", e);
-                return;
-            }
+                other => return not_ready(ui, zone, error_effect, &other),
+            },
+            ZoneImage::Error => match cx.get::<ErrorData>() {
+                Slot::Ready(r, d) => (
+                    r,
+                    d.image.clone(),
+                    DisplayRange {
+                        lo: 0.0,
+                        hi: d.max_error.max(1e-6),
+                        colormap: Colormap::Inferno,
+                    },
+                    "error",
+                ),
+                other => return not_ready(ui, zone, error_effect, &other),
+            },
         };
         let z = cx.view.zoom.max(1) as f32;
         let s = 1.0 / z;
         let window = [0.5 - s / 2.0, 0.5 - s / 2.0, s, s];
         cx.images.ui(
             ui,
-            egui::Id::NULL.with(("zone", ci, kind)),
+            egui::Id::NULL.with(("zone", ci, name)),
             &image,
             range,
             window,
             side,
         );
         time_label(ui, r, cx.view.show_timings);
-        if let Some(Ok(NodeValue::Reconstruction(d))) =
-            cx.result(NodeKind::Reconstruction).map(|r| &r.value)
-        {
+        if let Some(d) = cx.get::<ReconData>().data() {
             if d.zero_weight > 0 {
                 ui.colored_label(
                     Color32::from_rgb(200, 120, 0),
@@ -133,7 +130,7 @@ impl Panel for ZonePlatePanel {
                 "each pixel is Σw·f / max(Σw, c·Σ|w|): where a kernel's negative lobes cancel                  (sparse samples), the plain Σw could approach 0; c is half the kernel's own                  ratio ∫∫w/∫∫|w|, so grids and dense samples are divided by Σw as before",
             );
         }
-        if let Some(Ok(NodeValue::Error(e))) = cx.result(NodeKind::Error).map(|r| &r.value) {
+        if let Some(e) = cx.get::<ErrorData>().data() {
             let low = e.low_frequency.map_or(String::new(), |l| {
                 format!(" · low-freq. error {:.1} % (white ≈ 4.9 %)", 100.0 * l)
             });
@@ -143,8 +140,8 @@ impl Panel for ZonePlatePanel {
                      W/8 cycles per image; blue-noise error (zsobol) keeps it small",
                 );
         }
-        if let Some(r) = cx.result(NodeKind::Reference) {
-            if let Ok(NodeValue::Reference(rf)) = &r.value {
+        if let Slot::Ready(r, rf) = cx.get::<ReferenceData>() {
+            {
                 // The node's own words: "≤" for a bound, "≈" for an estimate.
                 let own = r.accuracy.as_ref().map(|a| format!(", {a}"));
                 let refining = r
@@ -157,6 +154,20 @@ impl Panel for ZonePlatePanel {
                     refining.unwrap_or_default()
                 ));
             }
+        }
+    }
+}
+
+/// What the panel says when the image chosen has no data: the node's error, that the error
+/// effect is off (reference and error need it), or a spinner while it is computed.
+fn not_ready<T>(ui: &mut egui::Ui, zone: ZoneImage, error_effect: bool, slot: &Slot<'_, T>) {
+    match slot.error() {
+        Some(e) => error_label(ui, "reconstruction", e),
+        None if zone != ZoneImage::Reconstruction && !error_effect => {
+            ui.small("reference/error effect is off");
+        }
+        None => {
+            ui.spinner();
         }
     }
 }
