@@ -390,9 +390,10 @@ fn csv_rows(path: &Path) -> Vec<Vec<f64>> {
         .collect()
 }
 
-/// Three jittered sets of 64 points (seeds 1, 2, 3) and one of 32, written by `points`.
-fn realizations() -> (PathBuf, Vec<String>) {
-    let dir = scratch("avg");
+/// Three jittered sets of 64 points (seeds 1, 2, 3) and one of 32, written by `points` into
+/// the scratch folder `name` (one per test: tests run in parallel and this one empties it).
+fn realizations(name: &str) -> (PathBuf, Vec<String>) {
+    let dir = scratch(name);
     let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).unwrap();
     let mut files = Vec::new();
@@ -425,7 +426,7 @@ fn realizations() -> (PathBuf, Vec<String>) {
 
 #[test]
 fn averaging_files_equals_the_per_file_results_averaged_by_hand() {
-    let (dir, files) = realizations();
+    let (dir, files) = realizations("avg-by-hand");
     let out = |name: &str| dir.join(name).to_str().unwrap().to_string();
     let common = ["--size", "16", "--exact"];
     let mut args: Vec<&str> = vec!["--points"];
@@ -539,7 +540,7 @@ fn averaging_files_equals_the_per_file_results_averaged_by_hand() {
 
 #[test]
 fn averaging_files_of_different_n_or_no_match_is_refused_in_one_line() {
-    let (dir, files) = realizations();
+    let (dir, files) = realizations("avg-refused");
     let other = dir.join("other-32.csv");
     let (code, out, err) = samplescope(&[
         "analyze",
