@@ -4,11 +4,11 @@
 
 use super::outln;
 use super::session::{check_outputs, write_output, Session};
-use super::{from_args, parse_n, CliError};
+use super::{parse_n, CliError};
 use glam::DVec2;
 use samplescope::core::budget;
 use samplescope::core::metrics::{self, psa, MetricsError};
-use samplescope::core::pattern::{Pattern, MAX_N};
+use samplescope::core::pattern::MAX_N;
 use samplescope::core::pointset::{read_points_named, OutOfRange, PointsFileError};
 use samplescope::core::rng::derive_seed;
 use samplescope::core::spectrum::{
@@ -371,8 +371,7 @@ pub fn run(args: &AnalyzeArgs, session: &Session) -> Result<(), CliError> {
     } else {
         let name = args.pattern.as_deref().unwrap_or_default();
         let n = args.n.unwrap_or(0);
-        let pattern: Pattern =
-            from_args("", name, "--set", &args.set, "samplescope points --list")?;
+        let pattern = super::pattern_from_args(name, &args.set)?;
         super::check_seed(&pattern, args.seed, "--seed")?;
         super::check_allow_fewer(&pattern, args.allow_fewer)?;
         if args.realizations > 1 && !pattern.is_random() {

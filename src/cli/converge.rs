@@ -9,7 +9,6 @@ use samplescope::core::integration::{
     check_request, estimate, run_study, Integrand, Study, StudyError, StudyRequest, MAX_STUDY_N,
 };
 use samplescope::core::params::params_json;
-use samplescope::core::pattern::Pattern;
 use std::path::Path;
 
 /// Arguments of `samplescope converge`.
@@ -101,13 +100,7 @@ pub fn csv_text(study: &Study) -> String {
 
 /// Runs `samplescope converge`.
 pub fn run(args: &ConvergeArgs, session: &Session) -> Result<(), CliError> {
-    let pattern: Pattern = from_args(
-        "",
-        &args.pattern,
-        "--set",
-        &args.set,
-        "samplescope points --list",
-    )?;
+    let pattern = super::pattern_from_args(&args.pattern, &args.set)?;
     let integrand: Integrand = from_args(
         "--integrand",
         &args.integrand,

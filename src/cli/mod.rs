@@ -121,6 +121,12 @@ pub fn from_args<F: Family>(
     Ok(member)
 }
 
+/// The pattern named by a command's positional name or `--pattern` and its `--set` settings,
+/// the way every command that samples reads it (errors point at `samplescope points --list`).
+pub fn pattern_from_args(name: &str, settings: &[String]) -> Result<Pattern, CliError> {
+    from_args("", name, "--set", settings, "samplescope points --list")
+}
+
 /// Applies `key=value` settings (from `flag`, e.g. `--set`) to any parameter set through its
 /// descriptors: enum values unquoted (`shape=square`), booleans `true`/`false`, lists
 /// `amps=[0.5,0.25]`. Enum settings go first, so that a parameter that exists only for one

@@ -2,7 +2,7 @@
 
 use super::out;
 use super::session::{check_outputs, write_output, Session};
-use super::{check_allow_fewer, check_seed, from_args, parse_n, require_points, CliError};
+use super::{check_allow_fewer, check_seed, parse_n, pattern_from_args, require_points, CliError};
 use samplescope::core::budget;
 use samplescope::core::family::Family;
 use samplescope::core::pattern::{sphere, Pattern};
@@ -55,7 +55,7 @@ pub fn run(args: &PointsArgs, session: &Session) -> Result<(), CliError> {
             "points: a pattern and -n are required".into(),
         ));
     };
-    let pattern: Pattern = from_args("", name, "--set", &args.set, "samplescope points --list")?;
+    let pattern = pattern_from_args(name, &args.set)?;
     check_seed(&pattern, args.seed, "--seed")?;
     check_allow_fewer(&pattern, args.allow_fewer)?;
     pattern.validate(n)?;

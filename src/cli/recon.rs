@@ -167,13 +167,7 @@ pub fn run(args: &ReconArgs, session: &Session) -> Result<(), CliError> {
         &args.signal_set,
         "samplescope recon --help",
     )?;
-    let pattern: Pattern = from_args(
-        "",
-        &args.pattern,
-        "--set",
-        &args.set,
-        "samplescope points --list",
-    )?;
+    let pattern = super::pattern_from_args(&args.pattern, &args.set)?;
     let filter = filter_from_args(&args.filter, &args.filter_set, &args.mode)?;
     if let Some(why) = filter.reconstruction_refusal() {
         return Err(CliError::Usage(format!("--filter: {why}")));
