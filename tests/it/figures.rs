@@ -74,19 +74,7 @@ fn decode(bytes: &[u8]) -> (png::OutputInfo, Vec<u8>, Vec<(String, String)>) {
     let mut buf = vec![0; reader.output_buffer_size()];
     let info = reader.next_frame(&mut buf).expect("PNG frame");
     buf.truncate(info.buffer_size());
-    let mut text: Vec<(String, String)> = reader
-        .info()
-        .uncompressed_latin1_text
-        .iter()
-        .map(|t| (t.keyword.clone(), t.text.clone()))
-        .collect();
-    text.extend(
-        reader
-            .info()
-            .utf8_text
-            .iter()
-            .map(|t| (t.keyword.clone(), t.get_text().unwrap())),
-    );
+    let text = crate::png_text(reader.info());
     (info, buf, text)
 }
 

@@ -82,3 +82,16 @@ pub fn settle(h: &mut egui_kittest::Harness<'static, SamplescopeApp>, extra: usi
         h.step();
     }
 }
+
+/// A PNG's text chunks (tEXt and iTXt) as (keyword, text) pairs, in that order.
+pub fn png_text(info: &png::Info<'_>) -> Vec<(String, String)> {
+    info.uncompressed_latin1_text
+        .iter()
+        .map(|t| (t.keyword.clone(), t.text.clone()))
+        .chain(
+            info.utf8_text
+                .iter()
+                .map(|t| (t.keyword.clone(), t.get_text().expect("UTF-8 text chunk"))),
+        )
+        .collect()
+}

@@ -212,16 +212,7 @@ fn recon_out_is_the_scenes_reconstruction_figure() {
     let info = reader.info();
     let size = samplescope::export::figure::base_size(FigureKind::Reconstruction);
     assert_eq!((info.width, info.height), size);
-    let text: Vec<(String, String)> = info
-        .uncompressed_latin1_text
-        .iter()
-        .map(|t| (t.keyword.clone(), t.text.clone()))
-        .chain(
-            info.utf8_text
-                .iter()
-                .map(|t| (t.keyword.clone(), t.get_text().unwrap_or_default())),
-        )
-        .collect();
+    let text = crate::png_text(info);
     assert!(
         text.iter()
             .any(|(k, v)| k == "figure" && v == "reconstruction"),

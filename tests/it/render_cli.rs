@@ -413,16 +413,7 @@ fn theorem_scene_writes_the_theorem_figures_byte_identically() {
         .unwrap();
     let info = reader.info();
     assert_eq!((info.width, info.height), (820, 510));
-    let text: Vec<(String, String)> = info
-        .uncompressed_latin1_text
-        .iter()
-        .map(|t| (t.keyword.clone(), t.text.clone()))
-        .chain(
-            info.utf8_text
-                .iter()
-                .map(|t| (t.keyword.clone(), t.get_text().unwrap())),
-        )
-        .collect();
+    let text = crate::png_text(info);
     for key in ["pre-aliasing", "post-aliasing", "signal", "sampling rate"] {
         assert!(text.iter().any(|(k, _)| k == key), "no {key} in {text:?}");
     }
