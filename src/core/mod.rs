@@ -2,6 +2,7 @@
 
 pub mod budget;
 pub mod cancel;
+pub mod cube;
 pub mod family;
 pub mod filter;
 pub mod format;
