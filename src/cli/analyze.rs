@@ -7,19 +7,25 @@ use super::session::{check_outputs, write_output, Session};
 use super::{parse_n, CliError};
 use glam::DVec2;
 use samplescope::core::budget;
-use samplescope::core::metrics::{self, psa, MetricsError};
-use samplescope::core::pattern::MAX_N;
+use samplescope::core::cancel::Cancel;
+use samplescope::core::metrics::{self, psa};
+use samplescope::core::pattern::{Pattern, MAX_N};
 use samplescope::core::pointset::{read_points_named, OutOfRange, PointsFileError};
-use samplescope::core::rng::derive_seed;
-use samplescope::core::spectrum::{
-    average_periodogram, radial_average, SpectrumRequest, DEFAULT_ERROR_CHECK_BUDGET,
-};
-use samplescope::export::{flip_rows, png_bytes};
-use samplescope::model::Colormap;
+use samplescope::core::spectrum::Spectrum;
+use samplescope::engine::cache::DEFAULT_BUDGET;
+use samplescope::engine::Evaluator;
+use samplescope::export::figure::{base_size, Aspect, FileFormat};
+use samplescope::export::publish::{publish, Format, Target};
+use samplescope::export::ExportError;
+use samplescope::model::{Accuracy, FigureKind, SpectrumData};
+use samplescope::scene::graph::{self, NodeError, NodeKind, NodeResult, NodeValue};
 use samplescope::scene::SpectrumSettings;
+use samplescope::scene::{compute, cost, figure, Column, ImportedPoints, Panels, Scene};
 use serde_json::json;
+use std::collections::HashMap;
 use std::fmt::Write as _;
 use std::path::Path;
+use std::sync::Arc;
 use std::time::Instant;
 
 /// The NUFFT tolerance without --tolerance.
@@ -108,14 +114,6 @@ fn io_err(path: &str) -> impl FnOnce(std::io::Error) -> CliError + '_ {
     move |source| CliError::Io {
         path: path.to_string(),
         source,
-    }
-}
-
-/// A metric's error as a usage error (bad input), cancellation as cancellation.
-fn metrics_err(e: MetricsError) -> CliError {
-    match e {
-        MetricsError::Cancelled => CliError::Cancelled,
-        e => CliError::Usage(e.to_string()),
     }
 }
 
@@ -345,11 +343,20 @@ fn net_prefixes_text(p: &metrics::NetPrefixes) -> String {
     }
 }
 
-/// Runs `samplescope analyze`.
+/// What `analyze` analyses, as read from its arguments.
+pub enum Input {
+    /// Point files, one realization each (the same N in every file): their names and points.
+    Files {
+        files: Vec<String>,
+        sets: Vec<Vec<DVec2>>,
+    },
+    /// N points of a pattern (its realizations from seeds derived from `--seed`).
+    Pattern { pattern: Pattern, n: usize },
+}
+
+/// Runs `samplescope analyze`: checks the outputs, reads the input ([`read_input`]) and
+/// analyses it ([`analyze_2d`]).
 pub fn run(args: &AnalyzeArgs, session: &Session) -> Result<(), CliError> {
-    let cancel = &session.cancel;
-    let seed_arg = args.seed.unwrap_or(0);
-    let mut timings: Vec<(String, f64)> = Vec::new();
     // Every output is checked before any work (and before a point file is read).
     check_outputs(&[
         ("--spectrum", args.spectrum.as_deref()),
@@ -358,237 +365,470 @@ pub fn run(args: &AnalyzeArgs, session: &Session) -> Result<(), CliError> {
         ("--rdf", args.rdf.as_deref()),
     ])?;
     let t0 = Instant::now();
-    // Point files are read first (bounded and streamed): their size sets the estimates.
+    let input = read_input(args)?;
+    let read_ms = t0.elapsed().as_secs_f64() * 1e3;
+    analyze_2d(args, input, read_ms, session)
+}
+
+/// Reads what `analyze` analyses: the point files of `--points` (read first, bounded and
+/// streamed: their size sets the estimates), or the pattern and N, with everything the
+/// generator would refuse refused before the estimate and the budget.
+pub fn read_input(args: &AnalyzeArgs) -> Result<Input, CliError> {
     let files = expand_points(&args.points)?;
-    let (file_sets, generator) = if !files.is_empty() {
+    if !files.is_empty() {
         if args.realizations != 1 {
             return Err(CliError::Usage(format!(
                 "--realizations = {}: must be 1 with --points (each file is one realization)",
                 args.realizations
             )));
         }
-        (Some(read_point_files(&files, args.normalize)?), None)
-    } else {
-        let name = args.pattern.as_deref().unwrap_or_default();
-        let n = args.n.unwrap_or(0);
-        let pattern = super::pattern_from_args(name, &args.set)?;
-        super::check_seed(&pattern, args.seed, "--seed")?;
-        super::check_allow_fewer(&pattern, args.allow_fewer)?;
-        if args.realizations > 1 && !pattern.is_random() {
-            return Err(CliError::Usage(format!(
-                "--realizations {}: {} with these parameters is deterministic, so every \
-                 realization is the same point set and averaging them has no effect; leave it out",
-                args.realizations,
-                pattern.name()
-            )));
-        }
-        // Everything the generator would refuse is refused before the estimate and the budget.
-        pattern.validate(n)?;
-        (None, Some((pattern, n)))
+        let sets = read_point_files(&files, args.normalize)?;
+        return Ok(Input::Files { files, sets });
+    }
+    let name = args.pattern.as_deref().unwrap_or_default();
+    let n = args.n.unwrap_or(0);
+    let pattern = super::pattern_from_args(name, &args.set)?;
+    super::check_seed(&pattern, args.seed, "--seed")?;
+    super::check_allow_fewer(&pattern, args.allow_fewer)?;
+    if args.realizations > 1 && !pattern.is_random() {
+        return Err(CliError::Usage(format!(
+            "--realizations {}: {} with these parameters is deterministic, so every \
+             realization is the same point set and averaging them has no effect; leave it out",
+            args.realizations,
+            pattern.name()
+        )));
+    }
+    pattern.validate(n)?;
+    Ok(Input::Pattern { pattern, n })
+}
+
+/// The scene `analyze` evaluates: one column of imported points per file, or one column of
+/// the pattern (N points, seed `seed`); the spectrum panel alone, with `spectrum`'s settings.
+/// The statistics it prints are asked for by name ([`asked_nodes`]).
+pub fn analysis_scene(
+    input: &Input,
+    spectrum: SpectrumSettings,
+    seed: u64,
+    normalize: bool,
+) -> Scene {
+    let (columns, n) = match input {
+        Input::Files { files, sets } => (
+            files
+                .iter()
+                .zip(sets)
+                .map(|(file, points)| Column {
+                    seed,
+                    points: Some(ImportedPoints {
+                        path: String::new(),
+                        normalize,
+                        points: points.iter().map(|p| [p.x, p.y]).collect(),
+                        source: file.clone(),
+                    }),
+                    ..Column::default()
+                })
+                .collect(),
+            sets.first().map_or(0, Vec::len),
+        ),
+        Input::Pattern { pattern, n } => (
+            vec![Column {
+                pattern: *pattern,
+                seed,
+                ..Column::default()
+            }],
+            *n,
+        ),
     };
+    let mut scene = Scene {
+        title: "analyze".into(),
+        columns,
+        n,
+        spectrum,
+        ..Scene::default()
+    };
+    scene.panels = Panels {
+        pattern: false,
+        sphere: false,
+        spectrum: true,
+        zoneplate: false,
+        filter: false,
+        cost: false,
+        integration: false,
+        theorem: false,
+    };
+    scene.effects.reconstruction = false;
+    scene.effects.error = false;
+    scene.effects.convergence = false;
+    scene.effects.statistics = false;
+    scene
+}
+
+/// The nodes `analyze` reads besides the spectrum its scene shows: the statistics and PSA's,
+/// the RDF with `--rdf`, the prefixes' net check for point files.
+pub fn asked_nodes(args: &AnalyzeArgs, files: bool) -> Vec<NodeKind> {
+    let mut v = vec![NodeKind::Statistics, NodeKind::Psa, NodeKind::Spectrum];
+    if args.rdf.is_some() {
+        v.push(NodeKind::Rdf);
+    }
+    if files {
+        v.push(NodeKind::NetPrefixes);
+    }
+    v
+}
+
+/// The node results of every column of an evaluated scene.
+type Results = Vec<HashMap<NodeKind, Arc<NodeResult>>>;
+
+/// The `T` value of node `kind` in every column (an internal error if one has none).
+fn values<'a, T>(
+    results: &'a Results,
+    kind: NodeKind,
+    pick: impl Fn(&'a NodeValue) -> Option<&'a Arc<T>>,
+) -> Result<Vec<&'a Arc<T>>, CliError> {
+    results
+        .iter()
+        .map(|r| {
+            r.get(&kind)
+                .and_then(|r| r.value.as_ref().ok())
+                .and_then(&pick)
+                .ok_or_else(|| {
+                    CliError::Environment(format!(
+                        "analyze: the {} node did not finish",
+                        kind.name()
+                    ))
+                })
+        })
+        .collect()
+}
+
+/// The sum of node `kind`'s wall times over the columns, in ms.
+fn wall_ms(results: &Results, kind: NodeKind) -> f64 {
+    results
+        .iter()
+        .filter_map(|r| r.get(&kind))
+        .map(|r| r.wall.as_secs_f64() * 1e3)
+        .sum()
+}
+
+/// The tolerance asked for and the error measured, from a spectrum node's accuracy.
+fn spectrum_accuracy(a: Option<&Accuracy>) -> (Option<f64>, Option<f64>) {
+    match a {
+        Some(Accuracy::SpectrumMeasured {
+            relative_l2, asked, ..
+        }) => (Some(*asked), Some(*relative_l2)),
+        Some(Accuracy::SpectrumAsked { tolerance }) => (Some(*tolerance), None),
+        Some(Accuracy::ImportedOneRealization { spectrum, .. }) => {
+            spectrum_accuracy(Some(spectrum))
+        }
+        _ => (None, None),
+    }
+}
+
+/// The mean of the columns' periodograms (the spectrum of K ≥ 2 files: each file is one
+/// realization), summed in column order and scaled by 1/K as the core averages
+/// realizations; its display data as the spectrum node makes it, with the columns' stage
+/// times summed (the mean's own time in `average`).
+fn mean_spectrum(spectra: &[&Arc<SpectrumData>]) -> Result<SpectrumData, CliError> {
+    let t = Instant::now();
+    let first = &spectra[0].power;
+    let mut power = vec![0.0; first.power.len()];
+    for s in spectra {
+        for (a, p) in power.iter_mut().zip(&s.power.power) {
+            *a += p;
+        }
+    }
+    let k = spectra.len();
+    if k > 1 {
+        let inv = 1.0 / k as f64;
+        power.iter_mut().for_each(|a| *a *= inv);
+    }
+    let mean = Spectrum {
+        m: first.m,
+        power,
+        n_points: spectra.iter().map(|s| s.power.n_points).min().unwrap_or(0),
+        realizations: k,
+        dc: first.dc,
+    };
+    let average_ms = t.elapsed().as_secs_f64() * 1e3;
+    let mut stages: Vec<(String, f64)> = spectra[0].stages.clone();
+    for s in &spectra[1..] {
+        for ((_, total), (_, v)) in stages.iter_mut().zip(&s.stages) {
+            *total += v;
+        }
+    }
+    if let Some((_, v)) = stages.iter_mut().find(|(name, _)| name == "average") {
+        *v += average_ms;
+    }
+    compute::spectrum_data(&mean, stages).map_err(|e| CliError::Usage(e.to_string()))
+}
+
+/// The `--spectrum` PNG: the scene's spectrum figure of column 0, published through
+/// `export::publish` as `render` publishes it (its title, colour bar and metadata); over K ≥ 2
+/// files the figure of `spectrum`, their mean, labelled with the files.
+fn spectrum_figure(
+    scene: &Scene,
+    results: &Results,
+    spectrum: &Arc<SpectrumData>,
+    averaged: bool,
+    cancel: &Cancel,
+) -> Result<Vec<u8>, CliError> {
+    let usage = |e: &dyn std::fmt::Display| CliError::Usage(e.to_string());
+    let (one, columns) = if averaged {
+        // One column standing for the K files, drawing their mean.
+        let mut one = scene.clone();
+        let k = one.columns.len();
+        one.columns.truncate(1);
+        let names: Vec<String> = scene
+            .columns
+            .iter()
+            .filter_map(|c| c.points.as_ref().map(|p| p.label()))
+            .collect();
+        one.columns[0].label = format!("mean of {k} files ({} points each)", scene.n);
+        let mut columns =
+            figure::figure_columns(&one, &results[..1], "analyze").map_err(|e| usage(&e))?;
+        let (ctx, data) = &mut columns[0];
+        ctx.pattern_params = format!("files={}", names.join(","));
+        data.spectrum = Some(spectrum.clone());
+        ctx.spectrum_range = samplescope::model::shared_spectrum_range(&[spectrum.auto_range]);
+        (one, columns)
+    } else {
+        let columns = figure::figure_columns(scene, results, "analyze").map_err(|e| usage(&e))?;
+        (scene.clone(), columns)
+    };
+    let publication = figure::publication(&one, columns, "analyze");
+    let target = Target::Panel {
+        column: 0,
+        kind: FigureKind::Spectrum,
+    };
+    let png = [Format::Picture(FileFormat::Png)];
+    let made =
+        publish(&publication, target, &png, 1, Aspect::SLIDE, cancel).map_err(|e| match e {
+            ExportError::Cancelled => CliError::Cancelled,
+            e => usage(&e),
+        })?;
+    made.files
+        .into_iter()
+        .next()
+        .map(|(_, bytes)| bytes)
+        .ok_or_else(|| CliError::Environment("analyze: the spectrum figure was not made".into()))
+}
+
+/// Analyses 2D points (`input`, read in `read_ms`): the scene of [`analysis_scene`] checked
+/// against the budget with the scene's estimate (`scene::cost`) and the outputs', evaluated
+/// by the engine's `Evaluator`; over K ≥ 2 files the spectrum and RDF are the means of the
+/// columns'. `--spectrum` is the scene's spectrum figure, published through
+/// `export::publish`.
+pub fn analyze_2d(
+    args: &AnalyzeArgs,
+    input: Input,
+    read_ms: f64,
+    session: &Session,
+) -> Result<(), CliError> {
+    let cancel = &session.cancel;
+    let seed = args.seed.unwrap_or(0);
+    let files: Vec<String> = match &input {
+        Input::Files { files, .. } => files.clone(),
+        Input::Pattern { .. } => Vec::new(),
+    };
+    let is_files = !files.is_empty();
     // Files averaged (K ≥ 2) or one set.
-    let sets_k = file_sets.as_ref().map_or(1, |s| s.len());
+    let sets_k = match &input {
+        Input::Files { sets, .. } => sets.len(),
+        Input::Pattern { .. } => 1,
+    };
     let averaged = sets_k > 1;
-    // The scene's settings make the request; analyze shows DC and checks the error at the
-    // core's default budget (its measured error is reported as before).
+    // The scene's spectrum settings (its error check included: two rows of the exact DFT,
+    // ~2·N·M); DC masked in the figure only, the numbers hold it.
     let settings = SpectrumSettings {
         size: args.size,
         tolerance: args.tolerance.unwrap_or(DEFAULT_TOLERANCE),
         exact: args.exact,
-        realizations: if file_sets.is_some() {
-            sets_k
-        } else {
-            args.realizations
-        },
-        mask_dc: false,
+        realizations: args.realizations,
+        mask_dc: true,
     };
-    let req = SpectrumRequest {
-        error_check_budget: DEFAULT_ERROR_CHECK_BUDGET,
-        ..settings.request(0, false)
+    // The request the spectrum (averaged over the files) is, checked with the core's messages.
+    let n = match &input {
+        Input::Files { sets, .. } => sets[0].len(),
+        Input::Pattern { n, .. } => *n,
     };
-    req.validate().map_err(|e| CliError::Usage(e.to_string()))?;
-    let n = match (&file_sets, &generator) {
-        (Some(sets), _) => sets[0].len(),
-        (None, Some((_, n))) => *n,
-        (None, None) => 0,
-    };
-    let m = args.size;
-    let mut plan = Vec::new();
-    if let Some((pattern, n)) = &generator {
-        plan.push(budget::pattern(pattern, *n));
+    SpectrumSettings {
+        realizations: if is_files { sets_k } else { args.realizations },
+        ..settings
     }
-    // Per-set work runs once per file.
-    let times = |mut e: budget::Estimate| {
-        if sets_k > 1 {
-            e.operation = format!("{} × {sets_k} files", e.operation);
-            e.amount *= sets_k as f64;
-            e.seconds *= sets_k as f64;
-        }
-        e
-    };
-    let first = plan.len();
-    plan.push(times(budget::statistics(n)));
-    plan.push(times(budget::psa_statistics(n)));
-    plan.push(budget::spectrum(
-        &req,
-        n,
-        generator.as_ref().map(|(p, _)| p),
-    ));
+    .request(n, false)
+    .validate()
+    .map_err(|e| CliError::Usage(e.to_string()))?;
+    let mut scene = analysis_scene(&input, settings, seed, args.normalize);
+    let asked = asked_nodes(args, is_files);
+    let mut plan = graph::plan_asking(&scene, &asked);
+    let mut estimates = cost::estimate_plan(&scene, &plan);
+    let m = args.size;
     if args.spectrum.is_some() {
-        plan.push(budget::spectrum_image(m));
+        // The spectrum figure's PNG, at its base size.
+        let (fw, fh) = base_size(FigureKind::Spectrum);
+        estimates.push(budget::png(fw as usize, fh as usize));
     }
     if args.spectrum_data.is_some() {
-        plan.push(budget::text_rows("spectrum CSV", m * m));
+        estimates.push(budget::text_rows("spectrum CSV", m * m));
     }
-    let (rdf_bins, rdf_r_max) = psa::psa_rdf_range(n);
     if args.rdf.is_some() {
-        plan.push(times(budget::rdf(n, rdf_bins)));
-        plan.push(budget::text_rows("RDF CSV", rdf_bins));
+        estimates.push(budget::text_rows("RDF CSV", psa::psa_rdf_range(n).0));
     }
-    if file_sets.is_some() {
-        plan.push(times(budget::net_prefixes(n)));
-    }
-    let Some(progress) = session.admit(plan)? else {
+    let Some(progress) = session.admit(estimates)? else {
         return Ok(());
     };
     progress.stage(0);
-    let sets: Vec<Vec<DVec2>> = match (file_sets, &generator) {
-        (Some(sets), _) => sets,
-        (None, Some((pattern, n))) => {
-            let g = pattern.generate_with(*n, seed_arg, cancel)?;
-            vec![super::require_points(g, pattern, args.allow_fewer)?]
+    // A pattern that may stop short with --allow-fewer: its points are generated here (as the
+    // scene's points node would); a short set is shown as imported points.
+    let t0 = Instant::now();
+    if let (true, Input::Pattern { pattern, n }) = (args.allow_fewer, &input) {
+        let g = pattern.generate_with(*n, seed, cancel)?;
+        let points = super::require_points(g, pattern, true)?;
+        if points.len() < *n {
+            if args.realizations > 1 {
+                return Err(CliError::Usage(format!(
+                    "--realizations {}: {} placed {} of {n} points, and the other realizations \
+                     need all of them; leave --realizations out to analyse the points placed",
+                    args.realizations,
+                    pattern.name(),
+                    points.len()
+                )));
+            }
+            scene.n = points.len();
+            scene.columns[0].points = Some(ImportedPoints {
+                points: points.iter().map(|p| [p.x, p.y]).collect(),
+                source: pattern.name().into(),
+                ..Default::default()
+            });
+            plan = graph::plan_asking(&scene, &asked);
         }
-        (None, None) => Vec::new(),
-    };
+    }
+    let generated_ms = t0.elapsed().as_secs_f64() * 1e3;
+    // The scene's nodes, run by the engine's evaluator.
+    let mut results: Results = vec![HashMap::new(); scene.columns.len()];
+    Evaluator::new(DEFAULT_BUDGET, None).evaluate_planned(
+        &scene,
+        Arc::new(plan),
+        cancel,
+        &mut |c, kind, r| {
+            results[c].insert(kind, r);
+        },
+    );
+    if cancel.is_cancelled() {
+        return Err(CliError::Cancelled);
+    }
+    // The first node that failed by itself (later ones fail through their inputs).
+    for kind in [
+        NodeKind::Points,
+        NodeKind::Statistics,
+        NodeKind::Psa,
+        NodeKind::Spectrum,
+        NodeKind::Rdf,
+        NodeKind::NetPrefixes,
+    ] {
+        for r in &results {
+            match r.get(&kind).map(|r| &r.value) {
+                Some(Err(NodeError::Input { .. })) | Some(Ok(_)) | None => {}
+                Some(Err(e)) => return Err(super::node_error(e)),
+            }
+        }
+    }
+    let points = values(&results, NodeKind::Points, |v| match v {
+        NodeValue::Points(p) => Some(p),
+        _ => None,
+    })?;
     // A sampler may stop short of the n asked for (it says so in its note).
-    let Some(n) = sets.first().map(|s| s.len()) else {
-        return Err(CliError::Usage("no points to analyse".into()));
+    let n = points[0].points.len();
+    let stats = values(&results, NodeKind::Statistics, |v| match v {
+        NodeValue::Statistics(s) => Some(s),
+        _ => None,
+    })?;
+    let all_stats: Vec<&metrics::Statistics> = stats.iter().map(|s| &s.full).collect();
+    let psa = values(&results, NodeKind::Psa, |v| match v {
+        NodeValue::Psa(p) => Some(p),
+        _ => None,
+    })?;
+    let psa_skipped = psa[0].skipped.clone();
+    let all_psa: Option<Vec<metrics::PsaStatistics>> = psa.iter().map(|p| p.statistics).collect();
+    let spectra = values(&results, NodeKind::Spectrum, |v| match v {
+        NodeValue::Spectrum(s) => Some(s),
+        _ => None,
+    })?;
+    let spectrum: Arc<SpectrumData> = if averaged {
+        Arc::new(mean_spectrum(&spectra)?)
+    } else {
+        spectra[0].clone()
     };
-    timings.push(("points".into(), t0.elapsed().as_secs_f64() * 1e3));
+    let (tolerance, error) = spectrum_accuracy(
+        results[0]
+            .get(&NodeKind::Spectrum)
+            .and_then(|r| r.accuracy.as_ref()),
+    );
 
-    progress.stage(first);
-    let mut all_stats = Vec::with_capacity(sets.len());
-    let mut stat_ms = Vec::new();
-    for points in &sets {
-        let stats =
-            metrics::statistics(points, cancel).map_err(|e| CliError::Usage(e.to_string()))?;
-        for (i, (name, d)) in stats.timings.iter().enumerate() {
+    // Timings, in the order of the stages: points, statistics, PSA, spectrum, RDF, nets.
+    let mut timings: Vec<(String, f64)> = vec![(
+        "points".into(),
+        read_ms + generated_ms + wall_ms(&results, NodeKind::Points),
+    )];
+    let mut stat_ms: Vec<(String, f64)> = Vec::new();
+    for s in &all_stats {
+        for (i, (name, d)) in s.timings.iter().enumerate() {
             if stat_ms.len() <= i {
                 stat_ms.push((name.to_string(), 0.0));
             }
             stat_ms[i].1 += d.as_secs_f64() * 1e3;
         }
-        all_stats.push(stats);
     }
     timings.extend(stat_ms);
-
-    progress.stage(first + 1);
-    let (all_psa, psa_skipped) = if (psa::PSA_MIN_N..=psa::PSA_MAX_N).contains(&n) {
-        let t0 = Instant::now();
-        let mut v = Vec::with_capacity(sets.len());
-        for points in &sets {
-            v.push(metrics::psa_statistics(points, cancel).map_err(metrics_err)?);
-        }
-        timings.push(("PSA statistics".into(), t0.elapsed().as_secs_f64() * 1e3));
-        (Some(v), None)
-    } else {
-        (
-            None,
-            Some(format!(
-                "PSA statistics need {} ≤ n ≤ {} points (the RDF costs O(N²)), got n = {n}",
-                psa::PSA_MIN_N,
-                psa::PSA_MAX_N,
-            )),
-        )
-    };
-
-    progress.stage(first + 2);
-    let first_seed = derive_seed(seed_arg, 0);
-    let seed = seed_arg;
-    // Realization r of the spectrum is file r (its seed is derive_seed(seed, r)); with a
-    // pattern, realization 0 is the analysed point set and the others are fresh seeds.
-    let file_seeds: Vec<u64> = (0..sets.len() as u64)
-        .map(|r| derive_seed(seed, r))
-        .collect();
-    let sets_ref = &sets;
-    let (spec, report) = average_periodogram(
-        &req,
-        seed,
-        move |sd| match &generator {
-            Some((pattern, n)) if sd != first_seed => pattern.generate(*n, sd),
-            _ => {
-                let r = file_seeds.iter().position(|&s| s == sd).unwrap_or(0);
-                Ok(sets_ref[r].clone())
-            }
-        },
-        cancel,
-    )
-    .map_err(|e| CliError::Usage(e.to_string()))?;
-    for (name, d) in &report.stages {
-        timings.push((format!("spectrum {name}"), d.as_secs_f64() * 1e3));
+    if all_psa.is_some() {
+        timings.push(("PSA statistics".into(), wall_ms(&results, NodeKind::Psa)));
     }
-    progress.stage(first + 3);
-    let bins = radial_average(&spec).map_err(|e| CliError::Usage(e.to_string()))?;
+    for (name, ms) in &spectrum.stages {
+        timings.push((format!("spectrum {name}"), *ms));
+    }
 
     // Every output is made before any is written: a failure leaves none of them.
     let mut outputs: Vec<(&String, Vec<u8>)> = Vec::new();
     if let Some(path) = &args.spectrum {
-        let m = spec.m;
-        let log = spec.to_log_image(true);
-        // Row 0 of the PNG is the highest ky.
-        let values: Vec<f64> = flip_rows(&log, m).into_iter().map(f64::from).collect();
-        let mut sorted: Vec<f64> = values.clone();
-        sorted.sort_by(|a, b| a.total_cmp(b));
-        let lo = sorted[(sorted.len() - 1) * 2 / 100];
-        let hi = sorted[(sorted.len() - 1) * 998 / 1000].max(lo + 1e-3);
-        let text = [
-            ("Software", "samplescope".to_string()),
-            (
-                "Description",
-                format!("centred periodogram, log10 P in [{lo:.3}, {hi:.3}], DC masked"),
-            ),
-            (
-                "Parameters",
-                format!(
-                    "n={} size={} realizations={} method={:?} seed={}",
-                    n, m, req.realizations, req.method, seed_arg
-                ),
-            ),
-        ];
-        let bytes = png_bytes(&values, m, m, lo, hi, Colormap::Viridis, &text)
-            .map_err(|e| CliError::Usage(e.to_string()))?;
-        outputs.push((path, bytes));
+        outputs.push((
+            path,
+            spectrum_figure(&scene, &results, &spectrum, averaged, cancel)?,
+        ));
     }
     if let Some(path) = &args.spectrum_data {
         let mut s = String::from("kx,ky,power\n");
-        for (kx, ky, p) in spec.to_csv_rows() {
+        for (kx, ky, p) in spectrum.power.to_csv_rows() {
             let _ = writeln!(s, "{kx},{ky},{p:?}");
         }
         outputs.push((path, s.into_bytes()));
     }
     if let Some(path) = &args.raps {
         let mut s = String::from("radius,power\n");
-        for b in &bins {
-            let _ = writeln!(s, "{:?},{:?}", b.radius, b.mean_power);
+        for [radius, power] in &spectrum.raps {
+            let _ = writeln!(s, "{radius:?},{power:?}");
         }
         outputs.push((path, s.into_bytes()));
     }
     if let Some(path) = &args.rdf {
-        let t0 = Instant::now();
+        let rdfs = values(&results, NodeKind::Rdf, |v| match v {
+            NodeValue::Rdf(g) => Some(g),
+            _ => None,
+        })?;
         // The mean of the sets' g over the same bins (all sets hold N points).
-        let mut mean: Vec<f64> = vec![0.0; rdf_bins];
-        let mut dr = 0.0;
-        for points in &sets {
-            let g = metrics::rdf(points, rdf_bins, rdf_r_max, cancel).map_err(metrics_err)?;
-            dr = g.bin_width();
+        let t0 = Instant::now();
+        let mut mean: Vec<f64> = vec![0.0; rdfs[0].values().len()];
+        for g in &rdfs {
             for (acc, v) in mean.iter_mut().zip(g.values()) {
                 *acc += v;
             }
         }
         for v in &mut mean {
-            *v /= sets.len() as f64;
+            *v /= rdfs.len() as f64;
         }
-        timings.push(("RDF".into(), t0.elapsed().as_secs_f64() * 1e3));
+        let dr = rdfs[rdfs.len() - 1].bin_width();
+        timings.push((
+            "RDF".into(),
+            wall_ms(&results, NodeKind::Rdf) + t0.elapsed().as_secs_f64() * 1e3,
+        ));
         let d_hex = metrics::hex_distance(n);
         let mut s = String::from("r_min,r_max,r_mid_normalized,g\n");
         for (i, v) in mean.iter().enumerate() {
@@ -598,35 +838,38 @@ pub fn run(args: &AnalyzeArgs, session: &Session) -> Result<(), CliError> {
         outputs.push((path, s.into_bytes()));
     }
     // For point files: the (0,k,2)-net check of every power-of-two prefix.
-    let nets = if files.is_empty() {
-        Vec::new()
+    let nets: Vec<metrics::NetPrefixes> = if is_files {
+        timings.push((
+            "net prefixes".into(),
+            wall_ms(&results, NodeKind::NetPrefixes),
+        ));
+        values(&results, NodeKind::NetPrefixes, |v| match v {
+            NodeValue::NetPrefixes(p) => Some(p),
+            _ => None,
+        })?
+        .into_iter()
+        .map(|p| (**p).clone())
+        .collect()
     } else {
-        let t0 = Instant::now();
-        let mut v = Vec::with_capacity(sets.len());
-        for points in &sets {
-            v.push(metrics::net_prefixes(points, cancel).map_err(metrics_err)?);
-        }
-        timings.push(("net prefixes".into(), t0.elapsed().as_secs_f64() * 1e3));
-        v
+        Vec::new()
     };
     for (path, bytes) in outputs {
         write_output(Path::new(path), &bytes, cancel)?;
     }
     drop(progress);
 
-    let error = report.error.map(|e| e.relative_l2);
     let spectrum_json = json!({
-        "size": spec.m,
-        "realizations": spec.realizations,
+        "size": spectrum.power.m,
+        "realizations": spectrum.power.realizations,
         "method": if args.exact { "exact" } else { "nufft" },
-        "tolerance": report.tolerance,
+        "tolerance": tolerance,
         "measured_relative_l2_error": error,
     });
     let spectrum_line = format!(
         "spectrum               {}² · K = {} · {}",
-        spec.m,
-        spec.realizations,
-        match (report.tolerance, error) {
+        spectrum.power.m,
+        spectrum.power.realizations,
+        match (tolerance, error) {
             (Some(t), Some(e)) => format!("NUFFT, asked {t:.0e}, measured rel. ℓ2 error {e:.2e}"),
             (Some(t), None) => format!("NUFFT, asked {t:.0e} (exact check too expensive)"),
             (None, _) => "exact DFT".to_string(),
@@ -646,7 +889,7 @@ pub fn run(args: &AnalyzeArgs, session: &Session) -> Result<(), CliError> {
             &timings,
         );
     }
-    let stats = &all_stats[0];
+    let stats = all_stats[0];
     let psa_stats = all_psa.as_ref().map(|v| v[0]);
     let md = stats.min_distance.as_ref();
     if args.json {
@@ -743,7 +986,7 @@ fn print_averaged(
     args: &AnalyzeArgs,
     files: &[String],
     n: usize,
-    all_stats: &[metrics::Statistics],
+    all_stats: &[&metrics::Statistics],
     all_psa: Option<&[metrics::PsaStatistics]>,
     psa_skipped: Option<String>,
     nets: &[metrics::NetPrefixes],

@@ -233,6 +233,22 @@ pub fn require_points(
     })
 }
 
+/// A node's failure as the fronts over a scene (`recon`, `analyze`) report it: a pattern's
+/// error as a pattern error (a pattern that stopped short with the `--allow-fewer` hint),
+/// cancellation as cancellation, any other as bad input with the node's message.
+pub fn node_error(e: &samplescope::scene::node::NodeError) -> CliError {
+    use samplescope::core::metrics::MetricsError;
+    use samplescope::scene::node::NodeError;
+    match e {
+        NodeError::Pattern(e @ PatternError::TooFew { .. }) => CliError::Usage(format!(
+            "{e}; or pass --allow-fewer to keep the points placed"
+        )),
+        NodeError::Pattern(e) => CliError::Pattern(e.clone()),
+        NodeError::Cancelled | NodeError::Metrics(MetricsError::Cancelled) => CliError::Cancelled,
+        e => CliError::Usage(e.to_string()),
+    }
+}
+
 /// Opens a file the user named for reading. A path that does not exist, is a directory or
 /// goes through something that is not a directory is bad input (status 2); any other failure
 /// (permissions, a device error) is the environment's (status 1). See the README's "Exit

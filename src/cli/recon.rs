@@ -7,7 +7,6 @@ use super::{from_args, parse_n, CliError};
 use samplescope::core::budget;
 use samplescope::core::filter::{Filter, Filter2D, Mode2D};
 use samplescope::core::pattern::Pattern;
-use samplescope::core::pattern::PatternError;
 use samplescope::core::recon::{ReconError, MAX_SPP, MAX_W};
 use samplescope::core::signal::Signal;
 use samplescope::engine::cache::DEFAULT_BUDGET;
@@ -16,8 +15,7 @@ use samplescope::export::figure::{base_size, Aspect, FileFormat};
 use samplescope::export::publish::{publish, Format, Target};
 use samplescope::export::ExportError;
 use samplescope::model::FigureKind;
-use samplescope::scene::graph::{NodeKind, NodeResult, NodeValue};
-use samplescope::scene::node::NodeError;
+use samplescope::scene::graph::{NodeError, NodeKind, NodeResult, NodeValue};
 use samplescope::scene::{figure, Column, ImportedPoints, Panels, ReconMode, Scene};
 use std::collections::HashMap;
 use std::path::Path;
@@ -144,19 +142,6 @@ fn one_column_scene(
     scene
 }
 
-/// A node's failure as `recon` reports it: the pattern's and the reconstruction's errors as
-/// before (bad input), a pattern that stopped short with the `--allow-fewer` hint.
-fn node_error(e: &NodeError) -> CliError {
-    match e {
-        NodeError::Pattern(e @ PatternError::TooFew { .. }) => CliError::Usage(format!(
-            "{e}; or pass --allow-fewer to keep the points placed"
-        )),
-        NodeError::Pattern(e) => CliError::Pattern(e.clone()),
-        NodeError::Cancelled => CliError::Cancelled,
-        e => CliError::Usage(e.to_string()),
-    }
-}
-
 /// Runs `samplescope recon`.
 pub fn run(args: &ReconArgs, session: &Session) -> Result<(), CliError> {
     let cancel = &session.cancel;
@@ -253,7 +238,7 @@ pub fn run(args: &ReconArgs, session: &Session) -> Result<(), CliError> {
     for kind in NodeKind::ALL {
         match value(kind) {
             Some(Err(NodeError::Input { .. })) | Some(Ok(_)) | None => {}
-            Some(Err(e)) => return Err(node_error(e)),
+            Some(Err(e)) => return Err(super::node_error(e)),
         }
     }
     let wall = |kinds: &[NodeKind]| {

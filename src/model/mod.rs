@@ -36,11 +36,15 @@ pub use integration::{
     guide_line, IntegrationCurve, IntegrationData, IntegrationPlot, GUIDE_SLOPES,
 };
 pub use points::{
-    drawn_strata, elementary_grid, PointsData, StatsData, MAX_STRATA_LINES, STATS_PSA_MAX_N,
+    drawn_strata, elementary_grid, PointsData, PsaData, StatsData, MAX_STRATA_LINES,
+    STATS_PSA_MAX_N,
 };
 pub use publication::Publication;
 pub use recon::{ConvergencePoint, ErrorData, ReconData, ReferenceData};
 pub use spectrum::{shared_spectrum_range, SpectrumData, SHARED_DECADES};
 
+/// PSA's radial distribution function and the (0,k,2)-net check of power-of-two prefixes:
+/// plain data computed by [`crate::core::metrics`].
+pub use crate::core::metrics::{NetPrefixes, Rdf};
 /// The 1D sampling-theorem view: plain data computed by [`crate::core::signal::theorem`].
 pub use crate::core::signal::theorem::TheoremView;

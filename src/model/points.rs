@@ -27,6 +27,20 @@ pub struct StatsData {
     /// PSA's effective Nyquist frequency, oscillations and bond-orientational order, for
     /// N ≤ [`STATS_PSA_MAX_N`] (their RDF is O(N²)).
     pub psa: Option<crate::core::metrics::PsaStatistics>,
+    /// The core's whole result: why a statistic was skipped, the t-value's m, the time of
+    /// each stage (what `samplescope analyze` prints).
+    pub full: crate::core::metrics::Statistics,
+}
+
+/// PSA's statistics of a column's points (the `Psa` node): computed for
+/// [`crate::core::metrics::PSA_MIN_N`] ≤ N ≤ [`crate::core::metrics::PSA_MAX_N`] (their RDF
+/// is O(N²)), otherwise the reason they were skipped.
+#[derive(Debug, Clone)]
+pub struct PsaData {
+    /// The statistics, when N is in range.
+    pub statistics: Option<crate::core::metrics::PsaStatistics>,
+    /// Why they were skipped, when N is not.
+    pub skipped: Option<String>,
 }
 
 /// Largest N whose statistics include PSA's measures (about 0.25 s at 4096 on 2 cores).

@@ -15,6 +15,9 @@ pub struct SpectrumData {
     pub anisotropy: Vec<[f64; 2]>,
     /// Wall time per stage (ms).
     pub stages: Vec<(String, f64)>,
+    /// The periodogram itself (P at every frequency, DC with its true value): what
+    /// `samplescope analyze` writes as CSV and averages over files.
+    pub power: std::sync::Arc<crate::core::spectrum::Spectrum>,
 }
 
 /// Most decades of log10 P one shared colour range spans below its top.

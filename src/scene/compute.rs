@@ -10,8 +10,8 @@ use std::sync::Arc;
 use std::time::Duration;
 
 use crate::model::{
-    next_version, ConvergencePoint, ErrorData, ImageData, IntegrationData, PointsData, ReconData,
-    ReferenceData, ResponseData, ResponseMetrics, SpectrumData, StatsData,
+    next_version, ConvergencePoint, ErrorData, ImageData, IntegrationData, PointsData, PsaData,
+    ReconData, ReferenceData, ResponseData, ResponseMetrics, SpectrumData, StatsData,
 };
 
 impl JobCtx<'_> {
@@ -119,11 +119,13 @@ pub(super) fn statistics(ctx: &JobCtx) -> Output {
     let (done, cancel) = (ctx.deps, ctx.cancel);
     let p = points_of(done)?;
     let s = crate::core::metrics::statistics(&p.points, cancel)?;
-    let n = p.points.len();
-    let psa = if (crate::core::metrics::PSA_MIN_N..=crate::model::STATS_PSA_MAX_N).contains(&n) {
-        Some(crate::core::metrics::psa_statistics(&p.points, cancel)?)
-    } else {
-        None
+    // PSA's statistics when the plan made them an input (N ≤ STATS_PSA_MAX_N).
+    let psa = match done.get(&NodeKind::Psa) {
+        Some(_) => match dep(done, NodeKind::Psa)? {
+            NodeValue::Psa(d) => d.statistics,
+            _ => return Err(NodeError::Internal("the PSA input has another kind".into())),
+        },
+        None => None,
     };
     let md = s.min_distance.as_ref();
     Ok((
@@ -135,9 +137,44 @@ pub(super) fn statistics(ctx: &JobCtx) -> Output {
             l2_star: s.l2_star,
             t_value: s.t_value.as_ref().map(|t| t.t),
             psa,
+            full: s,
         })),
         None,
     ))
+}
+
+pub(super) fn psa(ctx: &JobCtx) -> Output {
+    use crate::core::metrics::{psa_statistics, PSA_MAX_N, PSA_MIN_N};
+    let p = points_of(ctx.deps)?;
+    let n = p.points.len();
+    let data = if (PSA_MIN_N..=PSA_MAX_N).contains(&n) {
+        PsaData {
+            statistics: Some(psa_statistics(&p.points, ctx.cancel)?),
+            skipped: None,
+        }
+    } else {
+        PsaData {
+            statistics: None,
+            skipped: Some(format!(
+                "PSA statistics need {PSA_MIN_N} ≤ n ≤ {PSA_MAX_N} points (the RDF costs O(N²)), got n = {n}"
+            )),
+        }
+    };
+    Ok((NodeValue::Psa(Arc::new(data)), None))
+}
+
+pub(super) fn rdf(ctx: &JobCtx) -> Output {
+    let p = points_of(ctx.deps)?;
+    // PSA's bins: N/8 of them up to 8 hexagonal spacings.
+    let (bins, r_max) = crate::core::metrics::psa::psa_rdf_range(p.points.len());
+    let g = crate::core::metrics::rdf(&p.points, bins, r_max, ctx.cancel)?;
+    Ok((NodeValue::Rdf(Arc::new(g)), None))
+}
+
+pub(super) fn net_prefixes(ctx: &JobCtx) -> Output {
+    let p = points_of(ctx.deps)?;
+    let v = crate::core::metrics::net_prefixes(&p.points, ctx.cancel)?;
+    Ok((NodeValue::NetPrefixes(Arc::new(v)), None))
 }
 
 pub(super) fn samples(ctx: &JobCtx) -> Output {
@@ -520,8 +557,9 @@ pub(super) fn spectrum(ctx: &JobCtx) -> Output {
     Ok((NodeValue::Spectrum(Arc::new(data)), accuracy))
 }
 
-/// The display data of a periodogram: log image, auto range, RAPS and anisotropy.
-fn spectrum_data(
+/// The display data of a periodogram: log image, auto range, RAPS and anisotropy (a
+/// periodogram averaged elsewhere, `analyze`'s over files, is shown through it too).
+pub fn spectrum_data(
     spec: &crate::core::spectrum::Spectrum,
     stages: Vec<(String, f64)>,
 ) -> Result<SpectrumData, crate::core::spectrum::SpectrumError> {
@@ -552,6 +590,7 @@ fn spectrum_data(
         raps,
         anisotropy,
         stages,
+        power: Arc::new(spec.clone()),
     })
 }
 

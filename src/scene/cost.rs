@@ -61,13 +61,14 @@ fn node_estimates(scene: &Scene, c: usize, kind: NodeKind) -> Vec<Estimate> {
             Some(_) => Vec::new(),
             None => vec![budget::pattern(&col.pattern, scene.n)],
         },
-        NodeKind::Statistics => {
-            let mut v = vec![budget::statistics(n)];
-            if (crate::core::metrics::PSA_MIN_N..=crate::model::STATS_PSA_MAX_N).contains(&n) {
-                v.push(budget::psa_statistics(n));
-            }
-            v
-        }
+        // PSA's statistics are their own node (an input of the statistics for small N).
+        NodeKind::Statistics => vec![budget::statistics(n)],
+        NodeKind::Psa => vec![budget::psa_statistics(n)],
+        NodeKind::Rdf => vec![budget::rdf(
+            n,
+            crate::core::metrics::psa::psa_rdf_range(n).0,
+        )],
+        NodeKind::NetPrefixes => vec![budget::net_prefixes(n)],
         NodeKind::Spectrum => {
             let req = scene.spectrum.request(n, imported.is_some());
             let generator = imported.is_none().then_some(&col.pattern);

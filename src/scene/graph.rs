@@ -2,7 +2,8 @@
 //!
 //! ```text
 //! Points(pattern, n, seed) ─┬─> Spectrum(points; size, tolerance, realizations)
-//!                           ├─> Statistics(points)
+//!                           ├─> Psa(points) ─> Statistics(points; PSA for N ≤ 8192)
+//!                           ├─> Rdf(points), NetPrefixes(points)   (asked by `analyze`)
 //!                           └─> Samples(points; signal) ─> Reconstruction(filter, size) ─┐
 //!                                             Reference(signal, size) ─────────────────> Error
 //! Filter ─> Response         Convergence(pattern, seed, signal, filter)    Theorem(settings)
@@ -15,7 +16,9 @@
 //! ([`panels::PANELS`], asked through [`panels::asks_for`]). [`plan`] derives, per column, the
 //! nodes to compute (those a shown panel asks for plus their inputs, transitively), in
 //! dependency order, with their keys; the job of a node gets exactly the results of the inputs
-//! it declared. Adding a node is one table entry and one job function.
+//! it declared. Adding a node is one table entry and one job function. A front that needs
+//! nodes no panel reads (`samplescope analyze`: the RDF, the net check) asks for them by name
+//! ([`plan_asking`]).
 //!
 //! **Keys.** A node's key is the BLAKE3 hash of its kind, its algorithm's version
 //! ([`NodeDef::version`]), the RON text of the scene fields it reads (every field and float bit; streamed into the hasher, never shared by default) and
@@ -132,7 +135,7 @@ pub struct NodeDef {
 }
 
 /// The node table, indexed by `NodeKind as usize`.
-pub static NODES: [NodeDef; 11] = [
+pub static NODES: [NodeDef; 14] = [
     NodeDef {
         kind: NodeKind::Points,
         inputs: |s, c| {
@@ -148,8 +151,27 @@ pub static NODES: [NodeDef; 11] = [
         version: 1,
     },
     NodeDef {
+        kind: NodeKind::Psa,
+        inputs: |_, _| Inputs::new(NodeKind::Psa, &[NodeKind::Points], ()),
+        run: compute::psa,
+        disk_cached: false,
+        version: 1,
+    },
+    NodeDef {
         kind: NodeKind::Statistics,
-        inputs: |_, _| Inputs::new(NodeKind::Statistics, &[NodeKind::Points], ()),
+        // PSA's statistics are part of the overlay's for N ≤ STATS_PSA_MAX_N (their node is
+        // then an input); the column's N is known before its points are.
+        inputs: |s, c| {
+            let n = s.columns[c].points.as_ref().map_or(s.n, |p| p.points.len());
+            let psa =
+                (crate::core::metrics::PSA_MIN_N..=crate::model::STATS_PSA_MAX_N).contains(&n);
+            let nodes: &[NodeKind] = if psa {
+                &[NodeKind::Points, NodeKind::Psa]
+            } else {
+                &[NodeKind::Points]
+            };
+            Inputs::new(NodeKind::Statistics, nodes, ())
+        },
         run: compute::statistics,
         disk_cached: false,
         version: 1,
@@ -283,6 +305,20 @@ pub static NODES: [NodeDef; 11] = [
         disk_cached: false,
         version: 1,
     },
+    NodeDef {
+        kind: NodeKind::Rdf,
+        inputs: |_, _| Inputs::new(NodeKind::Rdf, &[NodeKind::Points], ()),
+        run: compute::rdf,
+        disk_cached: false,
+        version: 1,
+    },
+    NodeDef {
+        kind: NodeKind::NetPrefixes,
+        inputs: |_, _| Inputs::new(NodeKind::NetPrefixes, &[NodeKind::Points], ()),
+        run: compute::net_prefixes,
+        disk_cached: false,
+        version: 1,
+    },
 ];
 
 /// One node of a column's plan.
@@ -313,12 +349,18 @@ impl ColumnPlan {
 /// The plan of column `c`: the nodes the scene shows plus their inputs, transitively, in
 /// dependency order, each with its key.
 pub fn column_plan(scene: &Scene, c: usize) -> ColumnPlan {
+    column_plan_asking(scene, c, &[])
+}
+
+/// [`column_plan`] with the nodes `also` wanted besides those the scene shows (a front that
+/// reads nodes no panel reads: `samplescope analyze`).
+pub fn column_plan_asking(scene: &Scene, c: usize, also: &[NodeKind]) -> ColumnPlan {
     let inputs: Vec<Inputs> = NODES.iter().map(|d| (d.inputs)(scene, c)).collect();
     // Wanted: shown, or an input of a wanted node (inputs come earlier in NodeKind order).
     let mut wanted = [false; NodeKind::ALL.len()];
     for d in NODES.iter().rev() {
         let i = d.kind as usize;
-        if panels::asks_for(scene, c, d.kind) || wanted[i] {
+        if panels::asks_for(scene, c, d.kind) || also.contains(&d.kind) || wanted[i] {
             wanted[i] = true;
             for k in &inputs[i].nodes {
                 debug_assert!((*k as usize) < i, "inputs come first in NodeKind order");
@@ -365,7 +407,13 @@ pub type Plan = Vec<ColumnPlan>;
 
 /// Lists, per column, the nodes that the scene's visible panels and effects need.
 pub fn plan(scene: &Scene) -> Plan {
+    plan_asking(scene, &[])
+}
+
+/// [`plan`] with the nodes `also` wanted in every column besides those the scene shows
+/// ([`column_plan_asking`]).
+pub fn plan_asking(scene: &Scene, also: &[NodeKind]) -> Plan {
     (0..scene.columns.len())
-        .map(|c| column_plan(scene, c))
+        .map(|c| column_plan_asking(scene, c, also))
         .collect()
 }

@@ -12,8 +12,8 @@ use crate::core::signal::theorem::TheoremError;
 use crate::core::spectrum::SpectrumError;
 use crate::model::Accuracy;
 use crate::model::{
-    ConvergencePoint, ErrorData, ImageData, IntegrationData, PointsData, ReconData, ReferenceData,
-    ResponseData, SpectrumData, StatsData,
+    ConvergencePoint, ErrorData, ImageData, IntegrationData, NetPrefixes, PointsData, PsaData, Rdf,
+    ReconData, ReferenceData, ResponseData, SpectrumData, StatsData,
 };
 use serde::Serialize;
 use std::collections::HashMap;
@@ -25,6 +25,8 @@ use std::time::Duration;
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize)]
 pub enum NodeKind {
     Points,
+    /// PSA's statistics (an input of `Statistics` for the N its overlay shows them at).
+    Psa,
     Statistics,
     Spectrum,
     Samples,
@@ -37,12 +39,17 @@ pub enum NodeKind {
     Theorem,
     /// The integration-error study of the column's pattern.
     Integration,
+    /// PSA's radial distribution function (read by `analyze --rdf`, by no panel).
+    Rdf,
+    /// The (0,k,2)-net check of the power-of-two prefixes (read by `analyze`, by no panel).
+    NetPrefixes,
 }
 
 impl NodeKind {
     /// Every kind, in dependency (evaluation) order.
-    pub const ALL: [NodeKind; 11] = [
+    pub const ALL: [NodeKind; 14] = [
         NodeKind::Points,
+        NodeKind::Psa,
         NodeKind::Statistics,
         NodeKind::Spectrum,
         NodeKind::Samples,
@@ -53,12 +60,15 @@ impl NodeKind {
         NodeKind::Convergence,
         NodeKind::Theorem,
         NodeKind::Integration,
+        NodeKind::Rdf,
+        NodeKind::NetPrefixes,
     ];
 
     /// Display name.
     pub fn name(self) -> &'static str {
         match self {
             NodeKind::Points => "points",
+            NodeKind::Psa => "PSA statistics",
             NodeKind::Statistics => "statistics",
             NodeKind::Spectrum => "spectrum",
             NodeKind::Samples => "samples",
@@ -69,6 +79,8 @@ impl NodeKind {
             NodeKind::Convergence => "convergence",
             NodeKind::Theorem => "sampling theorem",
             NodeKind::Integration => "integration error",
+            NodeKind::Rdf => "RDF",
+            NodeKind::NetPrefixes => "net prefixes",
         }
     }
 }
@@ -203,6 +215,8 @@ impl From<Cancelled> for NodeError {
 #[derive(Debug, Clone)]
 pub enum NodeValue {
     Points(Arc<PointsData>),
+    /// PSA's statistics, or why they were skipped.
+    Psa(Arc<PsaData>),
     Statistics(Arc<StatsData>),
     Spectrum(Arc<SpectrumData>),
     Samples(Arc<Vec<f64>>),
@@ -215,6 +229,10 @@ pub enum NodeValue {
     Theorem(Arc<crate::core::signal::theorem::TheoremView>),
     /// The integration-error study.
     Integration(Arc<IntegrationData>),
+    /// PSA's radial distribution function.
+    Rdf(Arc<Rdf>),
+    /// The (0,k,2)-net check of the power-of-two prefixes.
+    NetPrefixes(Arc<NetPrefixes>),
 }
 
 /// The results of a node's declared inputs, by kind.
@@ -249,8 +267,13 @@ impl NodeValue {
         let pairs = |v: &Vec<[f64; 2]>| v.len() * 16;
         match self {
             NodeValue::Points(p) => p.points.len() * 16 + p.gpu.len() * 8,
-            NodeValue::Statistics(_) => std::mem::size_of::<StatsData>(),
-            NodeValue::Spectrum(s) => img(&s.image) + pairs(&s.raps) + pairs(&s.anisotropy),
+            NodeValue::Psa(_) => std::mem::size_of::<PsaData>(),
+            NodeValue::Statistics(s) => {
+                std::mem::size_of::<StatsData>() + s.full.timings.len() * 32
+            }
+            NodeValue::Spectrum(s) => {
+                img(&s.image) + pairs(&s.raps) + pairs(&s.anisotropy) + s.power.power.len() * 8
+            }
             NodeValue::Samples(v) => v.len() * 8,
             // The f64 pixels and the zero-weight mask besides the display image.
             NodeValue::Reconstruction(r) => img(&r.image) + r.exact.pixels.len() * 9,
@@ -262,6 +285,10 @@ impl NodeValue {
             NodeValue::Integration(i) => {
                 i.study.rows.len() * std::mem::size_of::<crate::core::integration::StudyRow>()
                     + i.thumbnail.values.len() * 4
+            }
+            NodeValue::Rdf(r) => r.values().len() * 8,
+            NodeValue::NetPrefixes(p) => {
+                p.prefixes.len() * std::mem::size_of::<crate::core::metrics::PrefixCheck>()
             }
         }
     }

@@ -316,14 +316,19 @@ mod tests {
                 .count();
             assert_eq!(owners, 1, "{} is saved by {owners} panels", f.name());
         }
-        // Every node a panel reads is in the node table, and only `Samples` (an input of the
-        // reconstruction) is asked for by no panel.
+        // Every node a panel reads is in the node table, and only `Samples` and `Psa`
+        // (inputs of the reconstruction and the statistics) and the nodes `analyze` asks for
+        // by name (`Rdf`, `NetPrefixes`) are asked for by no panel.
         for k in NodeKind::ALL {
             let readers = PANELS
                 .iter()
                 .filter(|p| p.nodes.iter().any(|&(n, _)| n == k))
                 .count();
-            assert_eq!(readers == 0, k == NodeKind::Samples, "{}", k.name());
+            let unread = matches!(
+                k,
+                NodeKind::Samples | NodeKind::Psa | NodeKind::Rdf | NodeKind::NetPrefixes
+            );
+            assert_eq!(readers == 0, unread, "{}", k.name());
         }
     }
 
@@ -374,7 +379,7 @@ mod tests {
                 // only by panels (statistics, and the inputs of what is drawn).
                 for k in &planned {
                     let drawn = available_in(&scene, c).iter().any(|&f| drawn_from(f) == *k);
-                    let input = matches!(k, NodeKind::Points | NodeKind::Samples);
+                    let input = matches!(k, NodeKind::Points | NodeKind::Samples | NodeKind::Psa);
                     let panel_only = *k == NodeKind::Statistics
                         || (*k == NodeKind::Integration && scene.panels.integration);
                     assert!(drawn || input || panel_only, "{}: {bits:b}", k.name());

@@ -583,8 +583,31 @@ fn bits(v: &NodeValue) -> String {
     let img = |i: &samplescope::model::ImageData| format!("{:?}", i.values);
     match v {
         NodeValue::Points(p) => format!("{:?}", p.points),
-        NodeValue::Statistics(s) => format!("{s:?}"),
-        NodeValue::Spectrum(s) => format!("{} {:?} {:?}", img(&s.image), s.raps, s.anisotropy),
+        NodeValue::Statistics(s) => {
+            // The core's whole result without its stage timings.
+            let mut full = s.full.clone();
+            full.timings.clear();
+            format!(
+                "{:?} {:?} {:?} {:?} {:?} {:?} {:?} {full:?}",
+                s.min_distance,
+                s.normalized_min_distance,
+                s.mean_nn,
+                s.star,
+                s.l2_star,
+                s.t_value,
+                s.psa
+            )
+        }
+        NodeValue::Psa(p) => format!("{p:?}"),
+        NodeValue::Rdf(r) => format!("{r:?}"),
+        NodeValue::NetPrefixes(p) => format!("{p:?}"),
+        NodeValue::Spectrum(s) => format!(
+            "{} {:?} {:?} {:?}",
+            img(&s.image),
+            s.raps,
+            s.anisotropy,
+            s.power.power
+        ),
         NodeValue::Samples(s) => format!("{s:?}"),
         NodeValue::Reconstruction(r) => img(&r.image),
         NodeValue::Reference(r) => format!("{} {:?}", img(&r.image), r.error_estimate),

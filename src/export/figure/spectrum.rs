@@ -238,6 +238,13 @@ mod tests {
                 raps: vec![],
                 anisotropy: vec![],
                 stages: vec![],
+                power: Arc::new(crate::core::spectrum::Spectrum {
+                    m: 2,
+                    power: vec![10.0, 100.0, 1000.0, 10000.0],
+                    n_points: 4,
+                    realizations: 1,
+                    dc: crate::core::spectrum::DcMode::Show,
+                }),
             })),
             ..Default::default()
         };
