@@ -26,6 +26,7 @@ use samplescope::core::integration::{
 };
 use samplescope::core::params::Params;
 use samplescope::core::pattern::Pattern;
+use samplescope::core::progress::no_progress;
 use std::hint::black_box;
 use std::sync::Mutex;
 use std::time::Instant;
@@ -117,7 +118,7 @@ fn studies(c: &mut Criterion) {
             continue;
         }
         let req = request(pattern);
-        let run = || run_study(&req, &never, &mut |_, _| {}).expect("study");
+        let run = || run_study(&req, &never, &mut no_progress).expect("study");
         let mut group = c.benchmark_group(&bench_id);
         group.sample_size(10);
         group.bench_function("fast", |b| b.iter(|| black_box(run())));
@@ -127,7 +128,7 @@ fn studies(c: &mut Criterion) {
         });
         // The naive loop: one timed run (seconds for best candidate), checked equal.
         let (c0, t0) = (process_cpu_ms(), Instant::now());
-        let naive_study = run_study_naive(&req, &never, &mut |_, _| {}).expect("naive");
+        let naive_study = run_study_naive(&req, &never, &mut no_progress).expect("naive");
         let naive = Timing {
             wall: t0.elapsed().as_secs_f64() * 1e3,
             cpu: process_cpu_ms() - c0,
@@ -181,7 +182,7 @@ fn evaluations(c: &mut Criterion) {
             shift: true,
             randomize: false,
         };
-        let run = || run_study(&req, &never, &mut |_, _| {}).expect("study");
+        let run = || run_study(&req, &never, &mut no_progress).expect("study");
         let mut group = c.benchmark_group(&bench_id);
         group.sample_size(10);
         group.bench_function("fast", |b| b.iter(|| black_box(run())));

@@ -27,6 +27,7 @@ use samplescope::core::pattern::optimize::{
     gbn, lloyd, lloyd_naive, sot, GBN_DEFAULT_ITERATIONS, LLOYD_DEFAULT_ITERATIONS,
     SOT_DEFAULT_DIRECTIONS, SOT_DEFAULT_ITERATIONS,
 };
+use samplescope::core::progress::no_progress;
 use samplescope::core::rng::Rng;
 use std::hint::black_box;
 use std::sync::Mutex;
@@ -80,19 +81,19 @@ fn lloyd_1024(c: &mut Criterion) {
     let mut group = c.benchmark_group("lloyd_1024");
     group.sample_size(20);
     group.bench_function("exact", |b| {
-        b.iter(|| lloyd(black_box(N), it, SEED, &never, &mut |_, _, _| {}))
+        b.iter(|| lloyd(black_box(N), it, SEED, &never, &mut no_progress))
     });
     group.finish();
     let fast = median_ms(11, || {
-        black_box(lloyd(N, it, SEED, &never, &mut |_, _, _| {}).ok());
+        black_box(lloyd(N, it, SEED, &never, &mut no_progress).ok());
     });
     let one = single_thread(|| {
         median_ms(11, || {
-            black_box(lloyd(N, it, SEED, &never, &mut |_, _, _| {}).ok());
+            black_box(lloyd(N, it, SEED, &never, &mut no_progress).ok());
         })
     });
     let naive = median_ms(3, || {
-        black_box(lloyd_naive(N, 1, SEED, &never, &mut |_, _, _| {}).ok());
+        black_box(lloyd_naive(N, 1, SEED, &never, &mut no_progress).ok());
     });
     let white = white_noise_ms();
     push(Row {
@@ -119,15 +120,15 @@ fn sot_1024(c: &mut Criterion) {
     let mut group = c.benchmark_group("sot_1024");
     group.sample_size(20);
     group.bench_function("defaults", |b| {
-        b.iter(|| sot(black_box(N), it, dirs, SEED, &never, &mut |_, _, _| {}))
+        b.iter(|| sot(black_box(N), it, dirs, SEED, &never, &mut no_progress))
     });
     group.finish();
     let fast = median_ms(11, || {
-        black_box(sot(N, it, dirs, SEED, &never, &mut |_, _, _| {}).ok());
+        black_box(sot(N, it, dirs, SEED, &never, &mut no_progress).ok());
     });
     let one = single_thread(|| {
         median_ms(11, || {
-            black_box(sot(N, it, dirs, SEED, &never, &mut |_, _, _| {}).ok());
+            black_box(sot(N, it, dirs, SEED, &never, &mut no_progress).ok());
         })
     });
     let white = white_noise_ms();
@@ -155,15 +156,15 @@ fn gbn_1024(c: &mut Criterion) {
     let mut group = c.benchmark_group("gbn_1024");
     group.sample_size(10);
     group.bench_function("defaults", |b| {
-        b.iter(|| gbn(black_box(N), it, 0.0, SEED, &never, &mut |_, _, _| {}))
+        b.iter(|| gbn(black_box(N), it, 0.0, SEED, &never, &mut no_progress))
     });
     group.finish();
     let fast = median_ms(5, || {
-        black_box(gbn(N, it, 0.0, SEED, &never, &mut |_, _, _| {}).ok());
+        black_box(gbn(N, it, 0.0, SEED, &never, &mut no_progress).ok());
     });
     let one = single_thread(|| {
         median_ms(5, || {
-            black_box(gbn(N, it, 0.0, SEED, &never, &mut |_, _, _| {}).ok());
+            black_box(gbn(N, it, 0.0, SEED, &never, &mut no_progress).ok());
         })
     });
     let white = white_noise_ms();

@@ -166,8 +166,8 @@ pub fn run(args: &ConvergeArgs, session: &Session) -> Result<(), CliError> {
     };
     progress.stage(0);
     let mut stage = 0;
-    let study = run_study(&req, &session.cancel, &mut |done, total| {
-        if stage == 0 && done as f64 >= first * total as f64 && stages > 1 {
+    let study = run_study(&req, &session.cancel, &mut |p| {
+        if stage == 0 && p.done as f64 >= first * p.total as f64 && stages > 1 {
             stage = 1;
             progress.stage(1);
         }

@@ -66,8 +66,8 @@ pub fn run(args: &PointsArgs, session: &Session) -> Result<(), CliError> {
     };
     let cancel = &session.cancel;
     progress.stage(0);
-    let generated = pattern.generate_observed(n, args.seed.unwrap_or(0), cancel, &mut |r| {
-        progress.steps_done(r.step, r.steps)
+    let generated = pattern.generate_observed(n, args.seed.unwrap_or(0), cancel, &mut |p| {
+        progress.follow(p)
     })?;
     let points = require_points(generated, &pattern, args.allow_fewer)?;
     progress.stage(1);

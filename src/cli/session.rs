@@ -284,14 +284,14 @@ impl Progress {
 }
 
 impl Progress {
-    /// The current stage reports that `done` of `of` of its steps are done (an optimiser's
-    /// iterations): the bar follows them instead of the estimated time.
-    pub fn steps_done(&self, done: usize, of: usize) {
-        if of == 0 {
+    /// The current stage's routine reports its steps (an optimiser's iterations): the bar
+    /// follows them instead of the estimated time.
+    pub fn follow<T: ?Sized>(&self, report: samplescope::core::progress::Progress<'_, T>) {
+        if report.total == 0 {
             return;
         }
         if let Ok(mut p) = self.position.lock() {
-            p.done = Some((done as f64 / of as f64).min(1.0));
+            p.done = Some(report.fraction());
         }
     }
 }

@@ -12,6 +12,7 @@ pub mod output;
 pub mod params;
 pub mod pattern;
 pub mod pointset;
+pub mod progress;
 pub mod recon;
 pub mod rng;
 pub mod signal;

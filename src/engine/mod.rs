@@ -10,7 +10,7 @@
 //! completed result is cached ([`cache::MemoryCache`], bounded by bytes, least recently used
 //! first out; reference images also on disk, [`disk_cache::DiskCache`]).
 //!
-//! Slow nodes publish coarse results first ([`Progress`]): the UI shows them with
+//! Slow nodes publish coarse results first (with their [`Steps`]): the UI shows them with
 //! "refining i/n" and their error estimate; the final result is the node's plain result, bit
 //! for bit. Every [`Update`] carries the generation and the scene snapshot it was computed
 //! for, so a panel or a saved figure never mixes one scene's labels with another's data.
@@ -26,10 +26,11 @@ pub mod disk_cache;
 pub mod scheduler;
 
 use crate::core::cancel::Cancel;
+pub use crate::core::progress::Steps;
 use crate::scene::graph::{self, NodeKey, NodeKind, NodeResult, Plan};
 use crate::scene::Scene;
+pub use scheduler::Update;
 use scheduler::{Event, Scheduler, Shared, Sink};
-pub use scheduler::{Progress, Update};
 use std::sync::atomic::Ordering;
 use std::sync::mpsc::{channel, Receiver, RecvTimeoutError, Sender, TryRecvError};
 use std::sync::Arc;

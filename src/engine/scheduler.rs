@@ -18,6 +18,7 @@
 use super::cache::MemoryCache;
 use super::disk_cache::DiskCache;
 use crate::core::cancel::Cancel;
+use crate::core::progress::Steps;
 use crate::scene::graph::{NodeKey, NodeKind, NodeResult, Plan};
 use crate::scene::node::{JobCtx, NodeError, Partial};
 use crate::scene::Scene;
@@ -26,13 +27,6 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::mpsc::Sender;
 use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
-
-/// Progress of a node that refines: step `step` of `steps` is on screen.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct Progress {
-    pub step: usize,
-    pub steps: usize,
-}
 
 /// A node result for one column of one generation.
 #[derive(Clone)]
@@ -46,7 +40,7 @@ pub struct Update {
     pub scene: Arc<Scene>,
     pub result: Arc<NodeResult>,
     /// `Some` for a coarse result while the node refines; `None` for the final one.
-    pub progress: Option<Progress>,
+    pub progress: Option<Steps>,
 }
 
 /// What drives the scheduler.
@@ -329,11 +323,7 @@ impl Scheduler {
             wall,
             accuracy: partial.accuracy,
         });
-        let progress = Progress {
-            step: partial.step,
-            steps: partial.steps,
-        };
-        deliver(active, &active.nodes[i], r, Some(progress), sink);
+        deliver(active, &active.nodes[i], r, Some(partial.progress), sink);
     }
 
     fn done(&mut self, job: u64, key: NodeKey, result: Option<NodeResult>, sink: &mut dyn Sink) {
@@ -363,7 +353,7 @@ fn deliver(
     active: &Active,
     p: &Planned,
     result: Arc<NodeResult>,
-    progress: Option<Progress>,
+    progress: Option<Steps>,
     sink: &mut dyn Sink,
 ) {
     for &c in &p.columns {

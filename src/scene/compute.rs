@@ -2,6 +2,7 @@
 
 use super::node::{Deps, JobCtx, NodeError, NodeKind, NodeValue, Output, Partial};
 use super::ReconMode;
+use crate::core::progress::{Progress, Steps, Throttle};
 use crate::core::recon::image_plane::{ImagePlaneProvider, ZSobolProvider};
 use crate::core::recon::supersample::SampleProvider;
 use crate::model::Accuracy;
@@ -17,6 +18,16 @@ use crate::model::{
 impl JobCtx<'_> {
     fn col(&self) -> &super::Column {
         &self.scene.columns[self.column]
+    }
+
+    /// Publishes a coarse value while the node refines, `progress` of the way (never the
+    /// last step: the job returns that).
+    fn publish(&self, value: NodeValue, accuracy: Option<Accuracy>, progress: Steps) {
+        (self.progress)(Partial {
+            value,
+            accuracy,
+            progress,
+        })
     }
 }
 
@@ -78,21 +89,21 @@ pub(super) fn points(ctx: &JobCtx) -> Output {
     // An optimiser (Lloyd, SOT, GBN) shows the points it has reached, at most every
     // POINTS_PARTIAL_INTERVAL, so the pattern panel relaxes live; the final points do not
     // depend on what was shown.
-    let mut last = std::time::Instant::now();
+    let mut throttle = Throttle::new(POINTS_PARTIAL_INTERVAL);
     let g = col
         .pattern
-        .generate_observed(scene.n, col.seed, cancel, &mut |r| {
-            if r.step < r.steps && last.elapsed() >= POINTS_PARTIAL_INTERVAL {
-                (ctx.progress)(Partial {
-                    value: points_value(r.points.to_vec(), None),
-                    accuracy: Some(Accuracy::Iterations {
-                        done: r.step,
-                        of: r.steps,
-                    }),
-                    step: r.step,
-                    steps: r.steps,
-                });
-                last = std::time::Instant::now();
+        .generate_observed(scene.n, col.seed, cancel, &mut |p| {
+            if let Some(points) = p.interim().filter(|_| throttle.due()) {
+                let accuracy = Accuracy::Iterations {
+                    done: p.done,
+                    of: p.total,
+                };
+                ctx.publish(
+                    points_value(points.to_vec(), None),
+                    Some(accuracy),
+                    p.steps(),
+                );
+                throttle.restart();
             }
         })?;
     // A column never shows fewer points than the scene asks for: a pattern that stops short
@@ -242,16 +253,15 @@ pub(super) fn reconstruction(ctx: &JobCtx) -> Output {
                     &scene.filter,
                     cancel,
                 )?;
-                (ctx.progress)(Partial {
-                    value: NodeValue::Reconstruction(Arc::new(ReconData::new(p))),
-                    accuracy: Some(Accuracy::Preview {
+                ctx.publish(
+                    NodeValue::Reconstruction(Arc::new(ReconData::new(p))),
+                    Some(Accuracy::Preview {
                         spp: preview_spp,
                         of: spp,
                         noise: (PREVIEW_DIVISOR as f64).sqrt(),
                     }),
-                    step: 1,
-                    steps: 2,
-                });
+                    Steps::at(1, 2),
+                );
             }
             crate::core::recon::supersample(
                 &scene.signal,
@@ -296,14 +306,11 @@ pub(super) fn reference(ctx: &JobCtx) -> Output {
         w,
         &crate::core::recon::ReferenceOptions::default(),
         cancel,
-        &mut |img, step, steps| {
-            let (value, accuracy) = data(img);
-            (ctx.progress)(Partial {
-                value,
-                accuracy,
-                step,
-                steps,
-            });
+        &mut |p| {
+            if let Some(img) = p.interim() {
+                let (value, accuracy) = data(img);
+                ctx.publish(value, accuracy, p.steps());
+            }
         },
     )?;
     Ok(data(&r))
@@ -469,7 +476,6 @@ pub(super) fn convergence(ctx: &JobCtx) -> Output {
             })
             .collect()
     };
-    let steps = CONVERGENCE_SPP.len();
     // The curve grows one spp level at a time on screen.
     let curve = crate::core::recon::convergence_curve_progressive(
         &scene.signal,
@@ -478,16 +484,15 @@ pub(super) fn convergence(ctx: &JobCtx) -> Output {
         CONVERGENCE_SIZE,
         &scene.filter,
         cancel,
-        &mut |points| {
-            (ctx.progress)(Partial {
-                value: NodeValue::Convergence(Arc::new(plain(points))),
-                accuracy: Some(Accuracy::ConvergenceLevels {
-                    done: points.len(),
-                    of: steps,
-                }),
-                step: points.len(),
-                steps,
-            })
+        &mut |p| {
+            if let Some(points) = p.interim() {
+                let accuracy = Accuracy::ConvergenceLevels {
+                    done: p.done,
+                    of: p.total,
+                };
+                let value = NodeValue::Convergence(Arc::new(plain(points)));
+                ctx.publish(value, Some(accuracy), p.steps());
+            }
         },
     )?;
     Ok((NodeValue::Convergence(Arc::new(plain(&curve.points))), None))
@@ -506,15 +511,17 @@ pub(super) fn spectrum(ctx: &JobCtx) -> Output {
     let req = s.request(n_points, imported);
     let first = crate::core::rng::derive_seed(col.seed, 0);
     let (pattern, n) = (col.pattern, scene.n);
-    let k = req.realizations;
-    let mut on_partial = |spec: &crate::core::spectrum::Spectrum, done: usize| {
-        if let Ok(data) = spectrum_data(spec, Vec::new()) {
-            (ctx.progress)(Partial {
-                value: NodeValue::Spectrum(Arc::new(data)),
-                accuracy: Some(Accuracy::Realizations { done, of: k }),
-                step: done,
-                steps: k,
-            });
+    let mut on_progress = |p: Progress<'_, crate::core::spectrum::Spectrum>| {
+        if let Some(Ok(data)) = p.interim().map(|spec| spectrum_data(spec, Vec::new())) {
+            let accuracy = Accuracy::Realizations {
+                done: p.done,
+                of: p.total,
+            };
+            ctx.publish(
+                NodeValue::Spectrum(Arc::new(data)),
+                Some(accuracy),
+                p.steps(),
+            );
         }
     };
     let (spec, report) = average_periodogram_progressive(
@@ -529,7 +536,7 @@ pub(super) fn spectrum(ctx: &JobCtx) -> Output {
         },
         cancel,
         crate::core::spectrum::average::PARTIAL_INTERVAL,
-        &mut on_partial,
+        &mut on_progress,
     )?;
     let stages = report
         .stages
@@ -625,7 +632,7 @@ pub(crate) fn integrand_thumbnail(
 }
 
 pub(super) fn integration(ctx: &JobCtx) -> Output {
-    use crate::core::integration::{run_study_progressive, Study, StudyError};
+    use crate::core::integration::{run_study, Study, StudyError};
     use crate::core::params::Params;
     let (scene, col, cancel) = (ctx.scene, ctx.col(), ctx.cancel);
     if col.points.is_some() {
@@ -648,13 +655,12 @@ pub(super) fn integration(ctx: &JobCtx) -> Output {
         }))
     };
     // The curve shows 1, 2, 4, … realizations as they come in, then all R.
-    let study = run_study_progressive(&req, cancel, &mut |_, _| {}, &mut |s, r| {
-        (ctx.progress)(Partial {
-            value: data(s, r),
-            accuracy: Some(Accuracy::Realizations { done: r, of }),
-            step: r,
-            steps: of,
-        })
+    let study = run_study(&req, cancel, &mut |p| {
+        if let Some(s) = p.interim() {
+            let r = s.realizations;
+            let accuracy = Accuracy::Realizations { done: r, of };
+            ctx.publish(data(s, r), Some(accuracy), Steps::at(r, of));
+        }
     })
     .map_err(|e| match e {
         StudyError::Cancelled => NodeError::Cancelled,

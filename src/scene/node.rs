@@ -7,6 +7,7 @@ use crate::core::cancel::{Cancel, Cancelled};
 use crate::core::filter::FilterError;
 use crate::core::metrics::MetricsError;
 use crate::core::pattern::PatternError;
+use crate::core::progress::Steps;
 use crate::core::recon::ReconError;
 use crate::core::signal::theorem::TheoremError;
 use crate::core::spectrum::SpectrumError;
@@ -241,13 +242,12 @@ pub type Deps = HashMap<NodeKind, Arc<NodeResult>>;
 /// What a job returns: its value and the accuracy reached, or the error that stopped it.
 pub type Output = Result<(NodeValue, Option<Accuracy>), NodeError>;
 
-/// A coarse result a node publishes while it refines (step `step` of `steps`; the last step
+/// A coarse result a node publishes while it refines, `progress` of the way (the last step
 /// is the node's final result and is returned, not published).
 pub struct Partial {
     pub value: NodeValue,
     pub accuracy: Option<Accuracy>,
-    pub step: usize,
-    pub steps: usize,
+    pub progress: Steps,
 }
 
 /// Everything a job sees: the scene, its column, its declared inputs' results, its own

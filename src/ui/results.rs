@@ -3,7 +3,8 @@
 //! (which draw it). The one place the UI decodes the graph's `NodeValue`: a panel asks for the
 //! plain `model` data it draws ([`slot`], `PanelCx::get`) and gets it with its status.
 
-use crate::engine::{Progress, Update};
+use crate::core::progress::Steps;
+use crate::engine::Update;
 use crate::model::{
     ConvergencePoint, ErrorData, IntegrationData, PointsData, ReconData, ReferenceData,
     ResponseData, SpectrumData, StatsData, TheoremView,
@@ -24,7 +25,7 @@ pub struct Shown {
     /// The generation it belongs to.
     pub generation: u64,
     /// `Some` while the node refines (a coarse result is on screen).
-    pub progress: Option<Progress>,
+    pub progress: Option<Steps>,
 }
 
 impl std::ops::Deref for Shown {

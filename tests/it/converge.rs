@@ -4,6 +4,7 @@
 use samplescope::core::cancel::Cancel;
 use samplescope::core::integration::{run_study, Integrand, StudyRequest};
 use samplescope::core::pattern::Pattern;
+use samplescope::core::progress::no_progress;
 use std::process::Command;
 
 fn samplescope(args: &[&str]) -> std::process::Output {
@@ -63,7 +64,7 @@ fn json_has_every_key_and_matches_the_library() {
         shift: true,
         randomize: false,
     };
-    let study = run_study(&req, &Cancel::never(), &mut |_, _| {}).unwrap();
+    let study = run_study(&req, &Cancel::never(), &mut no_progress).unwrap();
     let close = |a: Option<f64>, b: Option<f64>| match (a, b) {
         (Some(a), Some(b)) => (a - b).abs() <= 1e-15 * b.abs(),
         (a, b) => a == b,

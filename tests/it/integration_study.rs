@@ -4,6 +4,7 @@
 
 use samplescope::core::cancel::Cancel;
 use samplescope::core::integration::run_study;
+use samplescope::core::progress::no_progress;
 use samplescope::engine::{Engine, Evaluator};
 use samplescope::model::Accuracy;
 use samplescope::scene::graph::{NodeKind, NodeValue};
@@ -46,7 +47,7 @@ fn every_column_gets_its_study_with_partials_as_realizations_come_in() {
         let want = run_study(
             &scene.integration.request(col.pattern, col.seed),
             &Cancel::never(),
-            &mut |_, _| {},
+            &mut no_progress,
         )
         .unwrap();
         let got = data(last);
@@ -92,7 +93,7 @@ fn the_measured_slopes_are_those_the_scene_notes_state() {
             let s = run_study(
                 &scene.integration.request(col.pattern, col.seed),
                 &Cancel::never(),
-                &mut |_, _| {},
+                &mut no_progress,
             )
             .unwrap();
             let slope = s.slope.unwrap();

@@ -33,6 +33,7 @@ mod params;
 mod patterns_lowdisc;
 mod patterns_poisson;
 mod patterns_stratified;
+mod progress;
 mod psa;
 mod recon_error;
 mod recon_grid;

@@ -688,8 +688,8 @@ fn progressive_reference_reuses_the_first_pass_and_returns_the_same_bits() {
         (8, ReferenceOptions { strata: 1, seed: 2 }),
     ] {
         let mut steps: Vec<(ReferenceImage, usize, usize)> = Vec::new();
-        let got = reference_image_progressive(&board, w, &opts, &c, &mut |img, k, n| {
-            steps.push((img.clone(), k, n))
+        let got = reference_image_progressive(&board, w, &opts, &c, &mut |p| {
+            steps.push((p.so_far.unwrap().clone(), p.done, p.total))
         })
         .unwrap();
         let plain = reference_image_with(&board, w, &opts, &c).unwrap();
@@ -708,7 +708,10 @@ fn progressive_reference_reuses_the_first_pass_and_returns_the_same_bits() {
                 strata: opts.strata
             }
         );
-        assert_eq!(steps.len(), 1, "one intermediate image");
+        assert_eq!(steps.len(), 2, "one intermediate image, then the result");
+        let (last, k, n) = &steps[1];
+        assert_eq!((*k, *n), (2, 2));
+        assert!(same_bits(&last.pixels, &got.pixels));
         let (coarse, k, n) = &steps[0];
         assert_eq!((*k, *n), (1, 2));
         assert_eq!(
@@ -729,23 +732,22 @@ fn progressive_reference_reuses_the_first_pass_and_returns_the_same_bits() {
         assert_eq!(mse.sqrt().to_bits(), got.error_estimate.unwrap().to_bits());
         assert_eq!(coarse.error_estimate.is_none(), opts.strata == 1);
     }
-    // Exact and quadrature references have one pass: no callback, the same image.
+    // Exact and quadrature references have one pass: one report, 1 of 1, with the image.
     for sig in [
         Signal::ZonePlate(ZonePlate::default()),
         Signal::Chirp(Chirp::default()),
         Signal::Polygon(Polygon::default()),
         Signal::Grating(Grating::default()),
     ] {
-        let mut calls = 0;
-        let got = reference_image_progressive(
-            &sig,
-            20,
-            &ReferenceOptions::default(),
-            &c,
-            &mut |_, _, _| calls += 1,
-        )
-        .unwrap();
-        assert_eq!(calls, 0, "{}", sig.name());
+        let mut calls = Vec::new();
+        let got =
+            reference_image_progressive(&sig, 20, &ReferenceOptions::default(), &c, &mut |p| {
+                calls.push((p.done, p.total, p.so_far.map(|r| r.pixels.clone())))
+            })
+            .unwrap();
+        assert_eq!(calls.len(), 1, "{}", sig.name());
+        assert_eq!((calls[0].0, calls[0].1), (1, 1));
+        assert!(same_bits(calls[0].2.as_ref().unwrap(), &got.pixels));
         let plain = reference_image(&sig, 20).unwrap();
         assert!(same_bits(&got.pixels, &plain.pixels));
         assert_eq!(got.method, plain.method);
@@ -777,7 +779,11 @@ fn first_pass_standard_error_is_a_conservative_estimate() {
         w,
         &ReferenceOptions { strata: 4, seed: 5 },
         &c,
-        &mut |img, _, _| first = Some(img.clone()),
+        &mut |p| {
+            if let Some(img) = p.interim() {
+                first = Some(img.clone())
+            }
+        },
     )
     .unwrap();
     let first = first.unwrap();

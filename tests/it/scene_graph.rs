@@ -4,6 +4,7 @@
 
 use samplescope::core::cancel::Cancel;
 use samplescope::core::params::Params;
+use samplescope::core::progress::no_progress;
 use samplescope::engine::{Engine, Evaluator};
 use samplescope::scene::graph::{self, NodeKind, NodeResult, NodeValue};
 use samplescope::scene::{Scene, SceneError, BUILTIN};
@@ -442,7 +443,7 @@ fn slow_nodes_publish_coarse_results_then_the_exact_final_one() {
     );
     for u in &spectra[..spectra.len() - 1] {
         let p = u.progress.unwrap();
-        assert!(p.step < p.steps && p.steps == 128);
+        assert!(p.done < p.total && p.total == 128);
         assert!(matches!(
             u.result.accuracy,
             Some(samplescope::model::Accuracy::Realizations { .. })
@@ -636,7 +637,7 @@ fn heavy_supersampling_previews_at_a_sixteenth_then_gives_the_plain_result() {
         .filter(|u| u.kind == NodeKind::Reconstruction)
         .collect();
     assert_eq!(recon.len(), 2, "one preview, one final");
-    assert_eq!(recon[0].progress.map(|p| (p.step, p.steps)), Some((1, 2)));
+    assert_eq!(recon[0].progress.map(|p| (p.done, p.total)), Some((1, 2)));
     assert_eq!(
         recon[0].result.accuracy,
         Some(samplescope::model::Accuracy::Preview {
@@ -718,7 +719,7 @@ fn lloyd_publishes_the_points_it_has_reached_then_gives_the_plain_result() {
     let seed = s.columns[0].seed;
     let mut prev = 0;
     for u in partials {
-        let (step, steps) = u.progress.map(|p| (p.step, p.steps)).unwrap();
+        let (step, steps) = u.progress.map(|p| (p.done, p.total)).unwrap();
         assert_eq!(steps, 400);
         assert!(
             step > prev && step < steps,
@@ -735,9 +736,9 @@ fn lloyd_publishes_the_points_it_has_reached_then_gives_the_plain_result() {
     }
     // A run of k steps is the prefix of a longer one: a partial is exactly Lloyd with k steps.
     for u in [partials[0], partials[partials.len() - 1]] {
-        let step = u.progress.unwrap().step;
+        let step = u.progress.unwrap().done;
         let want =
-            optimize::lloyd(4096, step as u32, seed, &Cancel::never(), &mut |_, _, _| {}).unwrap();
+            optimize::lloyd(4096, step as u32, seed, &Cancel::never(), &mut no_progress).unwrap();
         assert_eq!(value(u), want, "step {step}");
     }
     assert_eq!(value(last), pattern.generate(4096, seed).unwrap());

@@ -337,18 +337,23 @@ fn progressive_average_reports_running_means_and_ends_bit_identical() {
     let gen = |s: u64| Ok::<_, Infallible>(uniform(50, s));
     let (plain, _) = average_periodogram(&req, seed, gen, &c).unwrap();
     let mut partials: Vec<(usize, Vec<f64>)> = Vec::new();
-    let (prog, _) = average_periodogram_progressive(
-        &req,
-        seed,
-        gen,
-        &c,
-        std::time::Duration::ZERO,
-        &mut |s, d| {
-            assert_eq!(s.realizations, d);
-            partials.push((d, s.power.clone()));
-        },
-    )
-    .unwrap();
+    let mut final_bits = None;
+    let (prog, _) =
+        average_periodogram_progressive(&req, seed, gen, &c, std::time::Duration::ZERO, &mut |p| {
+            assert_eq!(p.total, k);
+            if let Some(s) = p.interim() {
+                assert_eq!(s.realizations, p.done);
+                partials.push((p.done, s.power.clone()));
+            }
+            if p.is_final() {
+                final_bits = p
+                    .so_far
+                    .map(|s| s.power.iter().map(|v| v.to_bits()).collect());
+            }
+        })
+        .unwrap();
+    let want: Vec<u64> = plain.power.iter().map(|v| v.to_bits()).collect();
+    assert_eq!(final_bits, Some(want), "the last report carries the result");
     assert!(prog
         .power
         .iter()

@@ -21,6 +21,6 @@ pub use integrands::{
     disk_rect_area, half_plane_square_area, Bilinear, Cosines, Disk, Gaussian, Heaviside, Integrand,
 };
 pub use study::{
-    check_request, estimate, log_log_fit, run_study, run_study_naive, run_study_progressive, Study,
-    StudyError, StudyRequest, StudyRow, StudyTimings, MAX_NS, MAX_REALIZATIONS, MAX_STUDY_N,
+    check_request, estimate, log_log_fit, run_study, run_study_naive, Study, StudyError,
+    StudyRequest, StudyRow, StudyTimings, MAX_NS, MAX_REALIZATIONS, MAX_STUDY_N,
 };

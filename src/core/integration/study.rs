@@ -47,6 +47,7 @@ use crate::core::budget::{self, Estimate, Unit};
 use crate::core::cancel::Cancel;
 use crate::core::params::{ParamError, Params};
 use crate::core::pattern::{Pattern, PatternError};
+use crate::core::progress::{OnProgress, Progress};
 use crate::core::rng::{derive_seed, Rng};
 use glam::DVec2;
 use rayon::prelude::*;
@@ -154,6 +155,9 @@ pub struct Study {
     pub slope_stderr: Option<f64>,
     /// The exact integral (with randomisation: the mean of the instances' integrals).
     pub reference: f64,
+    /// The realizations it averages: the request's R, or r < R in a partial study
+    /// ([`run_study`]'s progress).
+    pub realizations: usize,
     /// Timings (not part of the deterministic result).
     pub timings: StudyTimings,
 }
@@ -358,29 +362,21 @@ fn finish(
         slope,
         slope_stderr,
         reference,
+        realizations: req.realizations,
         timings,
     }
 }
 
-/// The study, in parallel (module docs). `progress(done, total)` is called on the calling
-/// thread after each chunk of tasks, in points evaluated.
+/// The study, in parallel (module docs). `progress` ([`crate::core::progress`]) gets, on the
+/// calling thread after each chunk of tasks, the points evaluated of all to evaluate; whenever
+/// the realizations done reach 1, 2, 4, 8, … (checked after each chunk of tasks, so some powers
+/// may be passed over) the report carries the study of the first r < R realizations
+/// (`so_far`, its [`Study::realizations`] = r): exactly [`run_study`] with R = r, so the curve
+/// sharpens as realizations come in. The result is the same bits whatever `progress` does.
 pub fn run_study(
     req: &StudyRequest,
     cancel: &Cancel,
-    progress: &mut dyn FnMut(usize, usize),
-) -> Result<Study, StudyError> {
-    run_study_progressive(req, cancel, progress, &mut |_, _| {})
-}
-
-/// As [`run_study`], and whenever the realizations done reach 1, 2, 4, 8, … (checked after
-/// each chunk of tasks, so some powers may be passed over), `partial(study, r)` receives the
-/// study of the first r < R realizations: exactly [`run_study`] with R = r, so the curve
-/// sharpens as realizations come in. The final result is the same bits as [`run_study`]'s.
-pub fn run_study_progressive(
-    req: &StudyRequest,
-    cancel: &Cancel,
-    progress: &mut dyn FnMut(usize, usize),
-    partial: &mut dyn FnMut(&Study, usize),
+    progress: &mut OnProgress<'_, Study>,
 ) -> Result<Study, StudyError> {
     check_request(req)?;
     let start = Instant::now();
@@ -433,9 +429,9 @@ pub fn run_study_progressive(
         }
         done = done.saturating_add(w);
         i = j;
-        progress(done, total);
         // Tasks run in realization order: every realization before task j's is complete.
         let complete = tasks.get(j).map_or(distinct, |t| t.r);
+        let mut partial = None;
         if !plan.identical && complete >= next_partial && complete < req.realizations {
             let mut t = timings;
             t.total = start.elapsed();
@@ -450,9 +446,14 @@ pub fn run_study_progressive(
                 t,
                 start,
             );
-            partial(&study, complete);
+            partial = Some(study);
             next_partial = complete * 2;
         }
+        progress(Progress {
+            done,
+            total,
+            so_far: partial.as_ref(),
+        });
     }
     if plan.identical {
         errors = errors.repeat(req.realizations);
@@ -463,11 +464,11 @@ pub fn run_study_progressive(
 
 /// The same study as [`run_study`], as the plain serial loop: for each realization, for each
 /// N, generate the points, sum f over them through [`Integrand::eval`], divide by N. The same
-/// bits as [`run_study`]; `progress(done, total)` counts realizations.
+/// bits as [`run_study`]; `progress` counts realizations (no partial studies).
 pub fn run_study_naive(
     req: &StudyRequest,
     cancel: &Cancel,
-    progress: &mut dyn FnMut(usize, usize),
+    progress: &mut OnProgress<'_, Study>,
 ) -> Result<Study, StudyError> {
     check_request(req)?;
     let start = Instant::now();
@@ -494,7 +495,7 @@ pub fn run_study_naive(
             errors.push(sum / n as f64 - reference);
             timings.evaluation += t.elapsed();
         }
-        progress(r + 1, req.realizations);
+        progress(Progress::at(r + 1, req.realizations));
     }
     Ok(finish(req, &errors, &references, timings, start))
 }
@@ -769,9 +770,10 @@ mod tests {
     use super::*;
     use crate::core::integration::integrands::{Disk, Gaussian, Heaviside};
     use crate::core::pattern::{Grid, Jitter, Random, Scramble, Sobol};
+    use crate::core::progress::no_progress;
 
     fn study(req: &StudyRequest) -> Study {
-        run_study(req, &Cancel::never(), &mut |_, _| {}).expect("study")
+        run_study(req, &Cancel::never(), &mut no_progress).expect("study")
     }
 
     fn disk() -> Integrand {
@@ -984,6 +986,7 @@ mod tests {
     }
 
     fn same_bits(a: &Study, b: &Study) {
+        assert_eq!(a.realizations, b.realizations);
         assert_eq!(a.rows.len(), b.rows.len());
         for (x, y) in a.rows.iter().zip(&b.rows) {
             assert_eq!(x.n, y.n);
@@ -1007,7 +1010,7 @@ mod tests {
     fn naive_and_fast_give_the_same_bits() {
         for req in mixed_requests() {
             let fast = study(&req);
-            let naive = run_study_naive(&req, &Cancel::never(), &mut |_, _| {}).unwrap();
+            let naive = run_study_naive(&req, &Cancel::never(), &mut no_progress).unwrap();
             same_bits(&fast, &naive);
         }
     }
@@ -1023,8 +1026,10 @@ mod tests {
             ..StudyRequest::default()
         };
         let mut partials = Vec::new();
-        let last = run_study_progressive(&req, &Cancel::never(), &mut |_, _| {}, &mut |s, r| {
-            partials.push((r, s.clone()))
+        let last = run_study(&req, &Cancel::never(), &mut |p| {
+            if let Some(s) = p.so_far {
+                partials.push((s.realizations, s.clone()))
+            }
         })
         .unwrap();
         assert!(partials.len() >= 2, "{} partials", partials.len());
@@ -1039,7 +1044,7 @@ mod tests {
             };
             same_bits(
                 s,
-                &run_study_naive(&sub, &Cancel::never(), &mut |_, _| {}).unwrap(),
+                &run_study_naive(&sub, &Cancel::never(), &mut no_progress).unwrap(),
             );
         }
         same_bits(&last, &study(&req));
@@ -1050,8 +1055,8 @@ mod tests {
             shift: false,
             ..req.clone()
         };
-        run_study_progressive(&fixed, &Cancel::never(), &mut |_, _| {}, &mut |_, _| {
-            none += 1
+        run_study(&fixed, &Cancel::never(), &mut |p| {
+            none += usize::from(p.so_far.is_some())
         })
         .unwrap();
         assert_eq!(none, 0);
@@ -1088,7 +1093,7 @@ mod tests {
     fn bad_requests_name_the_flag_and_the_value() {
         let ok = StudyRequest::default();
         let err = |req: StudyRequest| {
-            run_study(&req, &Cancel::never(), &mut |_, _| {})
+            run_study(&req, &Cancel::never(), &mut no_progress)
                 .unwrap_err()
                 .to_string()
         };
@@ -1156,7 +1161,7 @@ mod tests {
                 ..ok.clone()
             },
             &Cancel::never(),
-            &mut |_, _| {},
+            &mut no_progress,
         )
         .unwrap_err();
         assert_eq!(naive.to_string(), e);
@@ -1176,7 +1181,7 @@ mod tests {
     fn cancellation_stops_the_study() {
         let cancel = Cancel::new();
         cancel.cancel();
-        let e = run_study(&StudyRequest::default(), &cancel, &mut |_, _| {}).unwrap_err();
+        let e = run_study(&StudyRequest::default(), &cancel, &mut no_progress).unwrap_err();
         assert_eq!(e, StudyError::Cancelled);
         // Cancelled from the progress callback after the first chunk.
         let cancel = Cancel::new();
@@ -1186,9 +1191,9 @@ mod tests {
         };
         let mut calls = 0;
         let c = cancel.clone();
-        let e = run_study(&req, &cancel, &mut |done, total| {
+        let e = run_study(&req, &cancel, &mut |p| {
             calls += 1;
-            assert!(done < total);
+            assert!(p.done < p.total);
             c.cancel();
         })
         .unwrap_err();
@@ -1199,9 +1204,9 @@ mod tests {
     fn progress_reaches_the_total_and_the_fit_follows_its_formula() {
         let mut last = (0, 0);
         study(&StudyRequest::default());
-        run_study(&StudyRequest::default(), &Cancel::never(), &mut |d, t| {
-            assert!(d >= last.0);
-            last = (d, t);
+        run_study(&StudyRequest::default(), &Cancel::never(), &mut |p| {
+            assert!(p.done >= last.0);
+            last = (p.done, p.total);
         })
         .unwrap();
         assert_eq!(last.0, last.1);

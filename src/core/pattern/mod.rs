@@ -34,6 +34,7 @@ pub mod stratified;
 
 use crate::core::family::{family, UnknownName};
 use crate::core::params::{declare_params, ChoiceParam, ParamError};
+use crate::core::progress::{no_progress, OnProgress};
 use glam::DVec2;
 use serde::{Deserialize, Serialize};
 
@@ -187,15 +188,6 @@ impl Generated {
             note: None,
         }
     }
-}
-
-/// One step of an iterative pattern's refinement: step `step` of `steps` is done, and `points`
-/// are the points it reached (not yet the final pattern unless `step == steps`).
-#[derive(Debug, Clone, Copy)]
-pub struct Refining<'a> {
-    pub step: usize,
-    pub steps: usize,
-    pub points: &'a [DVec2],
 }
 
 /// Scrambling of the Sobol' (0,2)-sequence.
@@ -566,7 +558,7 @@ impl Pattern {
         seed: u64,
         cancel: &Cancel,
     ) -> Result<Generated, PatternError> {
-        self.generate_observed(n, seed, cancel, &mut |_| {})
+        self.generate_observed(n, seed, cancel, &mut no_progress)
     }
 
     /// Checks that `n` points of this pattern can be generated, without generating them:
@@ -628,30 +620,24 @@ impl Pattern {
     }
 
     /// Whether the pattern is made by an optimiser that refines a whole point set step by step
-    /// (Lloyd, SOT, GBN), and so reports [`Refining`] steps from [`Pattern::generate_observed`].
+    /// (Lloyd, SOT, GBN), and so reports its steps from [`Pattern::generate_observed`].
     pub fn is_iterative(&self) -> bool {
         matches!(self, Pattern::Lloyd(_) | Pattern::Sot(_) | Pattern::Gbn(_))
     }
 
     /// As [`Pattern::generate_with`]; an iterative pattern ([`Pattern::is_iterative`]) also
-    /// calls `observe` after every step with the points reached so far, which are a valid point
-    /// set of the same size (what the GUI shows while it refines, and what drives the CLI's
-    /// progress bar). The result does not depend on `observe`.
+    /// reports its steps to `progress` ([`crate::core::progress`]), each with the points reached
+    /// so far, which are a valid point set of the same size (what the GUI shows while it
+    /// refines, and what drives the CLI's progress bar). The result does not depend on
+    /// `progress`.
     pub fn generate_observed(
         &self,
         n: usize,
         seed: u64,
         cancel: &Cancel,
-        observe: &mut dyn FnMut(Refining<'_>),
+        progress: &mut OnProgress<'_, [DVec2]>,
     ) -> Result<Generated, PatternError> {
         self.validate(n)?;
-        let mut step = |step: usize, steps: usize, points: &[DVec2]| {
-            observe(Refining {
-                step,
-                steps,
-                points,
-            })
-        };
         let points = match self {
             Pattern::Grid(p) => stratified::grid(p, n)?,
             Pattern::Random(_) => stratified::random(n, seed),
@@ -680,11 +666,11 @@ impl Pattern {
             Pattern::Fibonacci(p) => lattice::fibonacci(n, p.shift, seed)?,
             Pattern::Rank1(p) => lattice::rank1_with(n, p.g, p.shift, seed, cancel)?,
             Pattern::Kronecker(p) => lattice::kronecker(n, DVec2::new(p.offset_x, p.offset_y))?,
-            Pattern::Lloyd(p) => optimize::lloyd(n, p.iterations, seed, cancel, &mut step)?,
+            Pattern::Lloyd(p) => optimize::lloyd(n, p.iterations, seed, cancel, progress)?,
             Pattern::Sot(p) => {
-                optimize::sot(n, p.iterations, p.directions, seed, cancel, &mut step)?
+                optimize::sot(n, p.iterations, p.directions, seed, cancel, progress)?
             }
-            Pattern::Gbn(p) => optimize::gbn(n, p.iterations, p.sigma, seed, cancel, &mut step)?,
+            Pattern::Gbn(p) => optimize::gbn(n, p.iterations, p.sigma, seed, cancel, progress)?,
         };
         debug_assert!(points
             .iter()

@@ -6,8 +6,8 @@
 //! of `(parameters, n, seed)`: the same bits for the same seed whatever the number of rayon
 //! threads (parallel work writes per-point or per-direction results into vectors that are
 //! combined serially in a fixed order). Each checks its [`Cancel`] token at least once per
-//! iteration and calls `progress(done, total, points)` after every iteration, with the points
-//! reached so far (a valid point set, which the GUI shows while the optimiser runs).
+//! iteration and reports [`Progress`] after every iteration, with the points reached so far
+//! (a valid point set, which the GUI shows while the optimiser runs).
 //!
 //! # Lloyd relaxation ([`lloyd`], reference [`lloyd_naive`])
 //!
@@ -97,6 +97,7 @@
 //! prescribe: they converge towards, not to, the optimum.
 
 use super::{clamp_unit, Cancel, PatternError, MAX_N};
+use crate::core::progress::{OnProgress, Progress};
 use crate::core::rng::Rng;
 use crate::core::torus;
 use crate::core::torus::{circumcircle, circumdisc_in_band};
@@ -379,13 +380,13 @@ const LLOYD_WHY: &str = "; lloyd triangulates about n + 16√n points every iter
 /// Lloyd relaxation on the unit torus: `iterations` steps (recommended
 /// [`LLOYD_DEFAULT_ITERATIONS`] = 50, allowed 0..=1000) from white noise, each moving every point
 /// to the centroid of its exact Voronoi cell (see the module docs). n ≤ [`LLOYD_MAX_N`].
-/// `progress(k, iterations, points)` is called after step k.
+/// `progress` gets step k of `iterations` and the points after it.
 pub fn lloyd(
     n: usize,
     iterations: u32,
     seed: u64,
     cancel: &Cancel,
-    progress: &mut dyn FnMut(usize, usize, &[DVec2]),
+    progress: &mut OnProgress<'_, [DVec2]>,
 ) -> Result<Vec<DVec2>, PatternError> {
     check_lloyd(n, iterations)?;
     cancel.check()?;
@@ -393,7 +394,7 @@ pub fn lloyd(
     for k in 0..iterations {
         cancel.check()?;
         lloyd_step(&mut points);
-        progress(k as usize + 1, iterations as usize, &points);
+        progress(Progress::with(k as usize + 1, iterations as usize, &points));
     }
     Ok(points)
 }
@@ -416,7 +417,7 @@ pub fn lloyd_naive(
     iterations: u32,
     seed: u64,
     cancel: &Cancel,
-    progress: &mut dyn FnMut(usize, usize, &[DVec2]),
+    progress: &mut OnProgress<'_, [DVec2]>,
 ) -> Result<Vec<DVec2>, PatternError> {
     check_n_max(
         n,
@@ -429,7 +430,7 @@ pub fn lloyd_naive(
     for k in 0..iterations {
         let labels = raster_labels(&points, LLOYD_NAIVE_RASTER, cancel)?;
         points = raster_centroids(&points, &labels, LLOYD_NAIVE_RASTER);
-        progress(k as usize + 1, iterations as usize, &points);
+        progress(Progress::with(k as usize + 1, iterations as usize, &points));
     }
     Ok(points)
 }
@@ -630,14 +631,14 @@ fn sot_step(points: &mut [DVec2], dirs: &[DVec2], cancel: &Cancel) -> Result<(),
 /// each (default [`SOT_DEFAULT_DIRECTIONS`], 1..=1024) from white noise; see the module docs.
 /// The directions of iteration k are drawn after the start points and those of iterations
 /// 0 … k−1 from the same `Rng::new(seed)` stream (angle π·u), so a run of k iterations is the
-/// prefix of a longer one. `progress(k, iterations, points)` is called after iteration k.
+/// prefix of a longer one. `progress` gets iteration k of `iterations` and the points after it.
 pub fn sot(
     n: usize,
     iterations: u32,
     directions: u32,
     seed: u64,
     cancel: &Cancel,
-    progress: &mut dyn FnMut(usize, usize, &[DVec2]),
+    progress: &mut OnProgress<'_, [DVec2]>,
 ) -> Result<Vec<DVec2>, PatternError> {
     check_sot(n, iterations, directions)?;
     cancel.check()?;
@@ -656,7 +657,7 @@ pub fn sot(
             dirs.push(DVec2::new(t.cos(), t.sin()));
         }
         sot_step(&mut points, &dirs, cancel)?;
-        progress(k as usize + 1, iterations as usize, &points);
+        progress(Progress::with(k as usize + 1, iterations as usize, &points));
     }
     Ok(points)
 }
@@ -845,15 +846,15 @@ fn gbn_gradient(points: &[DVec2], sigma: f64, cancel: &Cancel) -> Result<Vec<DVe
 /// Gaussian blue noise (Ahmed, Ren, Wonka 2022) on the unit torus: `iterations` gradient
 /// descent steps (recommended [`GBN_DEFAULT_ITERATIONS`], 0..=10000) on the Gaussian energy with
 /// σ = sigma/√n (sigma 0 = [`GBN_DEFAULT_SIGMA`], or in (0, 1]) from white noise, step σ²/4
-/// (the authors'), kernel truncated at 8σ; see the module docs. `progress(k, iterations, points)` is
-/// called after step k.
+/// (the authors'), kernel truncated at 8σ; see the module docs. `progress` gets step
+/// k of `iterations` and the points after it.
 pub fn gbn(
     n: usize,
     iterations: u32,
     sigma: f64,
     seed: u64,
     cancel: &Cancel,
-    progress: &mut dyn FnMut(usize, usize, &[DVec2]),
+    progress: &mut OnProgress<'_, [DVec2]>,
 ) -> Result<Vec<DVec2>, PatternError> {
     let s = check_gbn(n, iterations, sigma)?;
     cancel.check()?;
@@ -865,7 +866,7 @@ pub fn gbn(
         for (p, g) in points.iter_mut().zip(&grad) {
             *p = wrap_point(*p - step * *g);
         }
-        progress(k as usize + 1, iterations as usize, &points);
+        progress(Progress::with(k as usize + 1, iterations as usize, &points));
     }
     Ok(points)
 }
@@ -874,10 +875,7 @@ pub fn gbn(
 mod tests {
     use super::*;
     use crate::core::metrics::min_distance;
-
-    fn none() -> impl FnMut(usize, usize, &[DVec2]) {
-        |_, _, _| {}
-    }
+    use crate::core::progress::no_progress;
 
     fn white(n: usize, seed: u64) -> Vec<DVec2> {
         let mut rng = Rng::new(seed);
@@ -965,8 +963,8 @@ mod tests {
         // One step at n = 64 from the same start: exact centroids vs 512² raster centroids.
         // Measured max gap 1.7e−4 (seed 3); the raster error shrinks as the raster refines.
         let never = Cancel::never();
-        let exact = lloyd(64, 1, 3, &never, &mut none()).unwrap();
-        let raster = lloyd_naive(64, 1, 3, &never, &mut none()).unwrap();
+        let exact = lloyd(64, 1, 3, &never, &mut no_progress).unwrap();
+        let raster = lloyd_naive(64, 1, 3, &never, &mut no_progress).unwrap();
         let gap = max_torus_gap(&exact, &raster);
         assert!(gap < 1e-3, "max gap {gap:e}");
         // And the step moved the points by far more than that (it is not a no-op).
@@ -1044,7 +1042,7 @@ mod tests {
         assert!(energies[0] * n as f64 > 0.25);
         let en = energies[50] * n as f64;
         assert!(en < 1.04 * hex, "{en}");
-        let fast = lloyd(n, 50, 5, &Cancel::never(), &mut none()).unwrap();
+        let fast = lloyd(n, 50, 5, &Cancel::never(), &mut no_progress).unwrap();
         assert_eq!(bits(&fast), bits(&pts));
     }
 
@@ -1052,7 +1050,7 @@ mod tests {
     fn lloyd_1024_is_near_hexagonal_and_blue() {
         // Measured (seed 1, 50 iterations): d_min/d_hex = 0.781, mean NN/d_hex = 0.912,
         // low-frequency energy 2.77; white noise (seed 99): 0.0059, 0.464, 104.
-        let pts = lloyd(1024, 50, 1, &Cancel::never(), &mut none()).unwrap();
+        let pts = lloyd(1024, 50, 1, &Cancel::never(), &mut no_progress).unwrap();
         let w = white(1024, 99);
         assert!(in_unit(&pts));
         let (dmin, dw) = (torus_min(&pts), torus_min(&w));
@@ -1066,13 +1064,17 @@ mod tests {
     #[test]
     fn lloyd_is_deterministic_whatever_the_threads() {
         let never = Cancel::never();
-        let one = pool(1, || lloyd(300, 5, 8, &never, &mut none()).unwrap());
-        let four = pool(4, || lloyd(300, 5, 8, &never, &mut none()).unwrap());
+        let one = pool(1, || lloyd(300, 5, 8, &never, &mut no_progress).unwrap());
+        let four = pool(4, || lloyd(300, 5, 8, &never, &mut no_progress).unwrap());
         assert_eq!(bits(&one), bits(&four));
-        let other = lloyd(300, 5, 9, &never, &mut none()).unwrap();
+        let other = lloyd(300, 5, 9, &never, &mut no_progress).unwrap();
         assert_ne!(bits(&one), bits(&other));
-        let n1 = pool(1, || lloyd_naive(40, 2, 8, &never, &mut none()).unwrap());
-        let n4 = pool(4, || lloyd_naive(40, 2, 8, &never, &mut none()).unwrap());
+        let n1 = pool(1, || {
+            lloyd_naive(40, 2, 8, &never, &mut no_progress).unwrap()
+        });
+        let n4 = pool(4, || {
+            lloyd_naive(40, 2, 8, &never, &mut no_progress).unwrap()
+        });
         assert_eq!(bits(&n1), bits(&n4));
     }
 
@@ -1085,7 +1087,7 @@ mod tests {
         let c = voronoi_moments(&p).unwrap();
         assert!((c[0].area - 1.0).abs() < 1e-12);
         assert!((c[0].energy - 1.0 / 6.0).abs() < 1e-12);
-        let one = lloyd(1, 10, 4, &never, &mut none()).unwrap();
+        let one = lloyd(1, 10, 4, &never, &mut no_progress).unwrap();
         assert!(max_torus_gap(&one, &p) < 1e-12);
         // Two and three points: the cells tile the torus and a step agrees with the raster.
         for n in [2usize, 3] {
@@ -1094,11 +1096,11 @@ mod tests {
                 let cells = voronoi_moments(&start).unwrap();
                 let total: f64 = cells.iter().map(|c| c.area).sum();
                 assert!((total - 1.0).abs() < 1e-12, "n = {n}: areas {total}");
-                let exact = lloyd(n, 1, seed, &never, &mut none()).unwrap();
-                let raster = lloyd_naive(n, 1, seed, &never, &mut none()).unwrap();
+                let exact = lloyd(n, 1, seed, &never, &mut no_progress).unwrap();
+                let raster = lloyd_naive(n, 1, seed, &never, &mut no_progress).unwrap();
                 let gap = max_torus_gap(&exact, &raster);
                 assert!(gap < 1e-3, "n = {n}, seed {seed}: gap {gap:e}");
-                let many = lloyd(n, 20, seed, &never, &mut none()).unwrap();
+                let many = lloyd(n, 20, seed, &never, &mut no_progress).unwrap();
                 assert_eq!(many.len(), n);
                 assert!(in_unit(&many));
             }
@@ -1110,7 +1112,7 @@ mod tests {
         let never = Cancel::never();
         for n in [0, LLOYD_MAX_N + 1] {
             assert!(matches!(
-                lloyd(n, 1, 0, &never, &mut none()),
+                lloyd(n, 1, 0, &never, &mut no_progress),
                 Err(PatternError::InvalidN {
                     max: LLOYD_MAX_N,
                     ..
@@ -1118,14 +1120,14 @@ mod tests {
             ));
         }
         assert!(matches!(
-            lloyd_naive(LLOYD_NAIVE_MAX_N + 1, 1, 0, &never, &mut none()),
+            lloyd_naive(LLOYD_NAIVE_MAX_N + 1, 1, 0, &never, &mut no_progress),
             Err(PatternError::InvalidN {
                 max: LLOYD_NAIVE_MAX_N,
                 ..
             })
         ));
         for f in [lloyd, lloyd_naive] {
-            match f(16, 1001, 0, &never, &mut none()) {
+            match f(16, 1001, 0, &never, &mut no_progress) {
                 Err(PatternError::InvalidParam {
                     pattern,
                     field,
@@ -1150,24 +1152,24 @@ mod tests {
         assert!(voronoi_moments(&[]).is_err());
         // Zero iterations: the white-noise start.
         assert_eq!(
-            bits(&lloyd(50, 0, 2, &never, &mut none()).unwrap()),
+            bits(&lloyd(50, 0, 2, &never, &mut no_progress).unwrap()),
             bits(&white(50, 2))
         );
         let mut calls = Vec::new();
-        lloyd(50, 4, 2, &never, &mut |k, t, _| calls.push((k, t))).unwrap();
+        lloyd(50, 4, 2, &never, &mut |p| calls.push((p.done, p.total))).unwrap();
         assert_eq!(calls, vec![(1, 4), (2, 4), (3, 4), (4, 4)]);
         // Cancelled before, and during (from the progress callback after step 2).
         let c = Cancel::new();
         c.cancel();
         assert_eq!(
-            lloyd(50, 4, 2, &c, &mut none()),
+            lloyd(50, 4, 2, &c, &mut no_progress),
             Err(PatternError::Cancelled)
         );
         let c = Cancel::new();
         let mut steps = 0;
-        let r = lloyd(50, 10, 2, &c, &mut |k, _, _| {
-            steps = k;
-            if k == 2 {
+        let r = lloyd(50, 10, 2, &c, &mut |p| {
+            steps = p.done;
+            if p.done == 2 {
                 c.cancel();
             }
         });
@@ -1258,7 +1260,7 @@ mod tests {
         let sw: Vec<f64> = [0u32, 4, 16, 64]
             .iter()
             .map(|&k| {
-                let p = sot(1024, k, 32, 6, &never, &mut none()).unwrap();
+                let p = sot(1024, k, 32, 6, &never, &mut no_progress).unwrap();
                 sliced_wasserstein2(&p, 128).unwrap()
             })
             .collect();
@@ -1273,7 +1275,7 @@ mod tests {
     fn sot_1024_beats_white_noise() {
         // Measured (seed 1, 64 × 32): Euclidean d_min/d_hex 0.432, low-frequency energy 0.10;
         // white noise: ≈ 0.006 and ≈ 100.
-        let pts = sot(1024, 64, 32, 1, &Cancel::never(), &mut none()).unwrap();
+        let pts = sot(1024, 64, 32, 1, &Cancel::never(), &mut no_progress).unwrap();
         let w = white(1024, 99);
         assert!(in_unit(&pts));
         let (dmin, dw) = (euclid_min(&pts), euclid_min(&w));
@@ -1285,12 +1287,12 @@ mod tests {
     #[test]
     fn sot_is_deterministic_whatever_the_threads() {
         let never = Cancel::never();
-        let one = pool(1, || sot(500, 8, 20, 3, &never, &mut none()).unwrap());
-        let four = pool(4, || sot(500, 8, 20, 3, &never, &mut none()).unwrap());
+        let one = pool(1, || sot(500, 8, 20, 3, &never, &mut no_progress).unwrap());
+        let four = pool(4, || sot(500, 8, 20, 3, &never, &mut no_progress).unwrap());
         assert_eq!(bits(&one), bits(&four));
         assert_ne!(
             bits(&one),
-            bits(&sot(500, 8, 20, 4, &never, &mut none()).unwrap())
+            bits(&sot(500, 8, 20, 4, &never, &mut no_progress).unwrap())
         );
     }
 
@@ -1298,10 +1300,10 @@ mod tests {
     fn sot_errors_progress_small_n_and_cancel() {
         let never = Cancel::never();
         assert!(matches!(
-            sot(0, 1, 1, 0, &never, &mut none()),
+            sot(0, 1, 1, 0, &never, &mut no_progress),
             Err(PatternError::InvalidN { .. })
         ));
-        let bad = |it: u32, d: u32, field: &str| match sot(10, it, d, 0, &never, &mut none()) {
+        let bad = |it: u32, d: u32, field: &str| match sot(10, it, d, 0, &never, &mut no_progress) {
             Err(PatternError::InvalidParam {
                 pattern: "sot",
                 field: f,
@@ -1314,23 +1316,28 @@ mod tests {
         bad(1, 1025, "directions");
         // The bounds themselves are accepted.
         assert_eq!(
-            sot(10, 10_000, 1, 0, &never, &mut none()).unwrap().len(),
+            sot(10, 10_000, 1, 0, &never, &mut no_progress)
+                .unwrap()
+                .len(),
             10
         );
-        assert_eq!(sot(10, 1, 1024, 0, &never, &mut none()).unwrap().len(), 10);
+        assert_eq!(
+            sot(10, 1, 1024, 0, &never, &mut no_progress).unwrap().len(),
+            10
+        );
         for n in [1usize, 2, 3] {
-            let p = sot(n, 20, 8, 1, &never, &mut none()).unwrap();
+            let p = sot(n, 20, 8, 1, &never, &mut no_progress).unwrap();
             assert!(p.len() == n && in_unit(&p));
         }
         // One point goes to the median of every projection: near the centre.
-        let p = sot(1, 200, 16, 1, &never, &mut none()).unwrap();
+        let p = sot(1, 200, 16, 1, &never, &mut no_progress).unwrap();
         assert!(p[0].distance(DVec2::splat(0.5)) < 0.05, "{:?}", p[0]);
         let mut calls = Vec::new();
-        sot(20, 3, 4, 0, &never, &mut |k, t, _| calls.push((k, t))).unwrap();
+        sot(20, 3, 4, 0, &never, &mut |p| calls.push((p.done, p.total))).unwrap();
         assert_eq!(calls, vec![(1, 3), (2, 3), (3, 3)]);
         let c = Cancel::new();
-        let r = sot(20, 10, 4, 0, &c, &mut |k, _, _| {
-            if k == 2 {
+        let r = sot(20, 10, 4, 0, &c, &mut |p| {
+            if p.done == 2 {
                 c.cancel();
             }
         });
@@ -1413,7 +1420,9 @@ mod tests {
         let never = Cancel::never();
         let e: Vec<f64> = [0u32, 10, 50, 150]
             .iter()
-            .map(|&k| gbn_energy(&gbn(256, k, 0.0, 7, &never, &mut none()).unwrap(), 0.0).unwrap())
+            .map(|&k| {
+                gbn_energy(&gbn(256, k, 0.0, 7, &never, &mut no_progress).unwrap(), 0.0).unwrap()
+            })
             .collect();
         for w in e.windows(2) {
             assert!(w[1] < w[0] - 1e-3, "{e:?}");
@@ -1426,7 +1435,7 @@ mod tests {
     fn gbn_1024_beats_white_noise() {
         // Measured (seed 1, 200 iterations, default σ): d_min/d_hex 0.389, mean NN 0.752,
         // low-frequency energy 3e−5; white noise ≈ 0.006, 0.46, 104.
-        let pts = gbn(1024, 200, 0.0, 1, &Cancel::never(), &mut none()).unwrap();
+        let pts = gbn(1024, 200, 0.0, 1, &Cancel::never(), &mut no_progress).unwrap();
         let w = white(1024, 99);
         assert!(in_unit(&pts));
         let (dmin, dw) = (torus_min(&pts), torus_min(&w));
@@ -1439,12 +1448,16 @@ mod tests {
     #[test]
     fn gbn_is_deterministic_whatever_the_threads() {
         let never = Cancel::never();
-        let one = pool(1, || gbn(600, 10, 0.0, 5, &never, &mut none()).unwrap());
-        let four = pool(4, || gbn(600, 10, 0.0, 5, &never, &mut none()).unwrap());
+        let one = pool(1, || {
+            gbn(600, 10, 0.0, 5, &never, &mut no_progress).unwrap()
+        });
+        let four = pool(4, || {
+            gbn(600, 10, 0.0, 5, &never, &mut no_progress).unwrap()
+        });
         assert_eq!(bits(&one), bits(&four));
         assert_ne!(
             bits(&one),
-            bits(&gbn(600, 10, 0.5, 5, &never, &mut none()).unwrap())
+            bits(&gbn(600, 10, 0.5, 5, &never, &mut no_progress).unwrap())
         );
     }
 
@@ -1452,11 +1465,11 @@ mod tests {
     fn gbn_errors_progress_small_n_and_cancel() {
         let never = Cancel::never();
         assert!(matches!(
-            gbn(0, 1, 0.0, 0, &never, &mut none()),
+            gbn(0, 1, 0.0, 0, &never, &mut no_progress),
             Err(PatternError::InvalidN { .. })
         ));
         assert!(matches!(
-            gbn(10, 10_001, 0.0, 0, &never, &mut none()),
+            gbn(10, 10_001, 0.0, 0, &never, &mut no_progress),
             Err(PatternError::InvalidParam {
                 pattern: "gbn",
                 field: "iterations",
@@ -1465,7 +1478,7 @@ mod tests {
         ));
         for s in [-0.1, 1.5, f64::NAN, f64::INFINITY] {
             assert!(matches!(
-                gbn(10, 1, s, 0, &never, &mut none()),
+                gbn(10, 1, s, 0, &never, &mut no_progress),
                 Err(PatternError::InvalidParam {
                     pattern: "gbn",
                     field: "sigma",
@@ -1475,18 +1488,21 @@ mod tests {
             assert!(gbn_energy(&white(4, 0), s).is_err());
         }
         // One point has no neighbour: it stays; two points end up half a diagonal apart-ish.
-        let one = gbn(1, 50, 0.0, 3, &never, &mut none()).unwrap();
+        let one = gbn(1, 50, 0.0, 3, &never, &mut no_progress).unwrap();
         assert_eq!(bits(&one), bits(&white(1, 3)));
         for n in [2usize, 3] {
-            let p = gbn(n, 50, 1.0, 3, &never, &mut none()).unwrap();
+            let p = gbn(n, 50, 1.0, 3, &never, &mut no_progress).unwrap();
             assert!(p.len() == n && in_unit(&p));
         }
         let mut calls = Vec::new();
-        gbn(30, 2, 0.0, 0, &never, &mut |k, t, _| calls.push((k, t))).unwrap();
+        gbn(30, 2, 0.0, 0, &never, &mut |p| {
+            calls.push((p.done, p.total))
+        })
+        .unwrap();
         assert_eq!(calls, vec![(1, 2), (2, 2)]);
         let c = Cancel::new();
-        let r = gbn(30, 10, 0.0, 0, &c, &mut |k, _, _| {
-            if k == 3 {
+        let r = gbn(30, 10, 0.0, 0, &c, &mut |p| {
+            if p.done == 3 {
                 c.cancel();
             }
         });

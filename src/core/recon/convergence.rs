@@ -10,6 +10,7 @@ use super::reference::{reference_image_with, ReferenceMethod, ReferenceOptions};
 use super::supersample::{supersample, SampleProvider};
 use super::{check_size, error_report, ReconError, ReconKernel, MAX_SPP};
 use crate::core::cancel::Cancel;
+use crate::core::progress::{no_progress, OnProgress, Progress};
 use crate::core::signal::Signal;
 use std::time::Duration;
 
@@ -57,11 +58,20 @@ where
     K: ReconKernel + ?Sized,
     P: SampleProvider + ?Sized,
 {
-    convergence_curve_progressive(signal, provider, spp_list, w, kernel, cancel, &mut |_| {})
+    convergence_curve_progressive(
+        signal,
+        provider,
+        spp_list,
+        w,
+        kernel,
+        cancel,
+        &mut no_progress,
+    )
 }
 
-/// [`convergence_curve`], handing out the curve so far: `on_points(points)` is called after
-/// each spp level but the last (whose curve is the return value). Same result, bit for bit.
+/// [`convergence_curve`], handing out the curve so far: `progress` ([`crate::core::progress`])
+/// gets level k of the `spp_list.len()` levels after each, with the curve's first k points
+/// (after the last level: all of them, the returned curve's). Same result, bit for bit.
 pub fn convergence_curve_progressive<K, P>(
     signal: &Signal,
     provider: &P,
@@ -69,7 +79,7 @@ pub fn convergence_curve_progressive<K, P>(
     w: usize,
     kernel: &K,
     cancel: &Cancel,
-    on_points: &mut dyn FnMut(&[ConvergencePoint]),
+    progress: &mut OnProgress<'_, [ConvergencePoint]>,
 ) -> Result<ConvergenceCurve, ReconError>
 where
     K: ReconKernel + ?Sized,
@@ -90,9 +100,7 @@ where
             psnr: e.psnr,
             time: r.wall_time,
         });
-        if points.len() < spp_list.len() {
-            on_points(&points);
-        }
+        progress(Progress::with(points.len(), spp_list.len(), &points));
     }
     Ok(ConvergenceCurve {
         points,

@@ -97,10 +97,10 @@
 //! plate with K·ρ ≫ 2sW) the two differ, and ε says so.
 //!
 //! **Progressive.** [`reference_image_progressive`] hands out I_s (method
-//! [`ReferenceMethod::Jittered`]) as soon as it is done, then computes I_2s and returns exactly
-//! what [`reference_image_with`] returns (which is the progressive function with a no-op
-//! callback). I_s's own estimate is the per-pixel standard error √(mean over pixels of s²ₚ/N),
-//! N = s² and s²ₚ the sample variance of pixel p's N values: with one uniform point per stratum,
+//! [`ReferenceMethod::Jittered`]) as soon as it is done, pass 1 of 2, then computes I_2s and
+//! returns exactly what [`reference_image_with`] returns (which is the progressive function
+//! with [`no_progress`]). I_s's own estimate is the per-pixel standard error
+//! √(mean over pixels of s²ₚ/N), N = s² and s²ₚ the sample variance of pixel p's N values: with one uniform point per stratum,
 //! E\[s²ₚ\] = N/(N − 1)·(σₚ² − Var(Īₚ)) ≥ σₚ² ≥ N·Var(Īₚ) (σₚ² the variance of f over the pixel;
 //! stratification gives Var(Īₚ) ≤ σₚ²/N, often much less), so the estimate is conservative in
 //! expectation, by the stratification gain; `None` when s = 1.
@@ -108,6 +108,7 @@
 use super::coverage::{half_planes, pixel_coverage};
 use super::{check_cancel, check_size, check_work, ReconError, MAX_W};
 use crate::core::cancel::Cancel;
+use crate::core::progress::{no_progress, OnProgress, Progress};
 use crate::core::rng::{derive_seed, Rng};
 use crate::core::signal::exact::{rem2, sin_pi, DoubleDouble};
 use crate::core::signal::{sinc_pi, Chirp, Signal, ZonePlate};
@@ -231,22 +232,22 @@ pub fn reference_image_with(
     options: &ReferenceOptions,
     cancel: &Cancel,
 ) -> Result<ReferenceImage, ReconError> {
-    reference_image_progressive(signal, w, options, cancel, &mut |_, _, _| {})
+    reference_image_progressive(signal, w, options, cancel, &mut no_progress)
 }
 
-/// [`reference_image_with`], handing out intermediate images: `on_step(image, k, n)` is called
-/// after pass k of n for every pass but the last, whose image is the return value. A
-/// supersampled reference calls it once, with the s×s pass I_s ([`ReferenceMethod::Jittered`],
-/// its estimate described in the module docs), then returns I_2s; exact and quadrature
-/// references have one pass and never call it. The result is bit for bit that of
-/// [`reference_image_with`] (which calls this with a no-op): the first pass is computed once
-/// and reused.
+/// [`reference_image_with`], handing out intermediate images: `progress`
+/// ([`crate::core::progress`]) gets pass k of n after each pass, with its image (after the
+/// last: the returned image). A supersampled reference has two passes, the s×s pass I_s
+/// ([`ReferenceMethod::Jittered`], its estimate described in the module docs) and I_2s, which
+/// it returns; exact and quadrature references have one pass. The result is bit for bit that
+/// of [`reference_image_with`] (which calls this with [`no_progress`]): the first pass is
+/// computed once and reused.
 pub fn reference_image_progressive(
     signal: &Signal,
     w: usize,
     options: &ReferenceOptions,
     cancel: &Cancel,
-    on_step: &mut dyn FnMut(&ReferenceImage, usize, usize),
+    progress: &mut OnProgress<'_, ReferenceImage>,
 ) -> Result<ReferenceImage, ReconError> {
     signal.validate()?;
     check_size("w", w, 1, MAX_W)?;
@@ -290,16 +291,18 @@ pub fn reference_image_progressive(
             )
         }
         Signal::Checkerboard(_) => {
-            return supersampled(signal, w, options, cancel, on_step);
+            return supersampled(signal, w, options, cancel, progress);
         }
     };
-    Ok(ReferenceImage {
+    let image = ReferenceImage {
         w,
         pixels,
         error_estimate,
         method,
         wall_time: start.elapsed(),
-    })
+    };
+    progress(Progress::with(1, 1, &image));
+    Ok(image)
 }
 
 /// The work [`reference_image_with`] does for `signal` at size `w`, counted from the same
@@ -407,16 +410,16 @@ pub fn reference_supersampled(
     options: &ReferenceOptions,
     cancel: &Cancel,
 ) -> Result<ReferenceImage, ReconError> {
-    supersampled(signal, w, options, cancel, &mut |_, _, _| {})
+    supersampled(signal, w, options, cancel, &mut no_progress)
 }
 
-/// [`reference_supersampled`], handing I_s to `on_step(·, 1, 2)` before computing I_2s.
+/// [`reference_supersampled`], reporting I_s as pass 1 of 2 before computing I_2s, then I_2s.
 fn supersampled(
     signal: &Signal,
     w: usize,
     options: &ReferenceOptions,
     cancel: &Cancel,
-    on_step: &mut dyn FnMut(&ReferenceImage, usize, usize),
+    progress: &mut OnProgress<'_, ReferenceImage>,
 ) -> Result<ReferenceImage, ReconError> {
     signal.validate()?;
     check_size("w", w, 1, MAX_W)?;
@@ -440,7 +443,7 @@ fn supersampled(
         method: ReferenceMethod::Jittered { strata: s },
         wall_time: start.elapsed(),
     };
-    on_step(&coarse, 1, 2);
+    progress(Progress::with(1, 2, &coarse));
     let (fine, _) = jittered_image(signal, w, 2 * s, derive_seed(options.seed, 1), cancel)?;
     let mse = coarse
         .pixels
@@ -449,13 +452,15 @@ fn supersampled(
         .map(|(a, b)| (a - b) * (a - b))
         .sum::<f64>()
         / (w * w) as f64;
-    Ok(ReferenceImage {
+    let image = ReferenceImage {
         w,
         pixels: fine,
         error_estimate: Some(mse.sqrt()),
         method: ReferenceMethod::Supersampled { strata: s },
         wall_time: start.elapsed(),
-    })
+    };
+    progress(Progress::with(2, 2, &image));
+    Ok(image)
 }
 
 /// Mean of `s×s` jittered samples per pixel, and each pixel's sample variance

@@ -8,6 +8,7 @@ use super::{
     MAX_REALIZATIONS,
 };
 use crate::core::cancel::Cancel;
+use crate::core::progress::{no_progress, OnProgress, Progress, Throttle};
 use crate::core::rng::derive_seed;
 use glam::DVec2;
 use rayon::prelude::*;
@@ -202,13 +203,14 @@ where
     G: Fn(u64) -> Result<Vec<DVec2>, E> + Sync,
     E: Into<Box<dyn std::error::Error + Send + Sync>>,
 {
-    average_periodogram_progressive(req, seed, generate, cancel, Duration::MAX, &mut |_, _| {})
+    average_periodogram_progressive(req, seed, generate, cancel, Duration::MAX, &mut no_progress)
 }
 
-/// [`average_periodogram`] that also reports the running average: after each group of
-/// realizations, while more remain and at least `min_interval` has passed since the start or
-/// the last report (the engine uses [`PARTIAL_INTERVAL`]), `on_partial(mean of the first d
-/// realizations, d)` is called. The returned
+/// [`average_periodogram`] that also reports the running average to `progress`
+/// ([`crate::core::progress`]): after each group of realizations, d of K done; while more
+/// remain, the report carries the mean of the first d realizations (a copy, so at most once
+/// per `min_interval` since the start or the last such report: the engine uses
+/// [`PARTIAL_INTERVAL`]); the last report, K of K, carries the returned spectrum. The returned
 /// spectrum is bit-identical to [`average_periodogram`]'s (the partial means are copies; the
 /// running sum is untouched).
 pub fn average_periodogram_progressive<G, E>(
@@ -217,7 +219,7 @@ pub fn average_periodogram_progressive<G, E>(
     generate: G,
     cancel: &Cancel,
     min_interval: Duration,
-    on_partial: &mut dyn FnMut(&Spectrum, usize),
+    progress: &mut OnProgress<'_, Spectrum>,
 ) -> Result<(Spectrum, SpectrumReport), SpectrumError>
 where
     G: Fn(u64) -> Result<Vec<DVec2>, E> + Sync,
@@ -294,10 +296,10 @@ where
     let mut average_time = Duration::ZERO;
     let mut error = None;
     let (mut n_min, mut n_max) = (usize::MAX, 0);
-    let mut last_partial = Instant::now();
+    let mut throttle = Throttle::new(min_interval);
     for g0 in (0..k).step_by(group) {
         let done = g0;
-        if done > 0 && last_partial.elapsed() >= min_interval {
+        if done > 0 && throttle.due() {
             let inv = 1.0 / done as f64;
             let partial = Spectrum {
                 m,
@@ -306,8 +308,10 @@ where
                 realizations: done,
                 dc: req.dc,
             };
-            on_partial(&partial, done);
-            last_partial = Instant::now();
+            progress(Progress::with(done, k, &partial));
+            throttle.restart();
+        } else if done > 0 {
+            progress(Progress::at(done, k));
         }
         cancel.check()?;
         let results: Vec<Result<Realization, SpectrumError>> =
@@ -367,6 +371,7 @@ where
         n_points_range: (n_min, n_max),
         realizations: k,
     };
+    progress(Progress::with(k, k, &spectrum));
     Ok((spectrum, report))
 }
 

@@ -146,7 +146,7 @@ impl Panel for ZonePlatePanel {
                 let own = r.accuracy.as_ref().map(|a| format!(", {a}"));
                 let refining = r
                     .progress
-                    .map(|p| format!(" (refining {}/{})", p.step, p.steps));
+                    .map(|p| format!(" (refining {}/{})", p.done, p.total));
                 ui.small(format!(
                     "reference: {}{}{}",
                     rf.method,

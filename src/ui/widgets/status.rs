@@ -9,11 +9,11 @@ use eframe::egui::{self, Color32};
 pub fn time_label(ui: &mut egui::Ui, r: &Shown, show_timings: bool) {
     if let Some(p) = r.progress {
         let text = match &r.accuracy {
-            Some(a) => format!("refining {}/{}, {a}", p.step, p.steps),
-            None => format!("refining {}/{}", p.step, p.steps),
+            Some(a) => format!("refining {}/{}, {a}", p.done, p.total),
+            None => format!("refining {}/{}", p.done, p.total),
         };
         ui.add(
-            egui::ProgressBar::new(p.step as f32 / p.steps.max(1) as f32)
+            egui::ProgressBar::new(p.fraction() as f32)
                 .desired_height(4.0)
                 .desired_width(ui.available_width().min(260.0)),
         );
