@@ -1,6 +1,13 @@
 //! `samplescope analyze`: statistics, discrepancies, t-value, PSA's statistics (effective
 //! Nyquist frequency, oscillations, bond-orientational order; `--rdf` its radial distribution
 //! function) and spectrum of a point set, with the time and accuracy of every stage.
+//!
+//! A front over a scene: [`read_input`] reads the points (files) or the pattern,
+//! [`analyze_2d`] builds the scene ([`analysis_scene`]: one column of the pattern, or one
+//! imported column per file), asks for the nodes it prints ([`asked_nodes`]), checks the
+//! scene's estimate against the budget, evaluates it with the engine's `Evaluator` and prints
+//! and writes what the nodes computed; `--spectrum` is the scene's spectrum figure published
+//! through `export::publish`.
 
 use super::outln;
 use super::session::{check_outputs, write_output, Session};
@@ -14,9 +21,7 @@ use samplescope::core::pointset::{read_points_named, OutOfRange, PointsFileError
 use samplescope::core::spectrum::Spectrum;
 use samplescope::engine::cache::DEFAULT_BUDGET;
 use samplescope::engine::Evaluator;
-use samplescope::export::figure::{base_size, Aspect, FileFormat};
-use samplescope::export::publish::{publish, Format, Target};
-use samplescope::export::ExportError;
+use samplescope::export::figure::base_size;
 use samplescope::model::{Accuracy, FigureKind, SpectrumData};
 use samplescope::scene::graph::{self, NodeError, NodeKind, NodeResult, NodeValue};
 use samplescope::scene::SpectrumSettings;
@@ -92,7 +97,8 @@ pub struct AnalyzeArgs {
     /// Use the exact DFT instead of the NUFFT.
     #[arg(long)]
     pub exact: bool,
-    /// Write the centred periodogram (log10 scale, viridis) as PNG.
+    /// Write the spectrum figure (the centred periodogram, log10 P, viridis, with its colour
+    /// bar and the figures' metadata) as PNG.
     #[arg(long, value_name = "OUT.png")]
     pub spectrum: Option<String>,
     /// Write the averaged periodogram as CSV `kx,ky,power`.
@@ -594,22 +600,7 @@ fn spectrum_figure(
         let columns = figure::figure_columns(scene, results, "analyze").map_err(|e| usage(&e))?;
         (scene.clone(), columns)
     };
-    let publication = figure::publication(&one, columns, "analyze");
-    let target = Target::Panel {
-        column: 0,
-        kind: FigureKind::Spectrum,
-    };
-    let png = [Format::Picture(FileFormat::Png)];
-    let made =
-        publish(&publication, target, &png, 1, Aspect::SLIDE, cancel).map_err(|e| match e {
-            ExportError::Cancelled => CliError::Cancelled,
-            e => usage(&e),
-        })?;
-    made.files
-        .into_iter()
-        .next()
-        .map(|(_, bytes)| bytes)
-        .ok_or_else(|| CliError::Environment("analyze: the spectrum figure was not made".into()))
+    super::figure_png(&one, columns, "analyze", FigureKind::Spectrum, cancel)
 }
 
 /// Analyses 2D points (`input`, read in `read_ms`): the scene of [`analysis_scene`] checked

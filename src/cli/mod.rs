@@ -249,6 +249,40 @@ pub fn node_error(e: &samplescope::scene::node::NodeError) -> CliError {
     }
 }
 
+/// The PNG of figure `kind` of column 0 of `scene` (its columns' contexts and data in
+/// `columns`, `name` its file-name stem), published through `export::publish` as `render`
+/// publishes it: the one image output of the fronts over a scene (`recon --out`,
+/// `analyze --spectrum`).
+pub fn figure_png(
+    scene: &samplescope::scene::Scene,
+    columns: Vec<(
+        samplescope::model::FigureContext,
+        samplescope::model::ColumnData,
+    )>,
+    name: &str,
+    kind: samplescope::model::FigureKind,
+    cancel: &samplescope::core::cancel::Cancel,
+) -> Result<Vec<u8>, CliError> {
+    use samplescope::export::figure::{Aspect, FileFormat};
+    use samplescope::export::publish::{publish, Format, Target};
+    use samplescope::export::ExportError;
+    let publication = samplescope::scene::figure::publication(scene, columns, name);
+    let target = Target::Panel { column: 0, kind };
+    let png = [Format::Picture(FileFormat::Png)];
+    let made =
+        publish(&publication, target, &png, 1, Aspect::SLIDE, cancel).map_err(|e| match e {
+            ExportError::Cancelled => CliError::Cancelled,
+            e => CliError::Usage(e.to_string()),
+        })?;
+    made.files
+        .into_iter()
+        .next()
+        .map(|(_, bytes)| bytes)
+        .ok_or_else(|| {
+            CliError::Environment(format!("{name}: the {} figure was not made", kind.name()))
+        })
+}
+
 /// Opens a file the user named for reading. A path that does not exist, is a directory or
 /// goes through something that is not a directory is bad input (status 2); any other failure
 /// (permissions, a device error) is the environment's (status 1). See the README's "Exit

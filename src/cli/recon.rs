@@ -11,9 +11,7 @@ use samplescope::core::recon::{ReconError, MAX_SPP, MAX_W};
 use samplescope::core::signal::Signal;
 use samplescope::engine::cache::DEFAULT_BUDGET;
 use samplescope::engine::Evaluator;
-use samplescope::export::figure::{base_size, Aspect, FileFormat};
-use samplescope::export::publish::{publish, Format, Target};
-use samplescope::export::ExportError;
+use samplescope::export::figure::base_size;
 use samplescope::model::FigureKind;
 use samplescope::scene::graph::{NodeError, NodeKind, NodeResult, NodeValue};
 use samplescope::scene::{figure, Column, ImportedPoints, Panels, ReconMode, Scene};
@@ -276,20 +274,9 @@ pub fn run(args: &ReconArgs, session: &Session) -> Result<(), CliError> {
         // The reconstruction figure, published as `render` publishes it.
         let columns = figure::figure_columns(&scene, std::slice::from_ref(&results), "recon")
             .map_err(|e| usage(&e))?;
-        let publication = figure::publication(&scene, columns, "recon");
-        let target = Target::Panel {
-            column: 0,
-            kind: FigureKind::Reconstruction,
-        };
-        let png = [Format::Picture(FileFormat::Png)];
-        let made =
-            publish(&publication, target, &png, 1, Aspect::SLIDE, cancel).map_err(|e| match e {
-                ExportError::Cancelled => CliError::Cancelled,
-                e => usage(&e),
-            })?;
-        for (_, bytes) in made.files {
-            write_output(Path::new(path), &bytes, cancel)?;
-        }
+        let bytes =
+            super::figure_png(&scene, columns, "recon", FigureKind::Reconstruction, cancel)?;
+        write_output(Path::new(path), &bytes, cancel)?;
     }
     drop(progress);
     if args.json {

@@ -6,6 +6,7 @@ use samplescope::ui::SamplescopeApp;
 use std::sync::Arc;
 use std::time::{Duration, Instant};
 
+mod analyze_scene;
 mod bad_input;
 mod budget_cli;
 mod budget_memory;
