@@ -14,6 +14,7 @@ use samplescope::engine::Evaluator;
 use samplescope::export::figure::base_size;
 use samplescope::model::FigureKind;
 use samplescope::scene::graph::{NodeError, NodeKind, NodeResult, NodeValue};
+use samplescope::scene::panels::PanelKind;
 use samplescope::scene::{figure, Column, ImportedPoints, Panels, ReconMode, Scene};
 use std::collections::HashMap;
 use std::path::Path;
@@ -123,16 +124,7 @@ fn one_column_scene(
             scene.n = n;
         }
     }
-    scene.panels = Panels {
-        pattern: false,
-        sphere: false,
-        spectrum: false,
-        zoneplate: true,
-        filter: false,
-        cost: false,
-        integration: false,
-        theorem: false,
-    };
+    scene.panels = Panels::only(PanelKind::ZonePlate);
     scene.effects.reconstruction = true;
     scene.effects.error = true;
     scene.effects.convergence = false;

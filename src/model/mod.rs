@@ -6,7 +6,9 @@
 //! [`palette`], the dB conversion, the elementary-interval grid).
 //!
 //! Everything here is plain data or a pure function of it: `model` depends on [`crate::core`],
-//! `glam`, `serde` and `colorous` only, never on the scene, the engine, egui or plotters.
+//! `glam`, `serde` and `colorous` only, never on the scene, the engine, egui or plotters
+//! ([`FigureKind`] is expanded from the panel list, `scene::panels::panel_list!`, a macro that
+//! carries only names).
 //! The compute graph ([`crate::scene`]) fills these structs; the panels ([`crate::ui`]) and the
 //! figures ([`crate::export`]) only read them.
 

@@ -1,9 +1,22 @@
-//! The panel table: one row per panel ([`PANELS`]) saying its switch in the scene
-//! ([`Panels`]), where the GUI places it, the figures it saves and the nodes it reads, each
-//! with the condition (an effect, column 0) under which it is wanted. Everything else derives
-//! from it: the node table's `shown` rule ([`asks_for`], read by `graph::column_plan`), the
-//! figures `samplescope render` writes ([`available_in`]), the composites, the GUI's panels
-//! (shown when [`PanelKind::is_shown`]) and their Save menus ([`PanelSpec::figures`]).
+//! The panel table: one entry per panel in [`panel_list!`], the one list of panels and of
+//! the figures they save. An entry says the panel's switch in the scene ([`Panels`]), its
+//! label, where the GUI places it, its GUI type, the figures it saves (each with its file
+//! name, its drawing type, whether a composite holds it and when it is available) and the
+//! nodes it reads (each with when it is wanted). Each layer expands the part it owns, so no
+//! other list of panels or figures is written anywhere:
+//!
+//! - here, [`PanelKind`], [`PANELS`] (one [`PanelSpec`] row per panel) and the default
+//!   [`Panels`]; from them the node table's `shown` rule ([`asks_for`], read by
+//!   `graph::column_plan`), the figures `samplescope render` writes ([`available_in`]), the
+//!   composites, the GUI's visibility ([`PanelKind::is_shown`]), its Panels checkboxes and its
+//!   Save menus ([`PanelSpec::figures`]);
+//! - `model::FigureKind` (the figures' identities, names, order and composite membership);
+//! - `export::figure::figure`, the figure that draws each kind;
+//! - `ui::panels::make`, the GUI panel of each row.
+//!
+//! Only names cross the layers: each expansion resolves the paths of its own layer (the GUI
+//! type relative to `ui::panels`, the figure type relative to `export::figure`), so the
+//! dependencies still point downwards.
 //!
 //! One rule, one place: a panel is shown when its switch is on (the cost panel's per-node
 //! table needs no effect); a figure of a shown panel is listed, and a node of a shown panel
@@ -15,7 +28,209 @@ use super::Scene;
 use crate::model::FigureKind;
 use serde::{Deserialize, Serialize};
 
-/// Which panels are visible: one switch per row of [`PANELS`].
+/// The list of panels, in the GUI's order (the order of the Panels checkboxes, of the
+/// column grid, of the docks from the bottom up, and of the figures `render` writes). It
+/// calls `$then!` with one entry per panel:
+///
+/// ```text
+/// /// doc of the panel
+/// Kind {
+///     switch: field,            // its bool in `Panels` (also its name in menus and files)
+///     label: "…",               // its checkbox in the GUI's Panels section
+///     place: Column | Dock,     // where the GUI places it
+///     column_free: bool,        // its figures depend on no column (named without one)
+///     gui: module::Type,        // its GUI panel, in `ui/panels/module.rs` (a `Default`)
+///     figures: [                // the figures it saves, in its Save menu's order
+///         /// doc of the figure
+///         Kind { name: "…", when: condition, composite: bool, draw: module::Type },
+///     ],
+///     nodes: [(NodeKind, condition)],   // the nodes it reads (inputs are added by the plan)
+/// }
+/// ```
+///
+/// A condition is a [`Need`]: a function of the scene and the column (those below, or a
+/// closure). A new panel is its entry here and its switch in [`Panels`], its GUI file
+/// (`ui/panels/<name>.rs` with its `pub mod` line) and, for a new figure, the figure's file
+/// (`export/figure/<name>.rs` with its `mod` line).
+macro_rules! panel_list {
+    ($then:path) => {
+        $crate::scene::panels::panel_project! {
+            $then;
+            /// The points of each column, with their overlays and statistics.
+            Pattern {
+                switch: pattern,
+                label: "Pattern",
+                place: Column,
+                column_free: false,
+                gui: pattern::PatternPanel,
+                figures: [
+                    /// The points in the unit square.
+                    Pattern { name: "pattern", when: always, composite: true, draw: pattern::Pattern },
+                ],
+                nodes: [(Points, always), (Statistics, statistics)],
+            }
+            /// The points wrapped onto the sphere (the lecture's cylinder wrap and radial
+            /// projection).
+            Sphere {
+                switch: sphere,
+                label: "Sphere",
+                place: Column,
+                column_free: false,
+                gui: sphere::SpherePanel,
+                figures: [
+                    /// The points wrapped onto the sphere (cylinder wrap, radial projection):
+                    /// front and back orthographic views.
+                    Sphere { name: "sphere", when: always, composite: true, draw: sphere::Sphere },
+                ],
+                nodes: [(Points, always)],
+            }
+            /// The periodogram and its radial average.
+            Spectrum {
+                switch: spectrum,
+                label: "Spectrum (F2)",
+                place: Column,
+                column_free: false,
+                gui: spectrum::SpectrumPanel,
+                figures: [
+                    /// The periodogram image (log10 P through a colour map) with a colour bar.
+                    Spectrum { name: "spectrum", when: always, composite: true, draw: spectrum::Spectrum },
+                    /// The radially averaged power spectrum as a line plot.
+                    Raps { name: "raps", when: always, composite: false, draw: raps::Raps },
+                ],
+                nodes: [(Spectrum, always)],
+            }
+            /// The zone plate sampled and reconstructed, its reference and the error.
+            ZonePlate {
+                switch: zoneplate,
+                label: "Zone plate",
+                place: Column,
+                column_free: false,
+                gui: zoneplate::ZonePlatePanel,
+                figures: [
+                    /// The reconstructed signal (grey, 0..1).
+                    Reconstruction { name: "reconstruction", when: reconstruction, composite: true, draw: reconstruction::Reconstruction },
+                    /// The reference image of the signal (grey, 0..1).
+                    Reference { name: "reference", when: reconstruction_and_error, composite: false, draw: reference::Reference },
+                    /// |reconstruction − reference| (inferno, 0..max) with a colour bar.
+                    Error { name: "error", when: reconstruction_and_error, composite: false, draw: error::Error },
+                ],
+                nodes: [
+                    (Reconstruction, reconstruction),
+                    (Reference, reconstruction_and_error),
+                    (Error, reconstruction_and_error),
+                ],
+            }
+            /// The reconstruction filter: its kernel and frequency response.
+            Filter {
+                switch: filter,
+                label: "Filter",
+                place: Column,
+                column_free: false,
+                gui: filter::FilterPanel,
+                figures: [
+                    /// The filter kernel h(x).
+                    Kernel { name: "kernel", when: always, composite: true, draw: kernel::Kernel },
+                    /// The filter's frequency response |H(ω)| with the Nyquist line and the
+                    /// ideal low-pass.
+                    Response { name: "response", when: always, composite: true, draw: response::Response },
+                ],
+                nodes: [(Response, always)],
+            }
+            /// The cost view: every node's time and error, and the convergence plot.
+            Cost {
+                switch: cost,
+                label: "Cost view (F4)",
+                place: Dock,
+                column_free: false,
+                gui: cost::CostPanel,
+                figures: [
+                    /// RMSE against samples per pixel (log–log).
+                    Convergence { name: "convergence", when: convergence, composite: false, draw: convergence::Convergence },
+                ],
+                nodes: [(Convergence, convergence)],
+            }
+            /// The 1D sampling theorem: signal, replicas, filter, pre- and post-aliasing. The
+            /// view does not depend on the column: computed and saved for column 0 only.
+            Theorem {
+                switch: theorem,
+                label: "Sampling theorem (1D)",
+                place: Dock,
+                column_free: true,
+                gui: theorem::TheoremPanel,
+                figures: [
+                    /// The 1D sampling theorem: f(x), the samples f(nT) as stems and the
+                    /// reconstruction f_r(x).
+                    TheoremSignal { name: "theorem-signal", when: column_zero, composite: true, draw: theorem_signal::TheoremSignal },
+                    /// The 1D sampling theorem: |F(ω)|, the replicas F(ω − k f_s) (one colour
+                    /// per k), the filter's gain |G(ω)| and the Nyquist lines ±f_s/2, with a
+                    /// legend beside the plot.
+                    TheoremSpectrum { name: "theorem-spectrum", when: column_zero, composite: true, draw: theorem_spectrum::TheoremSpectrum },
+                    /// The 1D sampling theorem: the reconstructed spectrum |F_r(ω)| against
+                    /// |F(ω)|.
+                    TheoremReconstructed { name: "theorem-reconstructed", when: column_zero, composite: true, draw: theorem_reconstructed::TheoremReconstructed },
+                    /// The theorem panel's transform pair p(x) = g(a(x − s)) and its transform
+                    /// P(ω) side by side (|P|, Re P and Im P; the shah as impulses).
+                    TheoremPair { name: "theorem-pair", when: column_zero, composite: false, draw: theorem_pair::TheoremPair },
+                ],
+                nodes: [(Theorem, column_zero)],
+            }
+            /// The integration-error study: MSE of the Monte Carlo estimate against N, every
+            /// column on one log–log plot.
+            Integration {
+                switch: integration,
+                label: "Integration error",
+                place: Dock,
+                column_free: false,
+                gui: integration::IntegrationPanel,
+                figures: [
+                    /// The integration-error study: MSE against N (log–log) of every column on
+                    /// one plot, with standard-error bars, fitted slopes in the legend and
+                    /// guide lines N⁻¹ … N⁻³ (column 0 only: the plot holds all columns).
+                    Integration { name: "integration", when: column_zero, composite: false, draw: integration::Integration },
+                ],
+                nodes: [(Integration, always)],
+            }
+        }
+    };
+}
+pub(crate) use panel_list;
+
+/// Reads the entries of [`panel_list!`] (the one place their grammar is written) and hands
+/// `$then!` four views of them: every figure with its name and flags (`figures`), every
+/// figure's drawing type (`draw`), every panel's GUI type (`gui`), and the panels' rows
+/// (`rows`).
+macro_rules! panel_project {
+    ($then:path; $(
+        $(#[$doc:meta])*
+        $kind:ident {
+            switch: $switch:ident,
+            label: $label:literal,
+            place: $place:ident,
+            column_free: $free:literal,
+            gui: $gmod:ident :: $gty:ident,
+            figures: [$(
+                $(#[$fdoc:meta])*
+                $fig:ident { name: $fname:literal, when: $fneed:expr, composite: $comp:literal, draw: $fmod:ident :: $fty:ident $(,)? }
+            ),* $(,)?],
+            nodes: [$(($node:ident, $nneed:expr)),* $(,)?] $(,)?
+        }
+    )*) => {
+        $then! {
+            figures: [$($(
+                $(#[$fdoc])* $fig $fname $comp $free;
+            )*)*]
+            draw: [$($($fig $fmod::$fty;)*)*]
+            gui: [$($kind $gmod::$gty;)*]
+            rows: [$(
+                $(#[$doc])* $kind $switch $label $place [$(($fig, $fneed)),*] [$(($node, $nneed)),*];
+            )*]
+        }
+    };
+}
+pub(crate) use panel_project;
+
+/// Which panels are visible: one switch per entry of [`panel_list!`] (the field order is the
+/// scene files' and stays as it was written).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(default, deny_unknown_fields)]
 pub struct Panels {
@@ -35,31 +250,42 @@ pub struct Panels {
 }
 
 impl Default for Panels {
+    /// What a scene shows when it does not say: the four column panels of the lecture.
     fn default() -> Self {
+        let mut p = Panels::none();
+        for k in [
+            PanelKind::Pattern,
+            PanelKind::Spectrum,
+            PanelKind::ZonePlate,
+            PanelKind::Filter,
+        ] {
+            *(k.spec().switch)(&mut p) = true;
+        }
+        p
+    }
+}
+
+impl Panels {
+    /// Every switch off.
+    pub fn none() -> Self {
         Panels {
-            pattern: true,
-            spectrum: true,
-            zoneplate: true,
-            filter: true,
+            pattern: false,
+            spectrum: false,
+            zoneplate: false,
+            filter: false,
             cost: false,
             theorem: false,
             integration: false,
             sphere: false,
         }
     }
-}
 
-/// One of the panels (a row of [`PANELS`], in the GUI's order).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
-pub enum PanelKind {
-    Pattern,
-    Sphere,
-    Spectrum,
-    ZonePlate,
-    Filter,
-    Cost,
-    Integration,
-    Theorem,
+    /// Only `kind` shown.
+    pub fn only(kind: PanelKind) -> Self {
+        let mut p = Panels::none();
+        *(kind.spec().switch)(&mut p) = true;
+        p
+    }
 }
 
 /// Where the GUI places a panel.
@@ -67,7 +293,7 @@ pub enum PanelKind {
 pub enum Place {
     /// In every column's grid, in table order.
     Column,
-    /// Docked below the columns (one for the whole scene), in table order.
+    /// Docked below the columns (one for the whole scene), in table order from the bottom up.
     Dock,
 }
 
@@ -105,6 +331,8 @@ pub struct PanelSpec {
     pub kind: PanelKind,
     /// Its name (the scene's switch, in menus).
     pub name: &'static str,
+    /// Its checkbox in the GUI's Panels section.
+    pub label: &'static str,
     /// Its switch in the scene's [`Panels`].
     pub switch: fn(&mut Panels) -> &mut bool,
     /// Where the GUI places it.
@@ -115,105 +343,47 @@ pub struct PanelSpec {
     pub nodes: &'static [(NodeKind, Need)],
 }
 
-/// The panel table, indexed by `PanelKind as usize`.
-pub static PANELS: [PanelSpec; 8] = [
-    PanelSpec {
-        kind: PanelKind::Pattern,
-        name: "pattern",
-        switch: |p| &mut p.pattern,
-        place: Place::Column,
-        figures: &[(FigureKind::Pattern, always)],
-        nodes: &[
-            (NodeKind::Points, always),
-            (NodeKind::Statistics, statistics),
-        ],
-    },
-    PanelSpec {
-        kind: PanelKind::Sphere,
-        name: "sphere",
-        switch: |p| &mut p.sphere,
-        place: Place::Column,
-        figures: &[(FigureKind::Sphere, always)],
-        nodes: &[(NodeKind::Points, always)],
-    },
-    PanelSpec {
-        kind: PanelKind::Spectrum,
-        name: "spectrum",
-        switch: |p| &mut p.spectrum,
-        place: Place::Column,
-        figures: &[(FigureKind::Spectrum, always), (FigureKind::Raps, always)],
-        nodes: &[(NodeKind::Spectrum, always)],
-    },
-    PanelSpec {
-        kind: PanelKind::ZonePlate,
-        name: "zoneplate",
-        switch: |p| &mut p.zoneplate,
-        place: Place::Column,
-        figures: &[
-            (FigureKind::Reconstruction, reconstruction),
-            (FigureKind::Reference, reconstruction_and_error),
-            (FigureKind::Error, reconstruction_and_error),
-        ],
-        nodes: &[
-            (NodeKind::Reconstruction, reconstruction),
-            (NodeKind::Reference, reconstruction_and_error),
-            (NodeKind::Error, reconstruction_and_error),
-        ],
-    },
-    PanelSpec {
-        kind: PanelKind::Filter,
-        name: "filter",
-        switch: |p| &mut p.filter,
-        place: Place::Column,
-        figures: &[(FigureKind::Kernel, always), (FigureKind::Response, always)],
-        nodes: &[(NodeKind::Response, always)],
-    },
-    PanelSpec {
-        kind: PanelKind::Cost,
-        name: "cost",
-        switch: |p| &mut p.cost,
-        place: Place::Dock,
-        figures: &[(FigureKind::Convergence, convergence)],
-        nodes: &[(NodeKind::Convergence, convergence)],
-    },
-    PanelSpec {
-        kind: PanelKind::Integration,
-        name: "integration",
-        switch: |p| &mut p.integration,
-        place: Place::Dock,
-        // One plot of every column's study: the figure is column 0's.
-        figures: &[(FigureKind::Integration, column_zero)],
-        nodes: &[(NodeKind::Integration, always)],
-    },
-    PanelSpec {
-        kind: PanelKind::Theorem,
-        name: "theorem",
-        switch: |p| &mut p.theorem,
-        place: Place::Dock,
-        // The view does not depend on the column: computed and saved for column 0 only.
-        figures: &[
-            (FigureKind::TheoremSignal, column_zero),
-            (FigureKind::TheoremSpectrum, column_zero),
-            (FigureKind::TheoremReconstructed, column_zero),
-            (FigureKind::TheoremPair, column_zero),
-        ],
-        nodes: &[(NodeKind::Theorem, column_zero)],
-    },
-];
+/// Expands [`panel_list!`] into [`PanelKind`] and [`PANELS`].
+macro_rules! panel_rows {
+    (
+        figures: $figures:tt
+        draw: $draw:tt
+        gui: $gui:tt
+        rows: [$(
+            $(#[$doc:meta])* $kind:ident $switch:ident $label:literal $place:ident
+            [$(($fig:ident, $fneed:expr)),*] [$(($node:ident, $nneed:expr)),*];
+        )*]
+    ) => {
+        /// One of the panels (an entry of [`panel_list!`], a row of [`PANELS`], in the GUI's
+        /// order).
+        #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+        pub enum PanelKind {
+            $($(#[$doc])* $kind,)*
+        }
+
+        impl PanelKind {
+            /// Every panel, in table order.
+            pub const ALL: [PanelKind; [$(PanelKind::$kind),*].len()] = [$(PanelKind::$kind),*];
+        }
+
+        /// The panel table, indexed by `PanelKind as usize`.
+        pub static PANELS: [PanelSpec; PanelKind::ALL.len()] = [$(
+            PanelSpec {
+                kind: PanelKind::$kind,
+                name: stringify!($switch),
+                label: $label,
+                switch: |p| &mut p.$switch,
+                place: Place::$place,
+                figures: &[$((FigureKind::$fig, $fneed)),*],
+                nodes: &[$((NodeKind::$node, $nneed)),*],
+            },
+        )*];
+    };
+}
+
+panel_list!(panel_rows);
 
 impl PanelKind {
-    /// Every panel, in table order.
-    pub const ALL: [PanelKind; 8] = [
-        PanelKind::Pattern,
-        PanelKind::Sphere,
-        PanelKind::Spectrum,
-        PanelKind::ZonePlate,
-        PanelKind::Filter,
-        PanelKind::Cost,
-        PanelKind::Integration,
-        PanelKind::Theorem,
-    ];
-
     /// This panel's row.
     pub fn spec(self) -> &'static PanelSpec {
         &PANELS[self as usize]
@@ -332,6 +502,52 @@ mod tests {
         }
     }
 
+    #[test]
+    fn the_list_gives_each_figure_one_name_one_row_and_the_composite_its_order() {
+        let rows: Vec<FigureKind> = PANELS.iter().flat_map(|p| p.figure_kinds()).collect();
+        assert_eq!(
+            rows,
+            FigureKind::ALL.to_vec(),
+            "ALL is the rows' figures in order"
+        );
+        let names: std::collections::HashSet<&str> =
+            FigureKind::ALL.iter().map(|k| k.name()).collect();
+        assert_eq!(
+            names.len(),
+            FigureKind::ALL.len(),
+            "figure names are unique"
+        );
+        for p in &PANELS {
+            assert_eq!(PANELS.iter().filter(|q| q.name == p.name).count(), 1);
+            assert_eq!(PANELS.iter().filter(|q| q.label == p.label).count(), 1);
+        }
+        // Written out independently of the list: what a composite holds, in its order.
+        assert_eq!(
+            FigureKind::COMPOSITE,
+            [
+                FigureKind::Pattern,
+                FigureKind::Sphere,
+                FigureKind::Spectrum,
+                FigureKind::Reconstruction,
+                FigureKind::Kernel,
+                FigureKind::Response,
+                FigureKind::TheoremSignal,
+                FigureKind::TheoremSpectrum,
+                FigureKind::TheoremReconstructed,
+            ]
+        );
+        let theorem: Vec<FigureKind> = PanelKind::Theorem.spec().figure_kinds().collect();
+        assert_eq!(FigureKind::THEOREM.to_vec(), theorem);
+        let lecture = Panels {
+            pattern: true,
+            spectrum: true,
+            zoneplate: true,
+            filter: true,
+            ..Panels::none()
+        };
+        assert_eq!(Panels::default(), lecture);
+    }
+
     /// The node each figure draws, written out here independently of the table.
     fn drawn_from(f: FigureKind) -> NodeKind {
         match f {
@@ -391,17 +607,7 @@ mod tests {
     #[test]
     fn a_switch_shows_its_panel_alone() {
         for p in PanelKind::ALL {
-            let mut panels = Panels {
-                pattern: false,
-                spectrum: false,
-                zoneplate: false,
-                filter: false,
-                cost: false,
-                theorem: false,
-                integration: false,
-                sphere: false,
-            };
-            *(p.spec().switch)(&mut panels) = true;
+            let panels = Panels::only(p);
             for q in PanelKind::ALL {
                 assert_eq!(
                     q.is_shown(&panels),

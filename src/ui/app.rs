@@ -535,15 +535,9 @@ impl SamplescopeApp {
         egui::CollapsingHeader::new("Panels")
             .default_open(true)
             .show(ui, |ui| {
-                let p = &mut self.scene.panels;
-                ui.checkbox(&mut p.pattern, "Pattern");
-                ui.checkbox(&mut p.sphere, "Sphere");
-                ui.checkbox(&mut p.spectrum, "Spectrum (F2)");
-                ui.checkbox(&mut p.zoneplate, "Zone plate");
-                ui.checkbox(&mut p.filter, "Filter");
-                ui.checkbox(&mut p.cost, "Cost view (F4)");
-                ui.checkbox(&mut p.theorem, "Sampling theorem (1D)");
-                ui.checkbox(&mut p.integration, "Integration error");
+                for row in &crate::scene::panels::PANELS {
+                    ui.checkbox((row.switch)(&mut self.scene.panels), row.label);
+                }
             });
         egui::CollapsingHeader::new("Effects")
             .default_open(true)

@@ -1,25 +1,11 @@
-//! The panels of the panel table (one made per row, [`make`]), and the columns side by side,
+//! The panels of the panel table placed where their rows say ([`placed`]), and the columns side by side,
 //! each a grid of its visible column panels; and adding a column.
 
-use super::panels::{self, Panel, PanelCx};
+use super::panels::{make, Panel, PanelCx};
 use crate::model::PointsData;
 use crate::scene::panels::{PanelKind, Place};
 use crate::scene::{Scene, MAX_COLUMNS};
 use eframe::egui::{self, Rect, Vec2};
-
-/// The panel of row `kind` of the panel table, in its initial state.
-pub fn make(kind: PanelKind) -> Box<dyn Panel> {
-    match kind {
-        PanelKind::Pattern => Box::new(panels::pattern::PatternPanel),
-        PanelKind::Sphere => Box::new(panels::sphere::SpherePanel::default()),
-        PanelKind::Spectrum => Box::new(panels::spectrum::SpectrumPanel),
-        PanelKind::ZonePlate => Box::new(panels::zoneplate::ZonePlatePanel),
-        PanelKind::Filter => Box::new(panels::filter::FilterPanel),
-        PanelKind::Cost => Box::new(panels::cost::CostPanel),
-        PanelKind::Integration => Box::new(panels::integration::IntegrationPanel),
-        PanelKind::Theorem => Box::new(panels::theorem::TheoremPanel::default()),
-    }
-}
 
 /// The panels placed at `place`, in table order.
 pub fn placed(place: Place) -> Vec<Box<dyn Panel>> {

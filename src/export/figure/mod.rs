@@ -13,7 +13,7 @@
 //!
 //! - **One figure per file.** Each [`FigureKind`] has one [`Figure`] (`pattern.rs`,
 //!   `spectrum.rs`, … `theorem_pair.rs`): its base size, title, data check, drawing, CSV and
-//!   metadata. [`figure`] is the one registration list. The frame around every figure (white
+//!   metadata. [`figure`] is expanded from the panel list. The frame around every figure (white
 //!   page, title band) and the shared helpers (axes, text, legends, images with
 //!   colour bars) are in `draw.rs`; the shared CSV writers in `csv.rs`.
 //! - **Sizes.** Each figure has a base size ([`Figure::base_size`]); a figure at `scale` s is
@@ -50,11 +50,11 @@
 //!   in the SVG as PNG (`<image>` with a data URI, pixelated rendering) and in the PDF as an
 //!   uninterpolated image.
 //!
-//! **Adding a figure** for data a column already has: a [`FigureKind`] variant (with its name,
-//! in `model/figure_kind.rs`), a file here implementing [`Figure`], its line in [`figure`] (and
-//! the `mod` line above it), and its entry in its panel's row of the panel table
-//! (`scene::panels::PANELS`, which says when it is shown); the compiler points at the matches,
-//! and a test that every figure has one panel at the row.
+//! **Adding a figure** for data a column already has: a file here implementing [`Figure`] with
+//! its `mod` line below, and its entry in its panel's entry of the panel list
+//! (`scene::panels::panel_list!`: its name, when it is shown, whether a composite holds it,
+//! and this file's type), from which [`FigureKind`] and [`figure`] are expanded; a test checks
+//! that every kind's figure says it is that kind.
 
 mod canvas;
 mod composite;
@@ -138,26 +138,24 @@ pub trait Figure: Sync {
     }
 }
 
-/// The figure of `kind`: the one registration list.
-pub fn figure(kind: FigureKind) -> &'static dyn Figure {
-    match kind {
-        FigureKind::Pattern => &pattern::Pattern,
-        FigureKind::Sphere => &sphere::Sphere,
-        FigureKind::Spectrum => &spectrum::Spectrum,
-        FigureKind::Raps => &raps::Raps,
-        FigureKind::Reconstruction => &reconstruction::Reconstruction,
-        FigureKind::Reference => &reference::Reference,
-        FigureKind::Error => &error::Error,
-        FigureKind::Kernel => &kernel::Kernel,
-        FigureKind::Response => &response::Response,
-        FigureKind::Convergence => &convergence::Convergence,
-        FigureKind::TheoremSignal => &theorem_signal::TheoremSignal,
-        FigureKind::TheoremSpectrum => &theorem_spectrum::TheoremSpectrum,
-        FigureKind::TheoremReconstructed => &theorem_reconstructed::TheoremReconstructed,
-        FigureKind::TheoremPair => &theorem_pair::TheoremPair,
-        FigureKind::Integration => &integration::Integration,
-    }
+/// Expands the panel list into [`figure`]: each kind's drawing type, named by the list
+/// relative to this module (its file is `figure/<module>.rs`, declared above).
+macro_rules! figure_registry {
+    (
+        figures: $figures:tt
+        draw: [$($kind:ident $module:ident :: $ty:ident;)*]
+        $($rest:tt)*
+    ) => {
+        /// The figure of `kind` (its `draw` type in the panel list).
+        pub fn figure(kind: FigureKind) -> &'static dyn Figure {
+            match kind {
+                $(FigureKind::$kind => &$module::$ty,)*
+            }
+        }
+    };
 }
+
+crate::scene::panels::panel_list!(figure_registry);
 
 /// Size of figure `kind` at scale 1, in pixels (width, height).
 pub fn base_size(kind: FigureKind) -> (u32, u32) {

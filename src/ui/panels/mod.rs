@@ -4,11 +4,12 @@
 //! ([`PanelCx::get`], a [`Slot`]), never the graph's node values.
 //!
 //! Which panels exist, when each is shown, where it goes and which figures it saves is the
-//! panel table ([`crate::scene::panels::PANELS`]); `columns::make` builds each row's panel.
+//! panel list (`scene::panels::panel_list!`, whose rows are [`crate::scene::panels::PANELS`]);
+//! [`make`], expanded from it, builds each row's panel from the GUI type its entry names.
 //! The column panels ([`pattern`], [`sphere`], [`spectrum`], [`zoneplate`], [`filter`]) are
-//! laid out per column by [`crate::ui::columns`]; the docked ones ([`cost`], [`integration`],
-//! [`theorem`]) go below the columns (the app). A new panel is a new file here implementing
-//! [`Panel`], its `pub mod` line and its arm in `columns::make`.
+//! laid out per column by [`crate::ui::columns`]; the docked ones ([`cost`], [`theorem`],
+//! [`integration`]) go below the columns (the app). A new panel is a new file here
+//! implementing [`Panel`] and `Default`, its `pub mod` line, and its entry in the panel list.
 
 pub mod cost;
 pub mod filter;
@@ -28,6 +29,26 @@ use crate::ui::results::{slot, ColumnResults, NodeData, Slot};
 use crate::ui::view::ViewState;
 use crate::ui::widgets::image::ImageView;
 use eframe::egui;
+
+/// Expands the panel list into [`make`]: each row's GUI type, named by the list relative to
+/// this module (its file is `panels/<module>.rs`, declared above).
+macro_rules! panel_registry {
+    (
+        figures: $figures:tt
+        draw: $draw:tt
+        gui: [$($kind:ident $module:ident :: $ty:ident;)*]
+        $($rest:tt)*
+    ) => {
+        /// The panel of row `kind` of the panel table, in its initial state.
+        pub fn make(kind: PanelKind) -> Box<dyn Panel> {
+            match kind {
+                $(PanelKind::$kind => Box::new(<$module::$ty>::default()),)*
+            }
+        }
+    };
+}
+
+crate::scene::panels::panel_list!(panel_registry);
 
 /// A panel: a small struct holding its own display state, drawn from a [`PanelCx`].
 pub trait Panel {
