@@ -2,7 +2,8 @@
 //! scene's settings.
 //!
 //! Every parameter struct declares its fields once, with [`declare_params!`]: name, doc,
-//! default, range and kind (integer, float, enum, bool, list). The declaration gives the
+//! default, range and kind (integer, float, enum, bool, list, per-dimension value). The
+//! declaration gives the
 //! struct, its `Default`, its serde form (RON in scene files) and an implementation of
 //! [`Params`]: descriptors ([`ParamSpec`]), getters, checked setters and a whole-set check;
 //! `declare_params! { impl T = "owner" { … } }` describes the scalar fields of an existing
@@ -46,6 +47,10 @@ pub enum ParamKind {
         min: f64,
         max: f64,
     },
+    /// A value per dimension ([`PerDim`]): one finite float in `[min, max]` for every
+    /// dimension, or a list of 1 to [`MAX_DIMS`] of them, one per dimension (whose length the
+    /// user of the set checks against its dimension).
+    PerDim { default: f64, min: f64, max: f64 },
 }
 
 /// One parameter: its key, a one-line doc and its kind.
@@ -83,9 +88,16 @@ impl ParamValue {
         }
     }
 
-    /// The value for a message: numbers with at most 6 significant digits ([`fmt_num`]).
+    /// The value for a message: numbers with at most 6 significant digits ([`fmt_num`]); a
+    /// list longer than [`SHORT_LIST`] shows its first entries and its length.
     pub fn short(&self) -> String {
-        self.text(fmt_num)
+        match self {
+            ParamValue::List(v) if v.len() > SHORT_LIST => {
+                let items: Vec<String> = v[..SHORT_LIST - 1].iter().map(|x| fmt_num(*x)).collect();
+                format!("[{},…] ({} numbers)", items.join(","), v.len())
+            }
+            other => other.text(fmt_num),
+        }
     }
 }
 
@@ -126,7 +138,11 @@ impl ParamError {
     }
 }
 
+use crate::core::cube::MAX_DIMS;
 pub use crate::core::format::fmt_num;
+
+/// The most entries of a list a message shows ([`ParamValue::short`]).
+pub const SHORT_LIST: usize = 8;
 
 /// A number as text that parses back to the same f64: the shortest round-trip digits, in
 /// scientific notation when the plain form would be longer than 20 characters.
@@ -187,6 +203,12 @@ impl ParamSpec {
                 fmt_num(*min),
                 fmt_num(*max)
             ),
+            ParamKind::PerDim { min, max, .. } => format!(
+                "one finite number in [{}, {}] (every dimension) or a list [a,b,…] of one per \
+                 dimension (at most {MAX_DIMS})",
+                fmt_num(*min),
+                fmt_num(*max)
+            ),
         }
     }
 
@@ -198,6 +220,7 @@ impl ParamSpec {
             ParamKind::Choice { default, .. } => ParamValue::Choice(default),
             ParamKind::Bool { default } => ParamValue::Bool(*default),
             ParamKind::List { default, .. } => ParamValue::List(default.to_vec()),
+            ParamKind::PerDim { default, .. } => ParamValue::Float(*default),
         }
     }
 
@@ -224,7 +247,9 @@ impl ParamSpec {
                 let below = if max_exclusive { v < max } else { v <= max };
                 v.is_finite() && above && below
             }
-            ParamKind::List { min, max, .. } => v.is_finite() && v >= min && v <= max,
+            ParamKind::List { min, max, .. } | ParamKind::PerDim { min, max, .. } => {
+                v.is_finite() && v >= min && v <= max
+            }
             _ => false,
         }
     }
@@ -262,6 +287,20 @@ impl ParamSpec {
                     ParamValue::List(full)
                 })
             }
+            // One number, or a list of one per dimension (a list of one is the number).
+            (ParamKind::PerDim { .. }, ParamValue::Float(v)) => {
+                self.float_ok(*v).then_some(ParamValue::Float(*v))
+            }
+            (ParamKind::PerDim { .. }, ParamValue::Int(v)) => self
+                .float_ok(*v as f64)
+                .then_some(ParamValue::Float(*v as f64)),
+            (ParamKind::PerDim { .. }, ParamValue::List(v)) => {
+                let ok = (1..=MAX_DIMS).contains(&v.len()) && v.iter().all(|x| self.float_ok(*x));
+                ok.then(|| match v[..] {
+                    [x] => ParamValue::Float(x),
+                    _ => ParamValue::List(v.clone()),
+                })
+            }
             _ => None,
         }
     }
@@ -282,7 +321,7 @@ impl ParamSpec {
                 "false" | "0" | "no" | "off" => false,
                 _ => return None,
             }),
-            ParamKind::List { .. } => {
+            ParamKind::List { .. } | ParamKind::PerDim { .. } => {
                 let inner = t.strip_prefix('[').unwrap_or(t);
                 let inner = inner.strip_suffix(']').unwrap_or(inner);
                 let items: Result<Vec<f64>, _> =
@@ -322,6 +361,137 @@ pub trait ChoiceParam: Copy + Sized {
             .iter()
             .position(|o| o.eq_ignore_ascii_case(name))
             .map(Self::from_index)
+    }
+}
+
+/// A value per dimension (the `per_dim` kind): one number for every dimension, or a list of
+/// one number per dimension (1 to [`MAX_DIMS`] entries; a list of one is that number). Its
+/// serde form is a number or a list; it is `Copy` like every parameter set, so it holds its
+/// entries inline.
+#[derive(Clone, Copy)]
+pub struct PerDim {
+    len: u16,
+    values: [f64; MAX_DIMS],
+}
+
+impl PerDim {
+    /// The same number in every dimension.
+    pub const fn all(v: f64) -> Self {
+        let mut values = [0.0; MAX_DIMS];
+        values[0] = v;
+        PerDim { len: 1, values }
+    }
+
+    /// One number per dimension; `None` for an empty list or one longer than [`MAX_DIMS`].
+    pub fn list(v: &[f64]) -> Option<Self> {
+        if !(1..=MAX_DIMS).contains(&v.len()) {
+            return None;
+        }
+        let mut values = [0.0; MAX_DIMS];
+        values[..v.len()].copy_from_slice(v);
+        Some(PerDim {
+            len: v.len() as u16,
+            values,
+        })
+    }
+
+    /// The entries given: one (every dimension) or one per dimension.
+    pub fn as_slice(&self) -> &[f64] {
+        &self.values[..self.len as usize]
+    }
+
+    /// Whether one number stands for every dimension.
+    pub fn is_one(&self) -> bool {
+        self.len == 1
+    }
+
+    /// The values of `dims` dimensions: the one number repeated, or the list when it has
+    /// `dims` entries; otherwise `Err(len)`, the number of entries given.
+    pub fn expand(&self, dims: usize) -> Result<Vec<f64>, usize> {
+        match self.as_slice() {
+            [v] => Ok(vec![*v; dims]),
+            list if list.len() == dims => Ok(list.to_vec()),
+            list => Err(list.len()),
+        }
+    }
+
+    /// The value as a parameter value: a number, or a list.
+    pub fn value(&self) -> ParamValue {
+        match self.as_slice() {
+            [v] => ParamValue::Float(*v),
+            list => ParamValue::List(list.to_vec()),
+        }
+    }
+
+    /// Stores an accepted value (a number or a list of 1 to [`MAX_DIMS`] numbers).
+    pub fn put(&mut self, value: ParamValue) {
+        let next = match value {
+            ParamValue::Float(v) => Some(PerDim::all(v)),
+            ParamValue::List(v) => PerDim::list(&v),
+            _ => None,
+        };
+        if let Some(next) = next {
+            *self = next;
+        }
+    }
+}
+
+impl PartialEq for PerDim {
+    fn eq(&self, other: &Self) -> bool {
+        self.as_slice() == other.as_slice()
+    }
+}
+
+impl std::fmt::Debug for PerDim {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self.as_slice() {
+            [v] => write!(f, "{v:?}"),
+            list => f.debug_list().entries(list).finish(),
+        }
+    }
+}
+
+impl serde::Serialize for PerDim {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        match self.as_slice() {
+            [v] => s.serialize_f64(*v),
+            list => serde::Serialize::serialize(list, s),
+        }
+    }
+}
+
+impl<'de> serde::Deserialize<'de> for PerDim {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        struct Visit;
+        impl<'de> serde::de::Visitor<'de> for Visit {
+            type Value = PerDim;
+            fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+                write!(f, "a number or a list of 1 to {MAX_DIMS} numbers")
+            }
+            fn visit_f64<E: serde::de::Error>(self, v: f64) -> Result<PerDim, E> {
+                Ok(PerDim::all(v))
+            }
+            fn visit_i64<E: serde::de::Error>(self, v: i64) -> Result<PerDim, E> {
+                Ok(PerDim::all(v as f64))
+            }
+            fn visit_u64<E: serde::de::Error>(self, v: u64) -> Result<PerDim, E> {
+                Ok(PerDim::all(v as f64))
+            }
+            fn visit_seq<A: serde::de::SeqAccess<'de>>(
+                self,
+                mut seq: A,
+            ) -> Result<PerDim, A::Error> {
+                let mut v = Vec::new();
+                while let Some(x) = seq.next_element::<f64>()? {
+                    if v.len() == MAX_DIMS {
+                        return Err(serde::de::Error::invalid_length(v.len() + 1, &self));
+                    }
+                    v.push(x);
+                }
+                PerDim::list(&v).ok_or_else(|| serde::de::Error::invalid_length(0, &self))
+            }
+        }
+        d.deserialize_any(Visit)
     }
 }
 
@@ -482,7 +652,9 @@ pub fn params_json(p: &impl Params) -> serde_json::Value {
 ///   `positive(default, max, "doc")` (in `(0, max]`), stored as `f64`;
 /// - `choice(Type, "doc")`, stored as `Type` (a [`ChoiceParam`]), default `Type::default()`;
 /// - `flag(default, "doc")`, stored as `bool`;
-/// - `list(N, [defaults], min, max, "doc")`, stored as `[f64; N]`.
+/// - `list(N, [defaults], min, max, "doc")`, stored as `[f64; N]`;
+/// - `per_dim(default, min, max, "doc")`, stored as [`PerDim`]: one number for every
+///   dimension or a list of one per dimension, each in `[min, max]`.
 ///
 /// An optional `check(p) { … }` block adds joint constraints (`Result<(), ParamError>`).
 macro_rules! declare_params {
@@ -579,6 +751,7 @@ macro_rules! declare_params {
     (@ty choice ($t:ty, $doc:literal)) => { $t };
     (@ty flag ($($a:tt)*)) => { bool };
     (@ty list ($n:literal, $($a:tt)*)) => { [f64; $n] };
+    (@ty per_dim ($($a:tt)*)) => { $crate::core::params::PerDim };
     (@default int ($d:expr, $min:expr, $max:expr, $doc:literal)) => { $d };
     (@default count ($d:expr, $min:expr, $max:expr, $doc:literal)) => { $d };
     (@default float ($d:expr, $min:expr, $max:expr, $doc:literal)) => { $d };
@@ -587,6 +760,7 @@ macro_rules! declare_params {
     (@default choice ($t:ty, $doc:literal)) => { <$t>::default() };
     (@default flag ($d:expr, $doc:literal)) => { $d };
     (@default list ($n:literal, [$($d:expr),*], $min:expr, $max:expr, $doc:literal)) => { [$($d),*] };
+    (@default per_dim ($d:expr, $min:expr, $max:expr, $doc:literal)) => { $crate::core::params::PerDim::all($d) };
     (@doc $kind:ident ($($a:tt)*)) => { $crate::core::params::declare_params!(@last $($a)*) };
     (@last $doc:literal) => { $doc };
     (@last $x:tt $($rest:tt)+) => { $crate::core::params::declare_params!(@last $($rest)+) };
@@ -617,6 +791,9 @@ macro_rules! declare_params {
     (@spec list ($n:literal, [$($d:expr),*], $min:expr, $max:expr, $doc:literal)) => {
         $crate::core::params::ParamKind::List { default: &[$($d),*], min: $min, max: $max }
     };
+    (@spec per_dim ($d:expr, $min:expr, $max:expr, $doc:literal)) => {
+        $crate::core::params::ParamKind::PerDim { default: $d, min: $min, max: $max }
+    };
     (@get int $e:expr) => { $crate::core::params::ParamValue::Int($e as i64) };
     (@get count $e:expr) => { $crate::core::params::ParamValue::Int($e as i64) };
     (@get float $e:expr) => { $crate::core::params::ParamValue::Float($e) };
@@ -627,6 +804,7 @@ macro_rules! declare_params {
     };
     (@get flag $e:expr) => { $crate::core::params::ParamValue::Bool($e) };
     (@get list $e:expr) => { $crate::core::params::ParamValue::List($e.to_vec()) };
+    (@get per_dim $e:expr) => { $e.value() };
     (@put int $e:expr, $v:expr) => {
         if let $crate::core::params::ParamValue::Int(x) = $v { $e = x as u32; }
     };
@@ -655,6 +833,7 @@ macro_rules! declare_params {
             for (slot, x) in $e.iter_mut().zip(x) { *slot = x; }
         }
     };
+    (@put per_dim $e:expr, $v:expr) => { $e.put($v) };
     (@check $s:ident) => { Ok(()) };
     (@check $s:ident $p:ident $body:block) => { { let $p = $s; $body } };
 }
@@ -718,6 +897,7 @@ mod tests {
             shape: choice(Shape, "a choice"),
             on: flag(true, "a flag"),
             amps: list(3, [0.5, 0.25, 0.0], -1.0, 1.0, "a list"),
+            gains: per_dim(1.0, 0.0, 2.0, "a value per dimension"),
         }
         check(p) {
             if p.amps.iter().map(|a| a.abs()).sum::<f64>() > 1.0 {
@@ -769,6 +949,7 @@ mod tests {
                 shape: Shape::Triangle,
                 on: false,
                 amps: [0.1, -0.2, 0.0],
+                gains: PerDim::all(1.0),
             }
         );
         // Unquoted and quoted enum values, list without brackets.
@@ -776,6 +957,54 @@ mod tests {
         e.set("amps", "0.3,0.3,0.3").unwrap();
         assert_eq!(e.shape, Shape::Square);
         assert_eq!(e.amps, [0.3, 0.3, 0.3]);
+        // A value per dimension: one number, a list, a list of one (the number), no brackets.
+        e.set("gains", "0.5").unwrap();
+        assert_eq!((e.gains, e.gains.is_one()), (PerDim::all(0.5), true));
+        assert_eq!(e.get("gains"), Some(ParamValue::Float(0.5)));
+        e.set("gains", "[0.25, 2, 0]").unwrap();
+        assert_eq!(e.gains.as_slice(), &[0.25, 2.0, 0.0]);
+        assert_eq!(e.get("gains"), Some(ParamValue::List(vec![0.25, 2.0, 0.0])));
+        assert_eq!(
+            e.params_text().split(' ').next_back(),
+            Some("gains=[0.25,2,0]")
+        );
+        e.set("gains", "[1.5]").unwrap();
+        assert_eq!(e.gains, PerDim::all(1.5));
+        e.set("gains", "1,2").unwrap();
+        assert_eq!(e.gains.expand(2), Ok(vec![1.0, 2.0]));
+        assert_eq!(e.gains.expand(3), Err(2));
+        assert_eq!(PerDim::all(0.75).expand(3), Ok(vec![0.75; 3]));
+        let long = vec![1.0; MAX_DIMS];
+        e.set("gains", &format!("{long:?}")).unwrap();
+        assert_eq!(e.gains.as_slice().len(), MAX_DIMS);
+    }
+
+    #[test]
+    fn a_value_per_dimension_round_trips_through_ron_and_json() {
+        for g in [PerDim::all(0.5), PerDim::list(&[0.25, 2.0, 0.0]).unwrap()] {
+            let e = Every {
+                gains: g,
+                ..Every::default()
+            };
+            let text = ron::to_string(&e).unwrap();
+            assert_eq!(ron::from_str::<Every>(&text).unwrap(), e, "{text}");
+            let json = serde_json::to_string(&e).unwrap();
+            assert_eq!(serde_json::from_str::<Every>(&json).unwrap(), e, "{json}");
+        }
+        // One number is written as a number; integers and a list of one read back.
+        let e: Every = ron::from_str("(gains: 2)").unwrap();
+        assert_eq!(e.gains, PerDim::all(2.0));
+        assert!(ron::to_string(&e).unwrap().contains("gains:2.0"));
+        let e: Every = ron::from_str("(gains: [1.5])").unwrap();
+        assert_eq!(e.gains, PerDim::all(1.5));
+        assert_eq!(format!("{:?}", e.gains), "1.5");
+        assert!(ron::from_str::<Every>("(gains: [])").is_err());
+        let too_long = format!("(gains: {:?})", vec![1.0; MAX_DIMS + 1]);
+        assert!(ron::from_str::<Every>(&too_long).is_err());
+        assert_eq!(
+            params_json(&Every::default())["gains"],
+            serde_json::json!(1.0)
+        );
     }
 
     #[test]
@@ -792,6 +1021,9 @@ mod tests {
             ("amps", "[1,2]", "every.amps = [1,2]: must be a list [a,b,…] of 1 to 3 finite numbers in [-1, 1] (missing ones are 0)"),
             ("amps", "[0.1,0.2,0.3,0.4]", "must be a list"),
             ("amps", "[0.6,0.6]", "every.amps = 1.2: must be Σ|a| ≤ 1"),
+            ("gains", "3", "every.gains = 3: must be one finite number in [0, 2] (every dimension) or a list [a,b,…] of one per dimension (at most 1024)"),
+            ("gains", "[1,-1]", "every.gains = [1,-1]: must be one finite number"),
+            ("gains", "[]", "every.gains = []: must be one finite number"),
         ];
         for (key, text, want) in cases {
             let err = e.set(key, text).unwrap_err().to_string();
@@ -801,12 +1033,24 @@ mod tests {
         let err = e.set("size", "1").unwrap_err().to_string();
         assert_eq!(
             err,
-            "every: unknown parameter 'size': allowed parameters are [count, scale, width, shape, on, amps]"
+            "every: unknown parameter 'size': allowed parameters are [count, scale, width, shape, on, amps, gains]"
         );
     }
 
     #[test]
     fn check_params_finds_values_written_directly() {
+        let mut list = vec![1.0; 20];
+        list[3] = 5.0;
+        let e = Every {
+            gains: PerDim::list(&list).unwrap(),
+            ..Every::default()
+        };
+        // A long list is shown by its first entries and its length.
+        assert_eq!(
+            e.check_params().unwrap_err().to_string(),
+            "every.gains = [1,1,1,5,1,1,1,…] (20 numbers): must be one finite number in [0, 2] \
+             (every dimension) or a list [a,b,…] of one per dimension (at most 1024)"
+        );
         let e = Every {
             scale: f64::INFINITY,
             ..Every::default()

@@ -2,9 +2,9 @@
 //! randomisation, shared by every column (each column studies its own pattern and seed).
 
 use crate::core::integration::{Integrand, StudyRequest, MAX_NS, MAX_REALIZATIONS, MAX_STUDY_N};
-use crate::core::params::declare_params;
 #[cfg(doc)]
 use crate::core::params::Params;
+use crate::core::params::{declare_params, ParamError};
 use crate::core::pattern::Pattern;
 use serde::{Deserialize, Serialize};
 
@@ -72,9 +72,25 @@ impl IntegrationSettings {
         }
     }
 
-    /// The first sample count (`ns`) out of its range: (field, value, allowed). The other
-    /// settings and the integrand's parameters are checked through their descriptors.
+    /// The first sample count (`ns`) out of its range, or a Genz integrand without a D = 2
+    /// instance (a list of `a` or `u` of another length than 1 or 2: the panel's study is 2D):
+    /// (field, value, allowed). The other settings and the integrand's parameters are checked
+    /// through their descriptors.
     pub fn check(&self) -> Option<(&'static str, String, String)> {
+        if let Some(Err(ParamError::Invalid {
+            field,
+            value,
+            allowed,
+            ..
+        })) = self.integrand.in_dims(2)
+        {
+            let path = if field == "u" {
+                "integrand.u"
+            } else {
+                "integrand.a"
+            };
+            return Some((path, value, format!("{allowed}; the panel's study is 2D")));
+        }
         if !limits::NS.contains(&self.ns.len()) {
             return Some((
                 "ns",
@@ -119,6 +135,23 @@ mod tests {
         assert_eq!(bad(|s| s.ns = vec![MAX_STUDY_N + 1]), Some("ns"));
         assert_eq!(bad(|s| s.ns = vec![1; MAX_NS + 1]), Some("ns"));
         assert_eq!(bad(|s| s.ns = vec![1, MAX_STUDY_N]), None);
+        // A Genz integrand in the 2D study: one number or two per list.
+        let genz = |a: &str| {
+            let mut s = IntegrationSettings {
+                integrand: Integrand::from_name("genz-gaussian").unwrap(),
+                ..Default::default()
+            };
+            s.integrand.set("a", a).unwrap();
+            s.check()
+        };
+        assert_eq!(genz("3"), None);
+        assert_eq!(genz("[3,4]"), None);
+        let (field, value, allowed) = genz("[3,4,5]").unwrap();
+        assert_eq!(
+            (field, value.as_str()),
+            ("integrand.a", "[3,4,5] (3 numbers)")
+        );
+        assert!(allowed.ends_with("the panel's study is 2D"), "{allowed}");
         let realizations = |r| {
             IntegrationSettings {
                 realizations: r,

@@ -54,6 +54,12 @@ fn at_limits<P: Params>(params: &P) -> Vec<P> {
                 ParamValue::List(vec![*max; default.len()]),
                 ParamValue::List(vec![*max]),
             ],
+            // One number at each end, and a list of two (one per dimension of the 2D study).
+            ParamKind::PerDim { min, max, .. } => vec![
+                ParamValue::Float(*min),
+                ParamValue::Float(*max),
+                ParamValue::List(vec![*min, *max]),
+            ],
         };
         for v in values {
             let mut p = params.clone();

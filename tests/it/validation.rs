@@ -88,17 +88,20 @@ fn check_message_bounds<P: Params>(p: &P, failures: &mut Vec<String>) -> usize {
         let allowed = spec.allowed();
         let accepts = |text: &str| spec.parse(text).is_some();
         let (lo, hi, lo_in, hi_in) = match &spec.kind {
-            ParamKind::Int { .. } | ParamKind::Float { .. } => match printed_bounds(&allowed) {
-                Some(b) => b,
-                None => {
-                    failures.push(format!(
-                        "{}.{}: no bounds in {allowed:?}",
-                        p.owner(),
-                        spec.name
-                    ));
-                    continue;
+            // A value per dimension's one number is checked as a float.
+            ParamKind::Int { .. } | ParamKind::Float { .. } | ParamKind::PerDim { .. } => {
+                match printed_bounds(&allowed) {
+                    Some(b) => b,
+                    None => {
+                        failures.push(format!(
+                            "{}.{}: no bounds in {allowed:?}",
+                            p.owner(),
+                            spec.name
+                        ));
+                        continue;
+                    }
                 }
-            },
+            }
             ParamKind::List { .. } => {
                 // Each entry of a list is checked as a one-entry list.
                 let Some((lo, hi, lo_in, hi_in)) = printed_bounds(&allowed) else {
@@ -149,7 +152,7 @@ fn check_message_bounds<P: Params>(p: &P, failures: &mut Vec<String>) -> usize {
                     }
                 }
             }
-            ParamKind::Float { .. } => {
+            ParamKind::Float { .. } | ParamKind::PerDim { .. } => {
                 let (a, b): (f64, f64) = (lo.parse().unwrap(), hi.parse().unwrap());
                 let cases = [
                     (step(a, -1), false),

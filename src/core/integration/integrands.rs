@@ -16,10 +16,19 @@
 //! Every parameter set is a [`declare_params!`] struct, so `--integrand-set key=value` goes
 //! through [`Params::set`] with its checks, and [`Integrand`] dispatches over them
 //! ([`family!`](crate::core::family::family)) like [`crate::core::pattern::Pattern`] does.
+//!
+//! The family also holds Genz's six d-dimensional integrands ([`super::genz`]: `genz-…`);
+//! [`Integrand::genz`] gives their parameters, [`Integrand::is_planar`] tells the five 2D
+//! integrands apart. On [0,1]² ([`Integrand::eval`], [`Integrand::integral`]) a Genz
+//! integrand is its D = 2 instance.
 
+use super::genz::{
+    Genz, GenzContinuous, GenzCornerPeak, GenzDiscontinuous, GenzFamily, GenzGaussian, GenzKind,
+    GenzOscillatory, GenzProductPeak,
+};
 use crate::core::family::family;
 use crate::core::filter::special::{cos_pi, erf, erfc, sin_pi, sinc};
-use crate::core::params::declare_params;
+use crate::core::params::{declare_params, ParamError};
 use crate::core::rng::Rng;
 use glam::DVec2;
 
@@ -69,6 +78,12 @@ family! {
         Heaviside(Heaviside) = "heaviside",
         Bilinear(Bilinear) = "bilinear",
         Cosines(Cosines) = "cosines",
+        GenzOscillatory(GenzOscillatory) = "genz-oscillatory",
+        GenzProductPeak(GenzProductPeak) = "genz-product-peak",
+        GenzCornerPeak(GenzCornerPeak) = "genz-corner-peak",
+        GenzGaussian(GenzGaussian) = "genz-gaussian",
+        GenzContinuous(GenzContinuous) = "genz-continuous",
+        GenzDiscontinuous(GenzDiscontinuous) = "genz-discontinuous",
     }
 }
 
@@ -79,13 +94,62 @@ impl Default for Integrand {
 }
 
 impl Integrand {
-    /// f(p). Any finite p is allowed (the study only asks inside [0,1)²).
+    /// f(p). Any finite p is allowed (the study only asks inside [0,1)²). A Genz integrand is
+    /// its D = 2 instance (NaN when it has none: a list of another length than 1 or 2).
     pub fn eval(&self, p: DVec2) -> f64 {
-        Prepared::new(self).eval(p)
+        Prepared::new(self).map_or(f64::NAN, |f| f.eval(p))
     }
 
-    /// The exact integral of f over [0,1]² (closed forms of the module table).
+    /// A Genz integrand's family and parameters; `None` for the 2D integrands.
+    pub fn genz(&self) -> Option<GenzFamily> {
+        match self {
+            Integrand::GenzOscillatory(g) => Some(g.family()),
+            Integrand::GenzProductPeak(g) => Some(g.family()),
+            Integrand::GenzCornerPeak(g) => Some(g.family()),
+            Integrand::GenzGaussian(g) => Some(g.family()),
+            Integrand::GenzContinuous(g) => Some(g.family()),
+            Integrand::GenzDiscontinuous(g) => Some(g.family()),
+            Integrand::Disk(_)
+            | Integrand::Gaussian(_)
+            | Integrand::Heaviside(_)
+            | Integrand::Bilinear(_)
+            | Integrand::Cosines(_) => None,
+        }
+    }
+
+    /// The integrand of a Genz family's parameters.
+    pub fn from_genz(f: &GenzFamily) -> Integrand {
+        match f.kind {
+            GenzKind::Oscillatory => Integrand::GenzOscillatory(GenzOscillatory {
+                a: f.a,
+                u: f.u.as_slice()[0],
+            }),
+            GenzKind::ProductPeak => Integrand::GenzProductPeak(GenzProductPeak { a: f.a, u: f.u }),
+            GenzKind::CornerPeak => Integrand::GenzCornerPeak(GenzCornerPeak { a: f.a }),
+            GenzKind::Gaussian => Integrand::GenzGaussian(GenzGaussian { a: f.a, u: f.u }),
+            GenzKind::Continuous => Integrand::GenzContinuous(GenzContinuous { a: f.a, u: f.u }),
+            GenzKind::Discontinuous => {
+                Integrand::GenzDiscontinuous(GenzDiscontinuous { a: f.a, u: f.u })
+            }
+        }
+    }
+
+    /// Whether f is one of the 2D integrands (defined on [0,1]² only); the Genz integrands are
+    /// defined in any dimension.
+    pub fn is_planar(&self) -> bool {
+        self.genz().is_none()
+    }
+
+    /// A Genz integrand made ready for `dims` dimensions ([`Genz::new`]: its lists' lengths
+    /// and range checked, errors naming the field); `None` for the 2D integrands.
+    pub fn in_dims(&self, dims: usize) -> Option<Result<Genz, ParamError>> {
+        self.genz().map(|f| Genz::new(&f, dims))
+    }
+
+    /// The exact integral of f over [0,1]² (closed forms of the module table; a Genz
+    /// integrand's D = 2 instance, NaN when it has none).
     pub fn integral(&self) -> f64 {
+        let genz = |f: GenzFamily| Genz::new(&f, 2).map_or(f64::NAN, |g| g.integral());
         match self {
             Integrand::Disk(d) => {
                 disk_rect_area(DVec2::new(d.cx, d.cy), d.r, DVec2::ZERO, DVec2::ONE)
@@ -96,13 +160,29 @@ impl Integrand {
             }
             Integrand::Bilinear(_) => 0.25,
             Integrand::Cosines(c) => 0.25 * (1.0 + sinc(2.0 * c.a)) * (1.0 + sinc(2.0 * c.b)),
+            Integrand::GenzOscillatory(g) => genz(g.family()),
+            Integrand::GenzProductPeak(g) => genz(g.family()),
+            Integrand::GenzCornerPeak(g) => genz(g.family()),
+            Integrand::GenzGaussian(g) => genz(g.family()),
+            Integrand::GenzContinuous(g) => genz(g.family()),
+            Integrand::GenzDiscontinuous(g) => genz(g.family()),
         }
     }
 
     /// A new random instance of the same family, drawn from `rng` with the distributions of
     /// the module table (the integrand's own parameters are not used; `bilinear` has none and
-    /// returns itself).
+    /// returns itself). A Genz integrand draws its D = 2 instance ([`Integrand::randomized_in`]).
     pub fn randomized(&self, rng: &mut Rng) -> Integrand {
+        self.randomized_in(2, rng)
+    }
+
+    /// As [`Integrand::randomized`], a Genz integrand drawn in `dims` dimensions as Genz's test
+    /// driver does ([`GenzFamily::randomized`]: u uniform, a normalised to Genz's difficulty);
+    /// the 2D integrands ignore `dims`.
+    pub fn randomized_in(&self, dims: usize, rng: &mut Rng) -> Integrand {
+        if let Some(f) = self.genz() {
+            return Integrand::from_genz(&GenzFamily::randomized(f.kind, dims, rng));
+        }
         let mut u = |lo: f64, hi: f64| lo + (hi - lo) * rng.next_f64();
         match self {
             Integrand::Disk(_) => {
@@ -129,6 +209,7 @@ impl Integrand {
                 let b = u(0.5, 8.0);
                 Integrand::Cosines(Cosines { a, b })
             }
+            genz => *genz,
         }
     }
 }
@@ -141,18 +222,35 @@ fn normal(theta_degrees: f64) -> DVec2 {
 
 /// An integrand with its constants computed once, for the hot loop of a study.
 /// [`Integrand::eval`] goes through it, so both give the same bits.
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug, Clone)]
 pub(crate) enum Prepared {
-    Disk { c: DVec2, r2: f64 },
-    Gaussian { c: DVec2, k: f64 },
-    Heaviside { p: DVec2, n: DVec2 },
+    Disk {
+        c: DVec2,
+        r2: f64,
+    },
+    Gaussian {
+        c: DVec2,
+        k: f64,
+    },
+    Heaviside {
+        p: DVec2,
+        n: DVec2,
+    },
     Bilinear,
-    Cosines { a2: f64, b2: f64 },
+    Cosines {
+        a2: f64,
+        b2: f64,
+    },
+    /// A Genz integrand's D = 2 instance.
+    Genz(Genz),
 }
 
 impl Prepared {
-    pub(crate) fn new(integrand: &Integrand) -> Self {
-        match integrand {
+    /// The integrand ready for [0,1]²; a Genz integrand without a D = 2 instance is the
+    /// error of [`Genz::new`].
+    pub(crate) fn new(integrand: &Integrand) -> Result<Self, ParamError> {
+        let genz = |f: GenzFamily| Genz::new(&f, 2).map(Prepared::Genz);
+        Ok(match integrand {
             Integrand::Disk(d) => Prepared::Disk {
                 c: DVec2::new(d.cx, d.cy),
                 r2: d.r * d.r,
@@ -170,7 +268,13 @@ impl Prepared {
                 a2: 2.0 * c.a,
                 b2: 2.0 * c.b,
             },
-        }
+            Integrand::GenzOscillatory(g) => genz(g.family())?,
+            Integrand::GenzProductPeak(g) => genz(g.family())?,
+            Integrand::GenzCornerPeak(g) => genz(g.family())?,
+            Integrand::GenzGaussian(g) => genz(g.family())?,
+            Integrand::GenzContinuous(g) => genz(g.family())?,
+            Integrand::GenzDiscontinuous(g) => genz(g.family())?,
+        })
     }
 
     #[inline]
@@ -199,6 +303,7 @@ impl Prepared {
             Prepared::Cosines { a2, b2 } => {
                 0.25 * (1.0 + cos_pi(a2 * q.x)) * (1.0 + cos_pi(b2 * q.y))
             }
+            Prepared::Genz(ref g) => g.eval(&[q.x, q.y]),
         }
     }
 }
@@ -579,7 +684,9 @@ mod tests {
         let err = Integrand::from_name("nosuch").unwrap_err().to_string();
         assert_eq!(
             err,
-            "unknown integrand 'nosuch': allowed integrands are disk, gaussian, heaviside, bilinear, cosines"
+            "unknown integrand 'nosuch': allowed integrands are disk, gaussian, heaviside, bilinear, \
+             cosines, genz-oscillatory, genz-product-peak, genz-corner-peak, genz-gaussian, \
+             genz-continuous, genz-discontinuous"
         );
         let mut d = Integrand::from_name("Disk").unwrap();
         d.set("r", "0.1").unwrap();
@@ -610,6 +717,12 @@ mod tests {
                     Integrand::Bilinear(_) => {}
                     Integrand::Cosines(c) => {
                         assert!((0.5..8.0).contains(&c.a) && (0.5..8.0).contains(&c.b))
+                    }
+                    // Drawn in D = 2 (the genz module tests Genz's normalisation in every D).
+                    genz => {
+                        let f = genz.genz().unwrap();
+                        assert_eq!(f.a.as_slice().len(), 2);
+                        assert!(genz.integral().is_finite());
                     }
                 }
             }

@@ -10,13 +10,18 @@
 //!
 //! - [`integrands`]: the test integrands (disk, Gaussian, Heaviside edge, bilinear, raised
 //!   cosines) with closed-form integrals and random families ([`Integrand`]).
+//! - [`genz`]: Genz's six d-dimensional families (oscillatory, product peak, corner peak,
+//!   Gaussian, continuous, discontinuous) with closed-form integrals on [0,1]^D, the corner
+//!   peak's evaluated stably, and Genz's random instances ([`Genz`], [`GenzFamily`]).
 //! - [`study`]: the study itself: estimates over many realizations for a list of N, the MSE,
 //!   its standard error, variance and squared bias per N, and the log–log slope
 //!   ([`run_study`], [`StudyRequest`], [`Study`]), with its cost estimate ([`estimate`]).
 
+pub mod genz;
 pub mod integrands;
 pub mod study;
 
+pub use genz::{corner_peak_integral, Genz, GenzFamily, GenzKind};
 pub use integrands::{
     disk_rect_area, half_plane_square_area, Bilinear, Cosines, Disk, Gaussian, Heaviside, Integrand,
 };

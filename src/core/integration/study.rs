@@ -580,7 +580,7 @@ impl<'a> Plan<'a> {
     fn run(&self, task: &Task, cache: &Cache, cancel: &Cancel) -> Result<TaskOut, StudyError> {
         let req = self.req;
         let (integrand, shift, stream) = instance(req, task.r);
-        let f = Prepared::new(&integrand);
+        let f = Prepared::new(&integrand)?;
         let mut out = TaskOut {
             estimates: Vec::new(),
             reference: integrand.integral(),
@@ -686,6 +686,12 @@ fn eval_ns(integrand: &Integrand) -> f64 {
         Integrand::Disk(_) | Integrand::Heaviside(_) | Integrand::Bilinear(_) => 2.5,
         Integrand::Gaussian(_) => 7.0,
         Integrand::Cosines(_) => 23.0,
+        Integrand::GenzOscillatory(_)
+        | Integrand::GenzProductPeak(_)
+        | Integrand::GenzCornerPeak(_)
+        | Integrand::GenzGaussian(_)
+        | Integrand::GenzContinuous(_)
+        | Integrand::GenzDiscontinuous(_) => 30.0,
     }
 }
 

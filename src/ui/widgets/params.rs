@@ -291,25 +291,44 @@ pub fn param_ui(
             .on_hover_text(spec.doc)
             .changed()
             .then_some(ParamValue::Bool(b)),
-        (&ParamKind::List { min, max, .. }, ParamValue::List(mut items)) => {
-            let changed = ui
-                .horizontal(|ui| {
-                    let label = ui.label(label).on_hover_text(spec.doc);
-                    let mut changed = false;
-                    for x in items.iter_mut() {
-                        let speed = (x.abs() * 0.01).max(0.01);
-                        changed |= ui
-                            .add(egui::DragValue::new(x).range(min..=max).speed(speed))
-                            .labelled_by(label.id)
-                            .changed();
-                    }
-                    changed
-                })
-                .inner;
-            changed.then_some(ParamValue::List(items))
+        (&ParamKind::List { min, max, .. }, ParamValue::List(items)) => {
+            list_ui(ui, label, spec.doc, items, min, max).map(ParamValue::List)
+        }
+        // A value per dimension: its one number or its list, one drag value per entry.
+        (&ParamKind::PerDim { min, max, .. }, ParamValue::Float(v)) => {
+            list_ui(ui, label, spec.doc, vec![v], min, max).map(|v| ParamValue::Float(v[0]))
+        }
+        (&ParamKind::PerDim { min, max, .. }, ParamValue::List(items)) => {
+            list_ui(ui, label, spec.doc, items, min, max).map(ParamValue::List)
         }
         _ => None,
     }
+}
+
+/// One drag value per entry of a list, each over `[min, max]`; the list when one changed.
+fn list_ui(
+    ui: &mut egui::Ui,
+    label: &str,
+    doc: &str,
+    mut items: Vec<f64>,
+    min: f64,
+    max: f64,
+) -> Option<Vec<f64>> {
+    let changed = ui
+        .horizontal(|ui| {
+            let label = ui.label(label).on_hover_text(doc);
+            let mut changed = false;
+            for x in items.iter_mut() {
+                let speed = (x.abs() * 0.01).max(0.01);
+                changed |= ui
+                    .add(egui::DragValue::new(x).range(min..=max).speed(speed))
+                    .labelled_by(label.id)
+                    .changed();
+            }
+            changed
+        })
+        .inner;
+    changed.then_some(items)
 }
 
 /// The largest f64 below `x` (finite `x`; `f64::next_down` needs Rust 1.86).
