@@ -1,4 +1,5 @@
-//! `samplescope points`: generate a pattern and write CSV.
+//! `samplescope points`: generate a pattern and write CSV: `x,y` in 2D (and `x,y,z` on the
+//! sphere), `x0,…,x{D−1}` in D dimensions, `x,y` for a projection `--project i,j`.
 
 use super::out;
 use super::session::{check_outputs, write_output, Session};
@@ -35,10 +36,17 @@ pub struct PointsArgs {
     /// Bridson's `radius`) instead of failing; a note on standard error says how many.
     #[arg(long)]
     pub allow_fewer: bool,
+    /// Dimensions of each point [default: 2]: 2 writes `x,y` as always; any other D writes
+    /// `x0,…,x{D−1}` (each pattern's limit is in --list; 2D-only patterns take 2).
+    #[arg(long, value_name = "D")]
+    pub dims: Option<usize>,
+    /// Write the 2D projection onto dimensions i and j (0-based, `x,y`), e.g. `--project 3,7`.
+    #[arg(long, value_name = "I,J")]
+    pub project: Option<String>,
     /// List every pattern with its parameters, defaults and allowed ranges.
     #[arg(
         long,
-        conflicts_with_all = ["pattern", "n", "seed", "set", "out", "sphere", "allow_fewer"]
+        conflicts_with_all = ["pattern", "n", "seed", "set", "out", "sphere", "allow_fewer", "dims", "project"]
     )]
     pub list: bool,
 }
@@ -58,6 +66,15 @@ pub fn run(args: &PointsArgs, session: &Session) -> Result<(), CliError> {
     let pattern = pattern_from_args(name, &args.set)?;
     check_seed(&pattern, args.seed, "--seed")?;
     check_allow_fewer(&pattern, args.allow_fewer)?;
+    let dims = args.dims.unwrap_or(2);
+    let project = args
+        .project
+        .as_deref()
+        .map(|p| parse_project(p, dims))
+        .transpose()?;
+    if dims != 2 || project.is_some() {
+        return run_cube(args, &pattern, n, dims, project, session);
+    }
     pattern.validate(n)?;
     check_outputs(&[("--out", args.out.as_deref())])?;
     let plan = vec![budget::pattern(&pattern, n), budget::csv(n, args.sphere)];
@@ -71,8 +88,19 @@ pub fn run(args: &PointsArgs, session: &Session) -> Result<(), CliError> {
     })?;
     let points = require_points(generated, &pattern, args.allow_fewer)?;
     progress.stage(1);
+    let text = points_text(&points, args.sphere, cancel)?;
+    drop(progress);
+    write_text(args, &text, cancel)
+}
+
+/// `x,y` lines of 2D points (`x,y,z` on the sphere), checking `cancel` every 4096 points.
+fn points_text(
+    points: &[glam::DVec2],
+    sphere: bool,
+    cancel: &samplescope::core::cancel::Cancel,
+) -> Result<String, CliError> {
     let mut text = String::with_capacity(points.len() * 44);
-    if args.sphere {
+    if sphere {
         text.push_str("x,y,z\n");
         for (i, p) in points.iter().enumerate() {
             if i % 4096 == 0 {
@@ -91,7 +119,101 @@ pub fn run(args: &PointsArgs, session: &Session) -> Result<(), CliError> {
             text.push_str(&format!("{:?},{:?}\n", p.x, p.y));
         }
     }
+    Ok(text)
+}
+
+/// `--project i,j`: two different dimensions below `dims`, else one line naming the range.
+fn parse_project(text: &str, dims: usize) -> Result<(usize, usize), CliError> {
+    let bad = || {
+        CliError::Usage(format!(
+            "--project {}: must be two different dimensions i,j in 0..={} (dims = {dims})",
+            samplescope::core::params::fmt_text(text),
+            dims.saturating_sub(1)
+        ))
+    };
+    let (i, j) = text.split_once(',').ok_or_else(bad)?;
+    let (i, j) = (
+        i.trim().parse::<usize>().map_err(|_| bad())?,
+        j.trim().parse::<usize>().map_err(|_| bad())?,
+    );
+    if i == j || i >= dims || j >= dims {
+        return Err(bad());
+    }
+    Ok((i, j))
+}
+
+/// `points --dims D` (D ≠ 2) or `--project i,j`: the pattern's d-dimensional points, written
+/// as `x0,…,x{D−1}` or as the 2D projection `x,y`.
+fn run_cube(
+    args: &PointsArgs,
+    pattern: &Pattern,
+    n: usize,
+    dims: usize,
+    project: Option<(usize, usize)>,
+    session: &Session,
+) -> Result<(), CliError> {
+    pattern.validate_cube(n, dims)?;
+    if args.allow_fewer {
+        return Err(CliError::Usage(
+            "--allow-fewer: applies to 2D patterns only (dims = 2, no --project)".into(),
+        ));
+    }
+    if args.sphere && project.is_none() {
+        return Err(CliError::Usage(format!(
+            "--sphere: maps 2D points; with --dims {dims} add --project i,j"
+        )));
+    }
+    check_outputs(&[("--out", args.out.as_deref())])?;
+    let out = if project.is_some() {
+        budget::csv(n, args.sphere)
+    } else {
+        budget::csv_dims(n, dims)
+    };
+    let plan = vec![budget::pattern_cube(pattern, n, dims), out];
+    let Some(progress) = session.admit(plan)? else {
+        return Ok(());
+    };
+    let cancel = &session.cancel;
+    progress.stage(0);
+    let points = pattern.generate_cube(n, dims, args.seed.unwrap_or(0), cancel)?;
+    progress.stage(1);
+    let text = match project {
+        Some((i, j)) => {
+            let pts = points
+                .project(i, j)
+                .map_err(|e| CliError::Usage(format!("--project {e}")))?;
+            points_text(&pts, args.sphere, cancel)?
+        }
+        None => {
+            let mut text = String::with_capacity(n * dims * 22);
+            let header: Vec<String> = (0..dims).map(|d| format!("x{d}")).collect();
+            text.push_str(&header.join(","));
+            text.push('\n');
+            for (i, row) in points.rows().enumerate() {
+                if i % 4096 == 0 {
+                    cancel.check().map_err(|_| CliError::Cancelled)?;
+                }
+                for (d, v) in row.iter().enumerate() {
+                    if d > 0 {
+                        text.push(',');
+                    }
+                    text.push_str(&format!("{v:?}"));
+                }
+                text.push('\n');
+            }
+            text
+        }
+    };
     drop(progress);
+    write_text(args, &text, cancel)
+}
+
+/// Writes the CSV text to `--out` or standard output.
+fn write_text(
+    args: &PointsArgs,
+    text: &str,
+    cancel: &samplescope::core::cancel::Cancel,
+) -> Result<(), CliError> {
     match &args.out {
         Some(path) => write_output(Path::new(path), text.as_bytes(), cancel),
         None => {

@@ -69,7 +69,7 @@ pub use crate::core::metrics::cost::{
     net_prefixes, psa_statistics, rdf, statistics, PAIR_NS, PSA_TERM_NS,
 };
 pub use crate::core::pattern::cost::{
-    best_candidate_candidates, bridson_tries, dart_darts, pattern, BC_CACHE_POINTS,
+    best_candidate_candidates, bridson_tries, dart_darts, pattern, pattern_cube, BC_CACHE_POINTS,
     BC_CANDIDATE_NS, BRIDSON_TRY_NS, DART_NS,
 };
 pub use crate::core::recon::cost::{
@@ -376,6 +376,21 @@ pub fn csv(n: usize, sphere: bool) -> Estimate {
         nf,
         Unit::Points,
         nf * cpu(ns) + touch(bytes),
+        bytes,
+    )
+}
+
+/// Writing `n` points of `dims` coordinates as CSV lines (`x0,…,x{dims−1}`), held as text
+/// (about 22 bytes and 300 ns per coordinate, as the 2D lines).
+pub fn csv_dims(n: usize, dims: usize) -> Estimate {
+    let nf = n as f64;
+    let line = 22.0 * dims as f64;
+    let bytes = nf * (8.0 * dims as f64 + line);
+    Estimate::new(
+        format!("CSV of {n} points in {dims} dimensions"),
+        nf,
+        Unit::Points,
+        nf * cpu(CSV_LINE_NS / 2.0 * dims as f64) + touch(bytes),
         bytes,
     )
 }

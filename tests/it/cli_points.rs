@@ -5,7 +5,7 @@ use samplescope::core::pattern::{Pattern, PatternError};
 use samplescope::core::rng::Rng;
 use std::process::Command;
 
-fn samplescope(args: &[&str]) -> std::process::Output {
+pub fn samplescope(args: &[&str]) -> std::process::Output {
     Command::new(env!("CARGO_BIN_EXE_samplescope"))
         .args(args)
         .output()

@@ -236,6 +236,26 @@ pub fn pattern(p: &Pattern, n: usize) -> Estimate {
     Estimate::new(pattern_label(p, n), amount, unit, secs, bytes)
 }
 
+/// Generating `n` points of `pattern` in `dims` dimensions ([`Pattern::generate_cube`]):
+/// dims = 2 is [`pattern`]; otherwise the 2D cost per coordinate pair times dims / 2 (each
+/// d-dimensional generator does per coordinate what the 2D one does per coordinate; the
+/// padded pattern generates ⌈dims/2⌉ 2D sets), and the n·dims coordinates held.
+pub fn pattern_cube(p: &Pattern, n: usize, dims: usize) -> Estimate {
+    if dims == 2 {
+        return pattern(p, n);
+    }
+    let (amount, unit, secs, bytes) = pattern_cost(p, n);
+    let scale = dims.div_ceil(2) as f64;
+    let coords = 8.0 * n as f64 * dims as f64;
+    Estimate::new(
+        format!("{} in {dims} dimensions", pattern_label(p, n)),
+        amount * scale,
+        unit,
+        secs * scale + touch(coords),
+        bytes + coords,
+    )
+}
+
 /// Candidates best candidate draws for n points: Σ_{i=1}^{n−1} m·i = m·n(n−1)/2.
 pub fn best_candidate_candidates(m: u32, n: usize) -> f64 {
     let nf = n as f64;

@@ -146,6 +146,20 @@ pub fn scrambled_halton_with(
     }
 }
 
+/// The `Permute` stream Φ^π_b(start), Φ^π_b(start + 1), … of one dimension whose
+/// permutations are drawn from `Rng::new(seed)` (the d-dimensional Halton's, `cube::halton`,
+/// with seed `derive_seed(seed, d)` as here).
+pub(super) fn permuted_stream(start: u64, base: u32, seed: u64) -> impl Iterator<Item = f64> {
+    PermuteIter::new(start, DigitPermutations::random(base, seed))
+}
+
+/// The `Owen` stream Φ^Owen_b(start), Φ^Owen_b(start + 1), … of one dimension with seed
+/// `seed` (`derive_seed(seed, d)` for dimension d, as here).
+pub(super) fn owen_stream(start: u64, base: u32, seed: u64) -> impl Iterator<Item = f64> {
+    let mut it = OwenIter::new(start, base, seed);
+    std::iter::from_fn(move || Some(it.value()))
+}
+
 /// Points per parallel chunk of [`owen_points`] (and per cancel check).
 const OWEN_CHUNK: usize = 4096;
 

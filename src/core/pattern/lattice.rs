@@ -391,10 +391,10 @@ pub fn r2_alpha() -> DVec2 {
 }
 
 /// 2⁻¹²⁸, exactly.
-const TWO_POW_M128: f64 = 1.0 / 340_282_366_920_938_463_463_374_607_431_768_211_456.0;
+pub(super) const TWO_POW_M128: f64 = 1.0 / 340_282_366_920_938_463_463_374_607_431_768_211_456.0;
 
 /// ⌊a·b / 2¹²⁸⌋ (the high half of the 256-bit product), exactly.
-fn mul_hi_u128(a: u128, b: u128) -> u128 {
+pub(super) fn mul_hi_u128(a: u128, b: u128) -> u128 {
     const M: u128 = u64::MAX as u128;
     let (a1, a0) = (a >> 64, a & M);
     let (b1, b0) = (b >> 64, b & M);
@@ -426,7 +426,7 @@ fn r2_alpha_fixed() -> [u128; 2] {
 }
 
 /// `s` as a 128-bit fixed-point fraction ⌊s·2¹²⁸⌋ (s ∈ [0, 1)).
-fn to_fixed(s: f64) -> u128 {
+pub(super) fn to_fixed(s: f64) -> u128 {
     (s * 2f64.powi(128)) as u128
 }
 

@@ -342,6 +342,13 @@ pub fn sobol(p: &Sobol, n: usize, seed: u64) -> Result<Vec<DVec2>, PatternError>
             let wy = rng.next_u32();
             sobol_fill(start, n, false, |x, y| (x ^ wx, y ^ wy))
         }
+        Scramble::OwenShuffled => {
+            let coords = super::cube::sobol::sobol(p, n, 2, seed, &Cancel::never())?;
+            coords
+                .chunks_exact(2)
+                .map(|c| DVec2::new(c[0], c[1]))
+                .collect()
+        }
         Scramble::Owen => {
             // owen_scramble(v) = reverse(nested(reverse(v))): the sequence is stepped in the
             // reversed domain, so only the final reversal remains per coordinate.

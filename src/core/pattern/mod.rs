@@ -21,6 +21,7 @@
 
 pub mod best_candidate;
 pub mod cost;
+pub mod cube;
 pub mod halton_scramble;
 pub mod hex;
 pub mod lattice;
@@ -100,6 +101,16 @@ pub enum PatternError {
         placed: usize,
         requested: usize,
         note: String,
+    },
+    /// `dims` outside what the pattern is defined for ([`Pattern::max_dims`]; 2D-only patterns
+    /// take dims = 2 alone): `allowed` says what is, and for a 2D-only pattern names the
+    /// patterns that have a d-dimensional form.
+    #[error("{pattern}: dims = {dims}: {allowed}")]
+    InvalidDims {
+        pattern: &'static str,
+        dims: usize,
+        max: usize,
+        allowed: String,
     },
     /// The computation was cancelled.
     #[error("cancelled")]
@@ -201,15 +212,23 @@ pub enum Scramble {
     RandomDigit,
     /// Nested uniform (Owen) scrambling, hash-based (Laine–Karras 2011, Burley 2020).
     Owen,
+    /// Owen scrambling of the points and of their index: Burley's (2020) hash-based shuffling,
+    /// every 2^m prefix a randomly chosen aligned block in random order (`cube::sobol`).
+    OwenShuffled,
 }
 
 impl ChoiceParam for Scramble {
-    const OPTIONS: &'static [&'static str] = &["none", "random-digit", "owen"];
+    const OPTIONS: &'static [&'static str] = &["none", "random-digit", "owen", "owen-shuffled"];
     fn index(self) -> usize {
         self as usize
     }
     fn from_index(index: usize) -> Self {
-        [Scramble::None, Scramble::RandomDigit, Scramble::Owen][index]
+        [
+            Scramble::None,
+            Scramble::RandomDigit,
+            Scramble::Owen,
+            Scramble::OwenShuffled,
+        ][index]
     }
 }
 
@@ -365,7 +384,7 @@ declare_params! {
 declare_params! {
     /// The (0,2)-sequence of the first two Sobol' dimensions.
     Sobol = "sobol", "Sobol' (0,2)-sequence (first two dimensions), optionally scrambled" {
-        scramble: choice(Scramble, "none | random-digit (XOR) | owen (nested uniform, hash-based)"),
+        scramble: choice(Scramble, "none | random-digit (XOR) | owen (nested uniform, hash-based) | owen-shuffled (owen, and the index Owen-scrambled: Burley 2020's hash-based shuffling)"),
         skip: int(0, 0, u32::MAX, "index of the first point (a multiple of 2^m keeps the (0,m,2)-net property)"),
     }
 }

@@ -214,7 +214,7 @@ fn lhs_dim_perm(n: usize, d: usize, seed: u64) -> Vec<u32> {
 }
 
 /// Coordinates of LHS dimension `d` for all `n` samples: `(π_d(i) + ½ + a(u_{d,i} − ½))/n`.
-fn lhs_dim_coords(n: usize, d: usize, a: f64, seed: u64) -> Vec<f64> {
+pub(super) fn lhs_dim_coords(n: usize, d: usize, a: f64, seed: u64) -> Vec<f64> {
     let perm = lhs_dim_perm(n, d, seed);
     let mut rng = Rng::new(derive_seed(seed, 2 * d as u64 + 1));
     let w = n as f64;
