@@ -2,8 +2,8 @@
 //! scene's settings.
 //!
 //! Every parameter struct declares its fields once, with [`declare_params!`]: name, doc,
-//! default, range and kind (integer, float, enum, bool, list, per-dimension value). The
-//! declaration gives the
+//! default, range and kind (integer, float, signed scale, enum, bool, list, per-dimension
+//! value). The declaration gives the
 //! struct, its `Default`, its serde form (RON in scene files) and an implementation of
 //! [`Params`]: descriptors ([`ParamSpec`]), getters, checked setters and a whole-set check;
 //! `declare_params! { impl T = "owner" { … } }` describes the scalar fields of an existing
@@ -41,6 +41,9 @@ pub enum ParamKind {
     },
     /// `true` or `false`.
     Bool { default: bool },
+    /// A finite float of either sign whose magnitude is in `[min, max]`, `0 < min` (a scale
+    /// factor a ≠ 0 that may mirror: |a| in [0.05, 20]).
+    Scale { default: f64, min: f64, max: f64 },
     /// Up to `default.len()` finite floats, each in `[min, max]`; missing trailing entries are 0.
     List {
         default: &'static [f64],
@@ -195,6 +198,12 @@ impl ParamSpec {
                     fmt_num(*max)
                 )
             }
+            ParamKind::Scale { min, max, .. } => format!(
+                "a finite number with |{}| in [{}, {}]",
+                self.name,
+                fmt_num(*min),
+                fmt_num(*max)
+            ),
             ParamKind::Choice { options, .. } => format!("one of {}", options.join(", ")),
             ParamKind::Bool { .. } => "true or false".to_string(),
             ParamKind::List { default, min, max } => format!(
@@ -216,7 +225,9 @@ impl ParamSpec {
     pub fn default_value(&self) -> ParamValue {
         match &self.kind {
             ParamKind::Int { default, .. } => ParamValue::Int(*default),
-            ParamKind::Float { default, .. } => ParamValue::Float(*default),
+            ParamKind::Float { default, .. } | ParamKind::Scale { default, .. } => {
+                ParamValue::Float(*default)
+            }
             ParamKind::Choice { default, .. } => ParamValue::Choice(default),
             ParamKind::Bool { default } => ParamValue::Bool(*default),
             ParamKind::List { default, .. } => ParamValue::List(default.to_vec()),
@@ -247,6 +258,7 @@ impl ParamSpec {
                 let below = if max_exclusive { v < max } else { v <= max };
                 v.is_finite() && above && below
             }
+            ParamKind::Scale { min, max, .. } => v.is_finite() && v.abs() >= min && v.abs() <= max,
             ParamKind::List { min, max, .. } | ParamKind::PerDim { min, max, .. } => {
                 v.is_finite() && v >= min && v <= max
             }
@@ -266,10 +278,10 @@ impl ParamSpec {
                     v.is_finite() && v.fract() == 0.0 && *v >= *min as f64 && *v <= *max as f64;
                 ok.then_some(ParamValue::Int(*v as i64))
             }
-            (ParamKind::Float { .. }, ParamValue::Float(v)) => {
+            (ParamKind::Float { .. } | ParamKind::Scale { .. }, ParamValue::Float(v)) => {
                 self.float_ok(*v).then_some(ParamValue::Float(*v))
             }
-            (ParamKind::Float { .. }, ParamValue::Int(v)) => self
+            (ParamKind::Float { .. } | ParamKind::Scale { .. }, ParamValue::Int(v)) => self
                 .float_ok(*v as f64)
                 .then_some(ParamValue::Float(*v as f64)),
             (ParamKind::Choice { options, .. }, ParamValue::Choice(c)) => options
@@ -311,7 +323,7 @@ impl ParamSpec {
         let t = text.trim();
         let value = match &self.kind {
             ParamKind::Int { .. } => ParamValue::Int(t.parse().ok()?),
-            ParamKind::Float { .. } => ParamValue::Float(t.parse().ok()?),
+            ParamKind::Float { .. } | ParamKind::Scale { .. } => ParamValue::Float(t.parse().ok()?),
             ParamKind::Choice { options, .. } => {
                 let t = t.trim_matches('"');
                 ParamValue::Choice(options.iter().find(|o| o.eq_ignore_ascii_case(t))?)
@@ -651,6 +663,7 @@ pub fn params_json(p: &impl Params) -> serde_json::Value {
 ///   `[min, max)`: `max` itself is refused, e.g. an offset modulo 1) and
 ///   `positive(default, max, "doc")` (in `(0, max]`), stored as `f64`;
 /// - `choice(Type, "doc")`, stored as `Type` (a [`ChoiceParam`]), default `Type::default()`;
+/// - `scale(default, min, max, "doc")` (either sign, magnitude in `[min, max]`), stored as `f64`;
 /// - `flag(default, "doc")`, stored as `bool`;
 /// - `list(N, [defaults], min, max, "doc")`, stored as `[f64; N]`;
 /// - `per_dim(default, min, max, "doc")`, stored as [`PerDim`]: one number for every
@@ -748,6 +761,7 @@ macro_rules! declare_params {
     (@ty float ($($a:tt)*)) => { f64 };
     (@ty positive ($($a:tt)*)) => { f64 };
     (@ty below ($($a:tt)*)) => { f64 };
+    (@ty scale ($($a:tt)*)) => { f64 };
     (@ty choice ($t:ty, $doc:literal)) => { $t };
     (@ty flag ($($a:tt)*)) => { bool };
     (@ty list ($n:literal, $($a:tt)*)) => { [f64; $n] };
@@ -757,6 +771,7 @@ macro_rules! declare_params {
     (@default float ($d:expr, $min:expr, $max:expr, $doc:literal)) => { $d };
     (@default positive ($d:expr, $max:expr, $doc:literal)) => { $d };
     (@default below ($d:expr, $min:expr, $max:expr, $doc:literal)) => { $d };
+    (@default scale ($d:expr, $min:expr, $max:expr, $doc:literal)) => { $d };
     (@default choice ($t:ty, $doc:literal)) => { <$t>::default() };
     (@default flag ($d:expr, $doc:literal)) => { $d };
     (@default list ($n:literal, [$($d:expr),*], $min:expr, $max:expr, $doc:literal)) => { [$($d),*] };
@@ -779,6 +794,9 @@ macro_rules! declare_params {
     (@spec positive ($d:expr, $max:expr, $doc:literal)) => {
         $crate::core::params::ParamKind::Float { default: $d, min: 0.0, max: $max, min_exclusive: true, max_exclusive: false }
     };
+    (@spec scale ($d:expr, $min:expr, $max:expr, $doc:literal)) => {
+        $crate::core::params::ParamKind::Scale { default: $d, min: $min, max: $max }
+    };
     (@spec choice ($t:ty, $doc:literal)) => {
         $crate::core::params::ParamKind::Choice {
             default: <$t as $crate::core::params::ChoiceParam>::name(<$t>::default()),
@@ -799,6 +817,7 @@ macro_rules! declare_params {
     (@get float $e:expr) => { $crate::core::params::ParamValue::Float($e) };
     (@get positive $e:expr) => { $crate::core::params::ParamValue::Float($e) };
     (@get below $e:expr) => { $crate::core::params::ParamValue::Float($e) };
+    (@get scale $e:expr) => { $crate::core::params::ParamValue::Float($e) };
     (@get choice $e:expr) => {
         $crate::core::params::ParamValue::Choice($crate::core::params::ChoiceParam::name($e))
     };
@@ -818,6 +837,9 @@ macro_rules! declare_params {
         if let $crate::core::params::ParamValue::Float(x) = $v { $e = x; }
     };
     (@put below $e:expr, $v:expr) => {
+        if let $crate::core::params::ParamValue::Float(x) = $v { $e = x; }
+    };
+    (@put scale $e:expr, $v:expr) => {
         if let $crate::core::params::ParamValue::Float(x) = $v { $e = x; }
     };
     (@put choice $e:expr, $v:expr) => {
@@ -894,6 +916,7 @@ mod tests {
             count: int(3, 1, 10, "an integer"),
             scale: float(0.5, 0.0, 1.0, "a float"),
             width: positive(1.0, 2.0, "a positive float"),
+            gain: scale(1.0, 0.5, 4.0, "a signed scale"),
             shape: choice(Shape, "a choice"),
             on: flag(true, "a flag"),
             amps: list(3, [0.5, 0.25, 0.0], -1.0, 1.0, "a list"),
@@ -937,6 +960,7 @@ mod tests {
         e.set("count", "7").unwrap();
         e.set("scale", "0.25").unwrap();
         e.set("width", "2").unwrap();
+        e.set("gain", "-0.5").unwrap();
         e.set("shape", "Triangle").unwrap();
         e.set("on", "false").unwrap();
         e.set("amps", "[0.1, -0.2]").unwrap();
@@ -946,6 +970,7 @@ mod tests {
                 count: 7,
                 scale: 0.25,
                 width: 2.0,
+                gain: -0.5,
                 shape: Shape::Triangle,
                 on: false,
                 amps: [0.1, -0.2, 0.0],
@@ -1016,6 +1041,10 @@ mod tests {
             ("count", "2.5", "every.count = 2.5: must be an integer in 1..=10"),
             ("scale", "NaN", "every.scale = NaN: must be a finite number in [0, 1]"),
             ("width", "0", "every.width = 0: must be a finite number in (0, 2]"),
+            ("gain", "0", "every.gain = 0: must be a finite number with |gain| in [0.5, 4]"),
+            ("gain", "-4.5", "every.gain = -4.5: must be a finite number with |gain| in [0.5, 4]"),
+            ("gain", "0.25", "every.gain = 0.25: must be"),
+            ("gain", "inf", "every.gain = inf: must be"),
             ("shape", "circle", "every.shape = circle: must be one of square, triangle"),
             ("on", "maybe", "every.on = maybe: must be true or false"),
             ("amps", "[1,2]", "every.amps = [1,2]: must be a list [a,b,…] of 1 to 3 finite numbers in [-1, 1] (missing ones are 0)"),
@@ -1033,7 +1062,7 @@ mod tests {
         let err = e.set("size", "1").unwrap_err().to_string();
         assert_eq!(
             err,
-            "every: unknown parameter 'size': allowed parameters are [count, scale, width, shape, on, amps, gains]"
+            "every: unknown parameter 'size': allowed parameters are [count, scale, width, gain, shape, on, amps, gains]"
         );
     }
 
@@ -1078,6 +1107,21 @@ mod tests {
             Some(ParamValue::Float(1.0))
         );
         assert_eq!(scale.accept(&ParamValue::Int(2)), None);
+        // A signed scale: either sign, its magnitude ranged.
+        let gain = e.spec("gain").unwrap();
+        for ok in [0.5, 4.0, -0.5, -4.0, 1.0] {
+            assert_eq!(
+                gain.accept(&ParamValue::Float(ok)),
+                Some(ParamValue::Float(ok))
+            );
+        }
+        assert_eq!(
+            gain.accept(&ParamValue::Int(-2)),
+            Some(ParamValue::Float(-2.0))
+        );
+        for bad in [0.0, 0.49, -0.49, 4.01, -4.01, f64::NAN, f64::NEG_INFINITY] {
+            assert_eq!(gain.accept(&ParamValue::Float(bad)), None, "{bad}");
+        }
     }
 
     #[test]

@@ -1,6 +1,7 @@
-//! The documented range of every scene value that has no descriptor: N, the columns, texts,
-//! `recon.mode`'s grid and spp (patterns, signals, filters, integrands and the spectrum,
-//! reconstruction and integration settings have descriptors, [`crate::core::params`]).
+//! The documented range of every scene value that has no descriptor: N, the columns, texts
+//! (patterns, signals, filters, integrands, the spectrum, reconstruction — `recon.mode`'s spp
+//! and grid included —, theorem and integration settings have descriptors,
+//! [`crate::core::params`]).
 //! [`Scene::validate`] enforces them and the GUI's widgets span exactly them, so no widget
 //! can clamp a value a scene file may hold.
 
@@ -19,10 +20,6 @@ pub const N: RangeInclusive<usize> = 1..=MAX_SCENE_N;
 pub const COLUMNS: RangeInclusive<usize> = 1..=MAX_COLUMNS;
 /// A column's elementary-interval exponent k (further bounded by N = 2^m: k ≤ m).
 pub const ELEMENTARY_K: RangeInclusive<u32> = 0..=MAX_ELEMENTARY_K;
-/// Resampling grid (`recon.mode: Resample(grid: …)`).
-pub const GRID: RangeInclusive<usize> = 2..=4096;
-/// Samples per pixel (`recon.mode: Supersample(spp: …)`).
-pub const SPP: RangeInclusive<usize> = 1..=1024;
 /// Characters of the scene's `title` (drawn above the comparison, in every figure's
 /// metadata).
 pub const TITLE_CHARS: usize = 256;

@@ -29,6 +29,7 @@ pub use load::{MAX_SCENE_BYTES, RON_NESTING};
 pub use panels::Panels;
 pub use settings::{
     Column, Effects, PixelSampling, ReconMode, ReconSettings, Scene, SpectrumSettings,
+    DEFAULT_GRID, DEFAULT_SPP,
 };
 
 pub use import::ImportedPoints;

@@ -3,7 +3,7 @@
 
 use super::{ImportedPoints, IntegrationSettings, Motion, Panels};
 use crate::core::filter::Filter2D;
-use crate::core::params::declare_params;
+use crate::core::params::{declare_params, ParamKind, ParamSpec, ParamValue, Params};
 use crate::core::pattern::Pattern;
 use crate::core::signal::theorem::TheoremSettings;
 use crate::core::signal::Signal;
@@ -108,6 +108,73 @@ pub enum ReconMode {
     Resample { grid: usize },
 }
 
+/// The samples per pixel a new supersampling mode starts with (`spp`'s default).
+pub const DEFAULT_SPP: usize = 16;
+/// The resampling grid's default side (the lecture's 128×128).
+pub const DEFAULT_GRID: usize = 128;
+
+/// `recon.mode`'s parameters, declared once: `spp` of `Supersample`, `grid` of `Resample`
+/// (`Scattered` has none). `Scene::validate` checks them and the GUI's control spans them.
+const MODE_SPECS: [ParamSpec; 2] = [
+    ParamSpec {
+        name: "spp",
+        doc: "samples per output pixel, each pixel's from the column's pattern",
+        kind: ParamKind::Int {
+            default: DEFAULT_SPP as i64,
+            min: 1,
+            max: 1024,
+        },
+    },
+    ParamSpec {
+        name: "grid",
+        doc: "side of the uniform grid the signal is sampled on before resampling",
+        kind: ParamKind::Int {
+            default: DEFAULT_GRID as i64,
+            min: 2,
+            max: 4096,
+        },
+    },
+];
+
+impl Params for ReconMode {
+    fn owner(&self) -> &'static str {
+        "recon.mode"
+    }
+
+    fn specs(&self) -> Vec<ParamSpec> {
+        let key = match self {
+            ReconMode::Scattered => return Vec::new(),
+            ReconMode::Supersample { .. } => "spp",
+            ReconMode::Resample { .. } => "grid",
+        };
+        MODE_SPECS
+            .iter()
+            .filter(|s| s.name == key)
+            .cloned()
+            .collect()
+    }
+
+    fn get(&self, key: &str) -> Option<ParamValue> {
+        match (self, key) {
+            (ReconMode::Supersample { spp: v }, "spp")
+            | (ReconMode::Resample { grid: v }, "grid") => {
+                Some(ParamValue::Int(i64::try_from(*v).unwrap_or(i64::MAX)))
+            }
+            _ => None,
+        }
+    }
+
+    fn put(&mut self, key: &str, value: ParamValue) {
+        if let ParamValue::Int(x) = value {
+            match (self, key) {
+                (ReconMode::Supersample { spp: v }, "spp")
+                | (ReconMode::Resample { grid: v }, "grid") => *v = x as usize,
+                _ => {}
+            }
+        }
+    }
+}
+
 declare_params! {
     /// Spectrum settings: every field is a parameter (descriptor: range, default, doc), so
     /// `Scene::validate` and the GUI's controls come from the declaration.
@@ -152,7 +219,8 @@ impl SpectrumSettings {
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(default, deny_unknown_fields)]
 pub struct ReconSettings {
-    /// How samples are taken (its `spp` and `grid` are ranged by [`super::limits`]).
+    /// How samples are taken (its `spp` and `grid` have descriptors, [`ReconMode`]'s
+    /// [`Params`]).
     pub mode: ReconMode,
     /// Output image size W (W×W pixels); descriptor below.
     pub size: usize,

@@ -208,16 +208,10 @@ impl Scene {
             .check_params()
             .map_err(|e| param("spectrum", e))?;
         self.recon.check_params().map_err(|e| param("recon", e))?;
-        if let ReconMode::Resample { grid } = self.recon.mode {
-            if let Some(allowed) = int_range(grid, &limits::GRID) {
-                return Err(invalid("recon.mode.grid", grid.to_string(), &allowed));
-            }
-        }
-        if let ReconMode::Supersample { spp } = self.recon.mode {
-            if let Some(allowed) = int_range(spp, &limits::SPP) {
-                return Err(invalid("recon.mode.spp", spp.to_string(), &allowed));
-            }
-        }
+        self.recon
+            .mode
+            .check_params()
+            .map_err(|e| param("recon.mode", e))?;
         self.theorem
             .signal
             .check_params()
@@ -232,7 +226,13 @@ impl Scene {
                 value,
                 allowed,
             }) => return Err(invalid(&format!("theorem.{field}"), value, &allowed)),
-            Err(TheoremError::Param(e)) => return Err(param("theorem", e)),
+            Err(TheoremError::Param(e)) => {
+                // The part of the theorem's settings it belongs to (`signal`, `pair`).
+                let owner = match &e {
+                    ParamError::Invalid { owner, .. } | ParamError::Unknown { owner, .. } => *owner,
+                };
+                return Err(param(&format!("theorem.{owner}"), e));
+            }
             Err(TheoremError::Filter(e)) => {
                 return Err(invalid(
                     "theorem.filter",

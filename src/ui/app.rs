@@ -615,17 +615,15 @@ impl SamplescopeApp {
             .changed()
         {
             r.mode = if supersample {
-                ReconMode::Supersample { spp: 16 }
+                ReconMode::Supersample {
+                    spp: crate::scene::DEFAULT_SPP,
+                }
             } else {
                 ReconMode::Scattered
             };
         }
-        if let ReconMode::Supersample { spp } = &mut r.mode {
-            ui.add(
-                egui::Slider::new(spp, limits::SPP)
-                    .logarithmic(true)
-                    .text("spp"),
-            );
+        if let ReconMode::Supersample { .. } = r.mode {
+            params::setting_ui(ui, &mut r.mode, "spp", "spp");
         }
         ui.heading("Filter");
         params::filter_ui(ui, &mut self.scene.filter);

@@ -11,13 +11,12 @@ use samplescope::core::integration::Integrand;
 use samplescope::core::params::{ParamKind, ParamValue, Params};
 use samplescope::core::pattern::Pattern;
 use samplescope::core::signal::theorem::Gaussian1D;
-use samplescope::core::signal::theorem::{
-    Signal1D, EXTENT_RANGE, MAX_RATE, MAX_VDC_ROWS, MIN_RATE, PAIR_SCALE_RANGE, PAIR_SHIFT_RANGE,
-};
+use samplescope::core::signal::theorem::{Signal1D, EXTENT_RANGE, MAX_RATE, MIN_RATE};
 use samplescope::core::signal::Signal;
 use samplescope::scene::integration::limits as integration_limits;
 use samplescope::scene::{
-    limits, Column, IntegrationSettings, ReconMode, Scene, BUILTIN, MAX_COLUMNS,
+    limits, Column, IntegrationSettings, ReconMode, Scene, BUILTIN, DEFAULT_GRID, DEFAULT_SPP,
+    MAX_COLUMNS,
 };
 use samplescope::ui::SamplescopeApp;
 
@@ -44,6 +43,9 @@ fn at_limits<P: Params>(params: &P) -> Vec<P> {
             ParamKind::Int { min, max, .. } => vec![ParamValue::Int(*min), ParamValue::Int(*max)],
             ParamKind::Float { min, max, .. } => {
                 vec![ParamValue::Float(*min), ParamValue::Float(*max)]
+            }
+            ParamKind::Scale { min, max, .. } => {
+                [*min, *max, -*min, -*max].map(ParamValue::Float).to_vec()
             }
             ParamKind::Choice { options, .. } => {
                 options.iter().map(|o| ParamValue::Choice(o)).collect()
@@ -100,15 +102,14 @@ fn limit_scenes() -> Vec<(String, Scene)> {
         };
         push(format!("recon={recon:?}"), s);
     }
-    for spp in [*limits::SPP.start(), *limits::SPP.end()] {
+    let modes = [
+        ReconMode::Supersample { spp: DEFAULT_SPP },
+        ReconMode::Resample { grid: DEFAULT_GRID },
+    ];
+    for mode in modes.iter().flat_map(at_limits) {
         let mut s = base.clone();
-        s.recon.mode = ReconMode::Supersample { spp };
-        push(format!("recon.mode.spp={spp}"), s);
-    }
-    for grid in [*limits::GRID.start(), *limits::GRID.end()] {
-        let mut s = base.clone();
-        s.recon.mode = ReconMode::Resample { grid };
-        push(format!("recon.mode.grid={grid}"), s);
+        s.recon.mode = mode;
+        push(format!("recon.mode={mode:?}"), s);
     }
     {
         let mut s = base.clone();
@@ -197,21 +198,10 @@ fn limit_scenes() -> Vec<(String, Scene)> {
             s.theorem.rate = 1.0;
         }),
     );
-    for a in [
-        PAIR_SCALE_RANGE.0,
-        PAIR_SCALE_RANGE.1,
-        -PAIR_SCALE_RANGE.0,
-        -PAIR_SCALE_RANGE.1,
-    ] {
+    for pair in at_limits(&base.theorem.pair) {
         push(
-            format!("theorem.pair.scale={a}"),
-            th(&|s| s.theorem.pair.scale = a),
-        );
-    }
-    for shift in [PAIR_SHIFT_RANGE.0, PAIR_SHIFT_RANGE.1] {
-        push(
-            format!("theorem.pair.shift={shift}"),
-            th(&|s| s.theorem.pair.shift = shift),
+            format!("theorem.pair={pair:?}"),
+            th(&|s| s.theorem.pair = pair),
         );
     }
     for f in Integrand::all() {
@@ -260,11 +250,11 @@ fn limit_scenes() -> Vec<(String, Scene)> {
             s.shift = false
         }),
     );
-    for rows in [1, MAX_VDC_ROWS] {
-        push(
-            format!("theorem.vdc_rows={rows}"),
-            th(&|s| s.theorem.vdc_rows = rows),
-        );
+    // The theorem's own descriptors (rate and extent at their ends need each other: above).
+    for theorem in at_limits(&base.theorem) {
+        if theorem.validate().is_ok() {
+            push(format!("theorem={theorem:?}"), th(&|s| s.theorem = theorem));
+        }
     }
     out
 }

@@ -188,3 +188,51 @@ fn elementary_k_out_of_range_names_the_column_field() {
     assert!(err.contains("columns[0].elementary_k"), "{err}");
     assert!(err.contains("0..=24"), "{err}");
 }
+
+#[test]
+fn recon_mode_and_transform_pair_errors_come_from_their_descriptors() {
+    // Each line: the scene text, the field path and the message its descriptor gives, with
+    // the scene file's line:column.
+    for (text, want) in [
+        (
+            "(recon: (mode: supersample(spp: 0)))",
+            "recon.mode.spp = 0: must be an integer in 1..=1024",
+        ),
+        (
+            "(recon: (mode: supersample(spp: 1025)))",
+            "recon.mode.spp = 1025: must be an integer in 1..=1024",
+        ),
+        (
+            "(recon: (mode: resample(grid: 1)))",
+            "recon.mode.grid = 1: must be an integer in 2..=4096",
+        ),
+        (
+            "(theorem: (pair: (scale: -30.0)))",
+            "theorem.pair.scale = -30: must be a finite number with |scale| in [0.05, 20]",
+        ),
+        (
+            "(theorem: (pair: (scale: 0.0)))",
+            "theorem.pair.scale = 0: must be a finite number with |scale| in [0.05, 20]",
+        ),
+        (
+            "(theorem: (pair: (shift: 10.5)))",
+            "theorem.pair.shift = 10.5: must be a finite number in [-10, 10]",
+        ),
+        (
+            "(theorem: (vdc_rows: 0))",
+            "theorem.vdc_rows = 0: must be an integer in 1..=1024",
+        ),
+    ] {
+        let err = Scene::from_ron(text, "bad.ron").unwrap_err().to_string();
+        assert!(err.contains(want), "{text}: {err}");
+    }
+    // Their ends are allowed, negative scales included.
+    for text in [
+        "(recon: (mode: supersample(spp: 1024)))",
+        "(recon: (mode: resample(grid: 4096)))",
+        "(theorem: (pair: (scale: -0.05, shift: -10.0)))",
+        "(theorem: (pair: (scale: 20.0, shift: 10.0)))",
+    ] {
+        Scene::from_ron(text, "ok.ron").unwrap_or_else(|e| panic!("{text}: {e}"));
+    }
+}

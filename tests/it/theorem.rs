@@ -8,6 +8,7 @@ use samplescope::core::cancel::Cancel;
 use samplescope::core::filter::{
     BoxFilter, Cosc, Filter, LowPass, Mitchell, Sinc, Tent, Window, WindowedSinc,
 };
+use samplescope::core::params::ParamError;
 use samplescope::core::signal::theorem::{
     aliasing_errors, compute_view, merged_lines, samples, PairKind, Reconstructor, Signal1D,
     TheoremError, TheoremSettings, TransformPair, ERROR_BAND,
@@ -537,7 +538,8 @@ fn field_of(e: &TheoremError) -> String {
     match e {
         TheoremError::InvalidParam { field, .. } => field.to_string(),
         TheoremError::Filter(_) => "filter".into(),
-        TheoremError::Param(p) => format!("signal.{}", p.field().unwrap_or("?")),
+        TheoremError::Param(ParamError::Invalid { owner, field, .. }) => format!("{owner}.{field}"),
+        TheoremError::Param(p) => format!("? {p}"),
     }
 }
 

@@ -4,8 +4,7 @@
 use super::{Panel, PanelCx};
 use crate::core::filter::Filter;
 use crate::core::signal::theorem::{
-    AliasingErrors, PairKind, Reconstructor, TheoremSettings, TheoremView, MAX_VDC_ROWS,
-    PAIR_SCALE_RANGE, PAIR_SHIFT_RANGE,
+    AliasingErrors, PairKind, Reconstructor, TheoremSettings, TheoremView,
 };
 use crate::model::{palette, FigureKind};
 use crate::scene::panels::PanelKind;
@@ -163,27 +162,10 @@ fn controls_ui(ui: &mut egui::Ui, s: &mut TheoremSettings) {
                 ui.selectable_value(&mut s.pair.kind, k, k.name());
             }
         });
-    // |a| on a slider over its allowed range and the sign on a checkbox, so that a negative
-    // scale from a scene file is shown as it is, never clamped.
-    let mut magnitude = s.pair.scale.abs();
-    let mut negative = s.pair.scale < 0.0;
-    ui.horizontal(|ui| {
-        let a = ui.add(
-            egui::Slider::new(&mut magnitude, PAIR_SCALE_RANGE.0..=PAIR_SCALE_RANGE.1)
-                .logarithmic(true)
-                .text("scale |a|"),
-        );
-        let sign = ui.checkbox(&mut negative, "a < 0");
-        if a.changed() || sign.changed() {
-            s.pair.scale = if negative { -magnitude } else { magnitude };
-        }
-    });
-    ui.add(
-        egui::Slider::new(&mut s.pair.shift, PAIR_SHIFT_RANGE.0..=PAIR_SHIFT_RANGE.1)
-            .text("shift s"),
-    );
+    setting_ui(ui, &mut s.pair, "scale", "scale |a|");
+    setting_ui(ui, &mut s.pair, "shift", "shift s");
     ui.separator();
-    ui.add(egui::Slider::new(&mut s.vdc_rows, 1..=MAX_VDC_ROWS).text("van der Corput rows n"));
+    setting_ui(ui, s, "vdc_rows", "van der Corput rows n");
 }
 
 fn signal_plot_ui(ui: &mut egui::Ui, v: &TheoremView, width: f32, height: f32) {

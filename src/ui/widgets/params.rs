@@ -211,7 +211,8 @@ const SLIDER_SPAN: f64 = 10_000.0;
 
 /// One control for a parameter descriptor, spanning exactly the descriptor's range (so a
 /// valid value is never clamped): a slider (logarithmic over more than three decades) or, for
-/// very wide ranges, a drag value; a checkbox for booleans; a combo box for choices; one drag
+/// very wide ranges, a drag value; for a signed scale, a logarithmic slider of its magnitude
+/// and a checkbox for its sign; a checkbox for booleans; a combo box for choices; one drag
 /// value per entry of a list. Returns the new value when the user changed it.
 pub fn param_ui(
     ui: &mut egui::Ui,
@@ -274,6 +275,30 @@ pub fn param_ui(
                 .changed()
             };
             changed.then_some(ParamValue::Float(v))
+        }
+        (&ParamKind::Scale { min, max, .. }, ParamValue::Float(v)) => {
+            // |v| on a logarithmic slider over its allowed range (a scale is a ratio) and the
+            // sign on a checkbox, so that a negative value is shown as it is, never clamped.
+            let mut magnitude = v.abs();
+            let mut negative = v < 0.0;
+            let changed = ui
+                .horizontal(|ui| {
+                    let m = ui
+                        .add(
+                            egui::Slider::new(&mut magnitude, min..=max)
+                                .logarithmic(true)
+                                .text(label),
+                        )
+                        .on_hover_text(spec.doc);
+                    let sign = ui.checkbox(&mut negative, format!("{} < 0", spec.name));
+                    m.changed() || sign.changed()
+                })
+                .inner;
+            changed.then_some(ParamValue::Float(if negative {
+                -magnitude
+            } else {
+                magnitude
+            }))
         }
         (ParamKind::Choice { options, .. }, ParamValue::Choice(current)) => {
             let mut chosen = current;

@@ -1,8 +1,9 @@
 //! The lecture's transform pairs ([`TransformPair`]) and their plots.
 
 use super::signal1d::edge_value;
-use super::{check, TheoremError, CURVE_POINTS, PAIR_SCALE_RANGE, PAIR_SHIFT_RANGE};
+use super::{TheoremError, CURVE_POINTS, PAIR_SCALE_RANGE, PAIR_SHIFT_RANGE};
 use crate::core::filter::special::{cos_pi, sin_pi, sinc};
+use crate::core::params::{declare_params, Params};
 use rustfft::num_complex::Complex64;
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
@@ -47,9 +48,9 @@ impl PairKind {
 #[serde(default, deny_unknown_fields)]
 pub struct TransformPair {
     pub kind: PairKind,
-    /// The scale a ≠ 0 (|a| in [0.05, 20]).
+    /// The scale a ≠ 0 (|a| in [0.05, 20]); this and `shift` have descriptors (below).
     pub scale: f64,
-    /// The shift s (units).
+    /// The shift s (units), in [−10, 10].
     pub shift: f64,
 }
 
@@ -63,23 +64,18 @@ impl Default for TransformPair {
     }
 }
 
+declare_params! {
+    impl TransformPair = "pair" {
+        scale: scale(1.0, PAIR_SCALE_RANGE.0, PAIR_SCALE_RANGE.1, "scale a of p(x) = g(a(x − s)); a < 0 mirrors"),
+        shift: float(0.0, PAIR_SHIFT_RANGE.0, PAIR_SHIFT_RANGE.1, "shift s of p(x) = g(a(x − s)) (units)"),
+    }
+}
+
 impl TransformPair {
-    /// Checks |a| ∈ [0.05, 20] and s ∈ [−10, 10].
+    /// Checks |a| ∈ [0.05, 20] and s ∈ [−10, 10] (the descriptors); the error names
+    /// `pair.scale` or `pair.shift`.
     pub fn validate(&self) -> Result<(), TheoremError> {
-        let (lo, hi) = PAIR_SCALE_RANGE;
-        if !(self.scale.is_finite() && self.scale.abs() >= lo && self.scale.abs() <= hi) {
-            return Err(TheoremError::InvalidParam {
-                field: "pair.scale",
-                value: format!("{}", self.scale),
-                allowed: format!("a finite number with |a| in [{lo}, {hi}]"),
-            });
-        }
-        check(
-            "pair.shift",
-            self.shift,
-            PAIR_SHIFT_RANGE.0,
-            PAIR_SHIFT_RANGE.1,
-        )
+        Ok(self.check_params()?)
     }
 
     /// g(x) of the unscaled pair (0 for the shah: see [`TransformPair::impulses`]).
