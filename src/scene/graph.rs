@@ -10,18 +10,19 @@
 //! Integration(pattern, seed, integration settings)
 //! ```
 //!
-//! Every node kind has **one entry** in [`NODES`]: which other nodes and which scene fields it
-//! reads ([`NodeDef::inputs`]), and the job that computes it ([`NodeDef::run`]); which panels
-//! ask for it, and under which effects, is their row of the panel table
-//! ([`panels::PANELS`], asked through [`panels::asks_for`]). [`plan`] derives, per column, the
-//! nodes to compute (those a shown panel asks for plus their inputs, transitively), in
-//! dependency order, with their keys; the job of a node gets exactly the results of the inputs
-//! it declared. Adding a node is one table entry and one job function. A front that needs
-//! nodes no panel reads (`samplescope analyze`: the RDF, the net check) asks for them by name
-//! ([`plan_asking`]).
+//! Every node kind has **one entry** in [`NODES`], expanded from the node list
+//! (`compute::node_list!`): which other nodes and which scene fields it reads
+//! ([`NodeDef::inputs`]), the job that computes it ([`NodeDef::run`]) and its estimate
+//! ([`NodeDef::estimate`]), all three in its file in `compute/`; which panels ask for it, and
+//! under which effects, is their entry in the panel list ([`panels::PANELS`], asked through
+//! [`panels::asks_for`]). [`plan`] derives, per column, the nodes to compute (those a shown
+//! panel asks for plus their inputs, transitively), in dependency order, with their keys; the
+//! job of a node gets exactly the results of the inputs it declared. Adding a node is its file
+//! in `compute/` and its entry in the node list. A front that needs nodes no panel reads
+//! (`samplescope analyze`: the RDF, the net check) asks for them by name ([`plan_asking`]).
 //!
 //! **Keys.** A node's key is the BLAKE3 hash of its kind, its algorithm's version
-//! ([`NodeDef::version`]), the RON text of the scene fields it reads (every field and float bit; streamed into the hasher, never shared by default) and
+//! ([`NodeKind::version`]), the RON text of the scene fields it reads (every field and float bit; streamed into the hasher, never shared by default) and
 //! the keys of its input nodes; a change therefore invalidates exactly its dependents, two
 //! columns with equal inputs share one key (one evaluation), and keys are stable across runs,
 //! builds and platforms (the on-disk cache relies on it). A field that cannot be serialised
@@ -29,88 +30,12 @@
 
 use super::compute;
 use super::node::Output;
-use super::{panels, ReconMode, Scene};
-use serde::Serialize;
+use super::{panels, Scene};
+use crate::core::budget::Estimate;
 
 pub use super::node::{
-    JobCtx, KeyError, NodeError, NodeKey, NodeKind, NodeResult, NodeValue, Partial,
+    key_of, Inputs, JobCtx, KeyError, NodeError, NodeKey, NodeKind, NodeResult, NodeValue, Partial,
 };
-
-/// A `fmt::Write` that feeds BLAKE3 (RON text is streamed, never built in memory).
-struct HashWriter(blake3::Hasher);
-
-impl std::fmt::Write for HashWriter {
-    fn write_str(&mut self, s: &str) -> std::fmt::Result {
-        self.0.update(s.as_bytes());
-        Ok(())
-    }
-}
-
-/// A hasher fed with a node's kind and the RON text of its scene fields.
-fn fields_hasher(
-    kind: NodeKind,
-    fields: &(impl Serialize + ?Sized),
-) -> Result<blake3::Hasher, KeyError> {
-    let mut w = HashWriter(blake3::Hasher::new());
-    w.0.update(b"samplescope-node-v1\0");
-    w.0.update(kind.name().as_bytes());
-    w.0.update(b"\0");
-    w.0.update(&kind.def().version.to_le_bytes());
-    ron::ser::to_writer(&mut w, fields).map_err(|e| KeyError {
-        kind: kind.name(),
-        message: e.to_string(),
-    })?;
-    w.0.update(b"\0");
-    Ok(w.0)
-}
-
-fn finish_key(kind: NodeKind, mut h: blake3::Hasher, deps: &[NodeKey]) -> NodeKey {
-    for d in deps {
-        h.update(&d.hash);
-    }
-    NodeKey {
-        kind,
-        hash: *h.finalize().as_bytes(),
-    }
-}
-
-/// The key of a `kind` node whose scene fields are `fields` and whose input nodes have `deps`.
-pub fn key_of(
-    kind: NodeKind,
-    fields: &(impl Serialize + ?Sized),
-    deps: &[NodeKey],
-) -> Result<NodeKey, KeyError> {
-    Ok(finish_key(kind, fields_hasher(kind, fields)?, deps))
-}
-
-/// What a node reads: the nodes it takes results from and its scene fields (hashed).
-pub struct Inputs {
-    pub nodes: Vec<NodeKind>,
-    fields: Result<FieldsOf, KeyError>,
-}
-
-/// The scene fields of a node, already fed to the key's hasher.
-struct FieldsOf {
-    kind: NodeKind,
-    hasher: blake3::Hasher,
-}
-
-impl Inputs {
-    /// A `kind` node with input nodes `nodes` and scene fields `fields` (anything serialisable).
-    pub fn new(kind: NodeKind, nodes: &[NodeKind], fields: impl Serialize) -> Self {
-        Inputs {
-            nodes: nodes.to_vec(),
-            fields: fields_hasher(kind, &fields).map(|hasher| FieldsOf { kind, hasher }),
-        }
-    }
-
-    fn key(&self, deps: &[NodeKey]) -> Result<NodeKey, KeyError> {
-        match &self.fields {
-            Ok(f) => Ok(finish_key(f.kind, f.hasher.clone(), deps)),
-            Err(e) => Err(e.clone()),
-        }
-    }
-}
 
 impl NodeKind {
     /// This kind's entry in the node table.
@@ -119,207 +44,39 @@ impl NodeKind {
     }
 }
 
-/// One row of the node table.
+/// One row of the node table: what the node's file in `compute/` declares.
 pub struct NodeDef {
     pub kind: NodeKind,
     /// The input nodes and scene fields of this node in column `c` of the scene.
     pub inputs: fn(&Scene, usize) -> Inputs,
     /// The job: computes the value from the scene, the column and the declared inputs.
     pub run: fn(&JobCtx) -> Output,
+    /// What it computes in column `c` of the scene (the budget's estimate, `scene::cost`).
+    pub estimate: fn(&Scene, usize) -> Vec<Estimate>,
     /// Whether its result is worth keeping on disk across runs (slow, plain-image results).
     pub disk_cached: bool,
-    /// The version of the job's algorithm, part of the key: bump it whenever the job computes
-    /// different numbers for the same inputs, so that no cache (the disk cache above all)
-    /// serves results of the old algorithm.
-    pub version: u32,
 }
 
-/// The node table, indexed by `NodeKind as usize`.
-pub static NODES: [NodeDef; 14] = [
-    NodeDef {
-        kind: NodeKind::Points,
-        inputs: |s, c| {
-            let col = &s.columns[c];
-            match &col.points {
-                // Imported points are keyed by their bits, a pattern by its parameters, N, seed.
-                Some(p) => Inputs::new(NodeKind::Points, &[], ("imported", p.content_digest())),
-                None => Inputs::new(NodeKind::Points, &[], (&col.pattern, s.n, col.seed)),
-            }
-        },
-        run: compute::points,
-        disk_cached: false,
-        version: 1,
-    },
-    NodeDef {
-        kind: NodeKind::Psa,
-        inputs: |_, _| Inputs::new(NodeKind::Psa, &[NodeKind::Points], ()),
-        run: compute::psa,
-        disk_cached: false,
-        version: 1,
-    },
-    NodeDef {
-        kind: NodeKind::Statistics,
-        // PSA's statistics are part of the overlay's for N ≤ STATS_PSA_MAX_N (their node is
-        // then an input); the column's N is known before its points are.
-        inputs: |s, c| {
-            let n = s.columns[c].points.as_ref().map_or(s.n, |p| p.points.len());
-            let psa =
-                (crate::core::metrics::PSA_MIN_N..=crate::model::STATS_PSA_MAX_N).contains(&n);
-            let nodes: &[NodeKind] = if psa {
-                &[NodeKind::Points, NodeKind::Psa]
-            } else {
-                &[NodeKind::Points]
-            };
-            Inputs::new(NodeKind::Statistics, nodes, ())
-        },
-        run: compute::statistics,
-        disk_cached: false,
-        version: 1,
-    },
-    NodeDef {
-        kind: NodeKind::Spectrum,
-        // Realization 0 is the points node's set; realizations r > 0 are generated from the
-        // pattern (an imported file has one realization: K does not matter, see `import`).
-        inputs: |s, c| {
-            let col = &s.columns[c];
-            let sp = s.spectrum;
-            match &col.points {
-                Some(_) => Inputs::new(
-                    NodeKind::Spectrum,
-                    &[NodeKind::Points],
-                    (sp.size, sp.tolerance, sp.exact, sp.mask_dc),
-                ),
-                None => Inputs::new(
-                    NodeKind::Spectrum,
-                    &[NodeKind::Points],
-                    (&col.pattern, s.n, col.seed, sp),
-                ),
-            }
-        },
-        run: compute::spectrum,
-        disk_cached: false,
-        version: 1,
-    },
-    NodeDef {
-        kind: NodeKind::Samples,
-        inputs: |s, _| Inputs::new(NodeKind::Samples, &[NodeKind::Points], s.signal),
-        run: compute::samples,
-        disk_cached: false,
-        version: 1,
-    },
-    NodeDef {
-        kind: NodeKind::Reconstruction,
-        inputs: |s, c| {
-            let col = &s.columns[c];
-            let (f, w) = (&s.filter, s.recon.size);
-            match s.recon.mode {
-                ReconMode::Scattered => Inputs::new(
-                    NodeKind::Reconstruction,
-                    &[NodeKind::Points, NodeKind::Samples],
-                    (f, w),
-                ),
-                ReconMode::Resample { grid } => {
-                    Inputs::new(NodeKind::Reconstruction, &[], (grid, &s.signal, f, w))
-                }
-                ReconMode::Supersample { spp } => Inputs::new(
-                    NodeKind::Reconstruction,
-                    &[],
-                    (&col.pattern, col.seed, spp, &s.signal, f, w, col.pixels),
-                ),
-            }
-        },
-        run: compute::reconstruction,
-        disk_cached: false,
-        version: 1,
-    },
-    NodeDef {
-        kind: NodeKind::Reference,
-        inputs: |s, _| Inputs::new(NodeKind::Reference, &[], (&s.signal, s.recon.size)),
-        run: compute::reference,
-        disk_cached: true,
-        // 2: separable quadrature for the zone plate and the chirp.
-        version: 2,
-    },
-    NodeDef {
-        kind: NodeKind::Error,
-        inputs: |_, _| {
-            Inputs::new(
-                NodeKind::Error,
-                &[NodeKind::Reconstruction, NodeKind::Reference],
-                (),
-            )
-        },
-        run: compute::error,
-        disk_cached: false,
-        // 2: RMSE and PSNR over the f64 pixels (core's error report).
-        version: 2,
-    },
-    NodeDef {
-        kind: NodeKind::Response,
-        inputs: |s, _| Inputs::new(NodeKind::Response, &[], s.filter),
-        run: compute::response,
-        disk_cached: false,
-        version: 1,
-    },
-    NodeDef {
-        kind: NodeKind::Convergence,
-        inputs: |s, c| {
-            let col = &s.columns[c];
-            Inputs::new(
-                NodeKind::Convergence,
-                &[],
-                (&col.pattern, col.seed, &s.signal, &s.filter),
-            )
-        },
-        run: compute::convergence,
-        disk_cached: false,
-        version: 1,
-    },
-    NodeDef {
-        kind: NodeKind::Theorem,
-        // Column-independent: keyed by its settings alone (the theorem panel asks for it in
-        // column 0 only).
-        inputs: |s, _| Inputs::new(NodeKind::Theorem, &[], s.theorem),
-        run: compute::theorem,
-        disk_cached: false,
-        version: 1,
-    },
-    NodeDef {
-        kind: NodeKind::Integration,
-        // Every column's curve goes on the one plot (whose figure belongs to column 0).
-        inputs: |s, c| {
-            let col = &s.columns[c];
-            match &col.points {
-                // Imported points have one N: the job reports that instead of running.
-                Some(p) => {
-                    Inputs::new(NodeKind::Integration, &[], ("imported", p.content_digest()))
-                }
-                None => Inputs::new(
-                    NodeKind::Integration,
-                    &[],
-                    (&col.pattern, col.seed, &s.integration),
-                ),
-            }
-        },
-        run: compute::integration,
-        disk_cached: false,
-        version: 1,
-    },
-    NodeDef {
-        kind: NodeKind::Rdf,
-        inputs: |_, _| Inputs::new(NodeKind::Rdf, &[NodeKind::Points], ()),
-        run: compute::rdf,
-        disk_cached: false,
-        version: 1,
-    },
-    NodeDef {
-        kind: NodeKind::NetPrefixes,
-        inputs: |_, _| Inputs::new(NodeKind::NetPrefixes, &[NodeKind::Points], ()),
-        run: compute::net_prefixes,
-        disk_cached: false,
-        version: 1,
-    },
-];
+/// Expands the node list (`compute::node_list!`) into [`NODES`].
+macro_rules! node_table {
+    (
+        kinds: $kinds:tt
+        table: [$($kind:ident $file:ident $disk:literal;)*]
+    ) => {
+        /// The node table, indexed by `NodeKind as usize`.
+        pub static NODES: [NodeDef; NodeKind::ALL.len()] = [$(
+            NodeDef {
+                kind: NodeKind::$kind,
+                inputs: compute::$file::inputs,
+                run: compute::$file::run,
+                estimate: compute::$file::estimate,
+                disk_cached: $disk,
+            },
+        )*];
+    };
+}
+
+compute::node_list!(node_table);
 
 /// One node of a column's plan.
 #[derive(Debug, Clone, PartialEq)]

@@ -1,6 +1,7 @@
-//! The vocabulary of the compute graph: node kinds, keys, values, results and errors, and
-//! what a job sees. [`super::graph`] plans with it and [`super::compute`] fills it; neither
-//! imports the other's types from the other.
+//! The vocabulary of the compute graph: node kinds and values (expanded from the node list,
+//! `compute::node_list!`), keys and what they hash (`Inputs`), results, errors, and what a
+//! job sees. [`super::graph`] plans with it and the nodes' files in [`super::compute`] fill
+//! it; they never import the graph.
 
 use super::Scene;
 use crate::core::cancel::{Cancel, Cancelled};
@@ -12,78 +13,66 @@ use crate::core::recon::ReconError;
 use crate::core::signal::theorem::TheoremError;
 use crate::core::spectrum::SpectrumError;
 use crate::model::Accuracy;
-use crate::model::{
-    ConvergencePoint, ErrorData, ImageData, IntegrationData, NetPrefixes, PointsData, PsaData, Rdf,
-    ReconData, ReferenceData, ResponseData, SpectrumData, StatsData,
-};
 use serde::Serialize;
 use std::collections::HashMap;
 use std::fmt::Write as _;
 use std::sync::Arc;
 use std::time::Duration;
 
-/// The kinds of node, in an order where every node comes after its inputs.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize)]
-pub enum NodeKind {
-    Points,
-    /// PSA's statistics (an input of `Statistics` for the N its overlay shows them at).
-    Psa,
-    Statistics,
-    Spectrum,
-    Samples,
-    Reconstruction,
-    Reference,
-    Error,
-    Response,
-    Convergence,
-    /// The 1D sampling-theorem view (column-independent: computed for column 0 only).
-    Theorem,
-    /// The integration-error study of the column's pattern.
-    Integration,
-    /// PSA's radial distribution function (read by `analyze --rdf`, by no panel).
-    Rdf,
-    /// The (0,k,2)-net check of the power-of-two prefixes (read by `analyze`, by no panel).
-    NetPrefixes,
+/// Expands the node list (`compute::node_list!`) into [`NodeKind`] (with its order, names and
+/// versions) and [`NodeValue`] (with its heap bytes).
+macro_rules! vocabulary {
+    (
+        kinds: [$($(#[$doc:meta])* $kind:ident($ty:ty) $name:literal $version:literal ($bytes:expr);)*]
+        $($rest:tt)*
+    ) => {
+        /// The kinds of node, in an order where every node comes after its inputs.
+        #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize)]
+        pub enum NodeKind {
+            $($(#[$doc])* $kind,)*
+        }
+
+        impl NodeKind {
+            /// Every kind, in dependency (evaluation) order.
+            pub const ALL: [NodeKind; [$(NodeKind::$kind),*].len()] = [$(NodeKind::$kind),*];
+
+            /// Display name.
+            pub fn name(self) -> &'static str {
+                match self {
+                    $(NodeKind::$kind => $name,)*
+                }
+            }
+
+            /// The version of the node's algorithm, part of its key.
+            pub fn version(self) -> u32 {
+                match self {
+                    $(NodeKind::$kind => $version,)*
+                }
+            }
+        }
+
+        /// The value of a node.
+        #[derive(Debug, Clone)]
+        pub enum NodeValue {
+            $($(#[$doc])* $kind(Arc<$ty>),)*
+        }
+
+        impl NodeValue {
+            /// Approximate heap bytes held by the value (what the cache budget counts).
+            pub fn bytes(&self) -> usize {
+                match self {
+                    $(NodeValue::$kind(v) => bytes_of(v.as_ref(), $bytes),)*
+                }
+            }
+        }
+    };
 }
 
-impl NodeKind {
-    /// Every kind, in dependency (evaluation) order.
-    pub const ALL: [NodeKind; 14] = [
-        NodeKind::Points,
-        NodeKind::Psa,
-        NodeKind::Statistics,
-        NodeKind::Spectrum,
-        NodeKind::Samples,
-        NodeKind::Reconstruction,
-        NodeKind::Reference,
-        NodeKind::Error,
-        NodeKind::Response,
-        NodeKind::Convergence,
-        NodeKind::Theorem,
-        NodeKind::Integration,
-        NodeKind::Rdf,
-        NodeKind::NetPrefixes,
-    ];
+super::compute::node_list!(vocabulary);
 
-    /// Display name.
-    pub fn name(self) -> &'static str {
-        match self {
-            NodeKind::Points => "points",
-            NodeKind::Psa => "PSA statistics",
-            NodeKind::Statistics => "statistics",
-            NodeKind::Spectrum => "spectrum",
-            NodeKind::Samples => "samples",
-            NodeKind::Reconstruction => "reconstruction",
-            NodeKind::Reference => "reference",
-            NodeKind::Error => "error",
-            NodeKind::Response => "filter response",
-            NodeKind::Convergence => "convergence",
-            NodeKind::Theorem => "sampling theorem",
-            NodeKind::Integration => "integration error",
-            NodeKind::Rdf => "RDF",
-            NodeKind::NetPrefixes => "net prefixes",
-        }
-    }
+/// `bytes(v)`: the list's byte count of a node's data, its closure typed by `T`.
+fn bytes_of<T: ?Sized>(v: &T, bytes: impl Fn(&T) -> usize) -> usize {
+    bytes(v)
 }
 
 /// A node's identity: its kind and the BLAKE3 hash of everything it depends on.
@@ -212,30 +201,6 @@ impl From<Cancelled> for NodeError {
     }
 }
 
-/// The value of a node.
-#[derive(Debug, Clone)]
-pub enum NodeValue {
-    Points(Arc<PointsData>),
-    /// PSA's statistics, or why they were skipped.
-    Psa(Arc<PsaData>),
-    Statistics(Arc<StatsData>),
-    Spectrum(Arc<SpectrumData>),
-    Samples(Arc<Vec<f64>>),
-    Reconstruction(Arc<ReconData>),
-    Reference(Arc<ReferenceData>),
-    Error(Arc<ErrorData>),
-    Response(Arc<ResponseData>),
-    Convergence(Arc<Vec<ConvergencePoint>>),
-    /// The 1D sampling-theorem view.
-    Theorem(Arc<crate::core::signal::theorem::TheoremView>),
-    /// The integration-error study.
-    Integration(Arc<IntegrationData>),
-    /// PSA's radial distribution function.
-    Rdf(Arc<Rdf>),
-    /// The (0,k,2)-net check of the power-of-two prefixes.
-    NetPrefixes(Arc<NetPrefixes>),
-}
-
 /// The results of a node's declared inputs, by kind.
 pub type Deps = HashMap<NodeKind, Arc<NodeResult>>;
 
@@ -260,36 +225,78 @@ pub struct JobCtx<'a> {
     pub progress: &'a (dyn Fn(Partial) + Sync),
 }
 
-impl NodeValue {
-    /// Approximate heap bytes held by the value (what the cache budget counts).
-    pub fn bytes(&self) -> usize {
-        let img = |i: &ImageData| i.values.len() * 4;
-        let pairs = |v: &Vec<[f64; 2]>| v.len() * 16;
-        match self {
-            NodeValue::Points(p) => p.points.len() * 16 + p.gpu.len() * 8,
-            NodeValue::Psa(_) => std::mem::size_of::<PsaData>(),
-            NodeValue::Statistics(s) => {
-                std::mem::size_of::<StatsData>() + s.full.timings.len() * 32
-            }
-            NodeValue::Spectrum(s) => {
-                img(&s.image) + pairs(&s.raps) + pairs(&s.anisotropy) + s.power.power.len() * 8
-            }
-            NodeValue::Samples(v) => v.len() * 8,
-            // The f64 pixels and the zero-weight mask besides the display image.
-            NodeValue::Reconstruction(r) => img(&r.image) + r.exact.pixels.len() * 9,
-            NodeValue::Reference(r) => img(&r.image) + r.pixels.len() * 8,
-            NodeValue::Error(e) => img(&e.image),
-            NodeValue::Response(r) => img(&r.image) + pairs(&r.kernel) + pairs(&r.magnitude),
-            NodeValue::Convergence(c) => c.len() * std::mem::size_of::<ConvergencePoint>(),
-            NodeValue::Theorem(t) => t.approx_bytes(),
-            NodeValue::Integration(i) => {
-                i.study.rows.len() * std::mem::size_of::<crate::core::integration::StudyRow>()
-                    + i.thumbnail.values.len() * 4
-            }
-            NodeValue::Rdf(r) => r.values().len() * 8,
-            NodeValue::NetPrefixes(p) => {
-                p.prefixes.len() * std::mem::size_of::<crate::core::metrics::PrefixCheck>()
-            }
+/// A `fmt::Write` that feeds BLAKE3 (RON text is streamed, never built in memory).
+struct HashWriter(blake3::Hasher);
+
+impl std::fmt::Write for HashWriter {
+    fn write_str(&mut self, s: &str) -> std::fmt::Result {
+        self.0.update(s.as_bytes());
+        Ok(())
+    }
+}
+
+/// A hasher fed with a node's kind and the RON text of its scene fields.
+fn fields_hasher(
+    kind: NodeKind,
+    fields: &(impl Serialize + ?Sized),
+) -> Result<blake3::Hasher, KeyError> {
+    let mut w = HashWriter(blake3::Hasher::new());
+    w.0.update(b"samplescope-node-v1\0");
+    w.0.update(kind.name().as_bytes());
+    w.0.update(b"\0");
+    w.0.update(&kind.version().to_le_bytes());
+    ron::ser::to_writer(&mut w, fields).map_err(|e| KeyError {
+        kind: kind.name(),
+        message: e.to_string(),
+    })?;
+    w.0.update(b"\0");
+    Ok(w.0)
+}
+
+fn finish_key(kind: NodeKind, mut h: blake3::Hasher, deps: &[NodeKey]) -> NodeKey {
+    for d in deps {
+        h.update(&d.hash);
+    }
+    NodeKey {
+        kind,
+        hash: *h.finalize().as_bytes(),
+    }
+}
+
+/// The key of a `kind` node whose scene fields are `fields` and whose input nodes have `deps`.
+pub fn key_of(
+    kind: NodeKind,
+    fields: &(impl Serialize + ?Sized),
+    deps: &[NodeKey],
+) -> Result<NodeKey, KeyError> {
+    Ok(finish_key(kind, fields_hasher(kind, fields)?, deps))
+}
+
+/// What a node reads: the nodes it takes results from and its scene fields (hashed).
+pub struct Inputs {
+    pub nodes: Vec<NodeKind>,
+    fields: Result<FieldsOf, KeyError>,
+}
+
+/// The scene fields of a node, already fed to the key's hasher.
+struct FieldsOf {
+    kind: NodeKind,
+    hasher: blake3::Hasher,
+}
+
+impl Inputs {
+    /// A `kind` node with input nodes `nodes` and scene fields `fields` (anything serialisable).
+    pub fn new(kind: NodeKind, nodes: &[NodeKind], fields: impl Serialize) -> Self {
+        Inputs {
+            nodes: nodes.to_vec(),
+            fields: fields_hasher(kind, &fields).map(|hasher| FieldsOf { kind, hasher }),
+        }
+    }
+
+    pub(super) fn key(&self, deps: &[NodeKey]) -> Result<NodeKey, KeyError> {
+        match &self.fields {
+            Ok(f) => Ok(finish_key(f.kind, f.hasher.clone(), deps)),
+            Err(e) => Err(e.clone()),
         }
     }
 }

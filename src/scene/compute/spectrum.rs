@@ -1,0 +1,137 @@
+//! The spectrum node: the periodogram averaged over the realizations, its radial average and
+//! anisotropy.
+
+use super::prelude::*;
+
+/// The input nodes and scene fields of the node in column `c` of scene `s`.
+pub(in crate::scene) fn inputs(s: &Scene, c: usize) -> Inputs {
+    // Realization 0 is the points node's set; realizations r > 0 are generated from the
+    // pattern (an imported file has one realization: K does not matter, see `import`).
+    let col = &s.columns[c];
+    let sp = s.spectrum;
+    match &col.points {
+        Some(_) => Inputs::new(
+            NodeKind::Spectrum,
+            &[NodeKind::Points],
+            (sp.size, sp.tolerance, sp.exact, sp.mask_dc),
+        ),
+        None => Inputs::new(
+            NodeKind::Spectrum,
+            &[NodeKind::Points],
+            (&col.pattern, s.n, col.seed, sp),
+        ),
+    }
+}
+
+/// What the node computes in column `c` of scene `s` (the budget's estimate).
+pub(in crate::scene) fn estimate(s: &Scene, c: usize) -> Vec<Estimate> {
+    let col = &s.columns[c];
+    let (n, imported) = (n_of(s, c), col.points.is_some());
+    let req = s.spectrum.request(n, imported);
+    let generator = (!imported).then_some(&col.pattern);
+    vec![budget::spectrum(&req, n, generator)]
+}
+
+/// The job: the node's value from the scene, the column and the declared inputs.
+pub(in crate::scene) fn run(ctx: &JobCtx) -> Output {
+    use crate::core::spectrum::average_periodogram_progressive;
+    let (scene, cancel) = (ctx.scene, ctx.cancel);
+    let col = ctx.col();
+    let s = scene.spectrum;
+    // Realization 0 is the points node's set: the points the pattern panel shows.
+    let points0 = points_of(ctx.deps)?;
+    let imported = col.points.is_some();
+    let n_points = points0.points.len();
+    let asked_k = s.realizations;
+    let req = s.request(n_points, imported);
+    let first = crate::core::rng::derive_seed(col.seed, 0);
+    let (pattern, n) = (col.pattern, scene.n);
+    let mut on_progress = |p: Progress<'_, crate::core::spectrum::Spectrum>| {
+        if let Some(Ok(data)) = p.interim().map(|spec| spectrum_data(spec, Vec::new())) {
+            let accuracy = Accuracy::Realizations {
+                done: p.done,
+                of: p.total,
+            };
+            ctx.publish(
+                NodeValue::Spectrum(Arc::new(data)),
+                Some(accuracy),
+                p.steps(),
+            );
+        }
+    };
+    let (spec, report) = average_periodogram_progressive(
+        &req,
+        col.seed,
+        move |sd| {
+            if sd == first || imported {
+                Ok(points0.points.clone())
+            } else {
+                pattern.generate(n, sd)
+            }
+        },
+        cancel,
+        crate::core::spectrum::average::PARTIAL_INTERVAL,
+        &mut on_progress,
+    )?;
+    let stages = report
+        .stages
+        .iter()
+        .map(|(name, d)| (name.to_string(), ms(*d)))
+        .collect();
+    let data = spectrum_data(&spec, stages)?;
+    let accuracy = match (report.tolerance, report.error) {
+        (Some(tol), Some(e)) => Accuracy::SpectrumMeasured {
+            relative_l2: e.relative_l2,
+            asked: tol,
+            frequencies: e.frequencies,
+        },
+        (Some(tol), None) => Accuracy::SpectrumAsked { tolerance: tol },
+        (None, _) => Accuracy::ExactDft,
+    };
+    let accuracy = Some(if imported && asked_k > 1 {
+        Accuracy::ImportedOneRealization {
+            asked: asked_k,
+            spectrum: Box::new(accuracy),
+        }
+    } else {
+        accuracy
+    });
+    Ok((NodeValue::Spectrum(Arc::new(data)), accuracy))
+}
+
+/// The display data of a periodogram: log image, auto range, RAPS and anisotropy (a
+/// periodogram averaged elsewhere, `analyze`'s over files, is shown through it too).
+pub fn spectrum_data(
+    spec: &crate::core::spectrum::Spectrum,
+    stages: Vec<(String, f64)>,
+) -> Result<SpectrumData, crate::core::spectrum::SpectrumError> {
+    let m = spec.m;
+    let log = spec.to_display_image();
+    // The q-quantiles by selection (O(M²), the same elements a full sort would give).
+    let mut finite: Vec<f32> = log.iter().copied().filter(|v| v.is_finite()).collect();
+    let mut pick = |q: f64| {
+        if finite.is_empty() {
+            return 0.0;
+        }
+        let i = ((finite.len() - 1) as f64 * q) as usize;
+        *finite.select_nth_unstable_by(i, |a, b| a.total_cmp(b)).1
+    };
+    let (lo, hi) = (pick(0.02), pick(0.998));
+    let auto_range = (lo, hi.max(lo + 1e-3));
+    let bins = crate::core::spectrum::radial_average(spec)?;
+    let raps = bins.iter().map(|b| [b.radius, b.mean_power]).collect();
+    let anisotropy = bins
+        .iter()
+        .filter(|b| b.anisotropy_db.is_finite())
+        .map(|b| [b.radius, b.anisotropy_db])
+        .collect();
+    Ok(SpectrumData {
+        // Row iy = ky − k_min: flip so that ky points up.
+        image: ImageData::from_y_up(m, m, |i| log[i]),
+        auto_range,
+        raps,
+        anisotropy,
+        stages,
+        power: Arc::new(spec.clone()),
+    })
+}
