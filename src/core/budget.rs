@@ -3,7 +3,8 @@
 //! Each operation's estimate lives beside the operation, with its rates:
 //! `core/pattern/cost.rs` (one arm per pattern, no fallback: a pattern without a cost does not
 //! compile), `core/recon/cost.rs` (sampling, reconstruction, references, convergence; one arm
-//! per signal), `core/spectrum/cost.rs`, `core/metrics/cost.rs`, `core/filter/cost.rs` and
+//! per signal), `core/spectrum/cost.rs`, `core/metrics/cost.rs` (and `metrics/cube/cost.rs`, one arm
+//! per d-dimensional measure), `core/filter/cost.rs` and
 //! `core/signal/theorem/cost.rs`; they are re-exported here, where a command builds its plan.
 //! This file holds the shared rate helpers, the output costs (CSV, text, PNG) and the checking.
 //!
@@ -68,6 +69,7 @@ pub use crate::core::filter::cost::filter_metrics;
 pub use crate::core::metrics::cost::{
     net_prefixes, psa_statistics, rdf, statistics, PAIR_NS, PSA_TERM_NS,
 };
+pub use crate::core::metrics::cube::cost::cube_measure;
 pub use crate::core::pattern::cost::{
     best_candidate_candidates, bridson_tries, dart_darts, pattern, pattern_cube, BC_CACHE_POINTS,
     BC_CANDIDATE_NS, BRIDSON_TRY_NS, DART_NS,

@@ -1,5 +1,6 @@
 //! Geometry on the torus (the square of side `period` with opposite edges glued): the one
-//! toroidal distance ([`distance_squared`], [`distance`]) and displacement ([`delta`]) that every
+//! toroidal distance ([`distance_squared`], [`distance`]; its per-axis rule [`axis_gap`], and
+//! [`distance_squared_cube`] on the unit torus [0,1)^d) and displacement ([`delta`]) that every
 //! pattern, metric and tile uses, and the periodic Delaunay helpers shared by Lloyd
 //! relaxation's exact Voronoi cells (`pattern::optimize`) and PSA's bond-orientational order
 //! (`metrics::psa`): the points and
@@ -39,13 +40,37 @@ use robust::{incircle, orient2d, Coord};
 /// of their naive references, so their decisions agree bit for bit).
 #[inline(always)]
 pub fn distance_squared(a: DVec2, b: DVec2, period: f64) -> f64 {
-    let dx = (a.x - b.x).abs();
-    let dy = (a.y - b.y).abs();
-    // `if d < p − d` rather than f64::min: the same value for every non-NaN d, one instruction.
-    let (ex, ey) = (period - dx, period - dy);
-    let dx = if dx < ex { dx } else { ex };
-    let dy = if dy < ey { dy } else { ey };
+    let dx = axis_gap(a.x, b.x, period);
+    let dy = axis_gap(a.y, b.y, period);
     dx * dx + dy * dy
+}
+
+/// The toroidal gap along one axis of period `period`: min(|a − b|, period − |a − b|), for a, b
+/// in [0, period). The one per-coordinate rule of [`distance_squared`] and
+/// [`distance_squared_cube`].
+#[inline(always)]
+pub fn axis_gap(a: f64, b: f64, period: f64) -> f64 {
+    let d = (a - b).abs();
+    // `if d < p − d` rather than f64::min: the same value for every non-NaN d, one instruction.
+    let e = period - d;
+    if d < e {
+        d
+    } else {
+        e
+    }
+}
+
+/// Squared distance on the unit torus [0,1)^d between two points of d coordinates each
+/// (`a.len() == b.len()`): Σ_k [`axis_gap`]², summed in coordinate order, so that at d = 2 it
+/// is [`distance_squared`] bit for bit.
+#[inline(always)]
+pub fn distance_squared_cube(a: &[f64], b: &[f64]) -> f64 {
+    let mut s = 0.0;
+    for (&x, &y) in a.iter().zip(b) {
+        let g = axis_gap(x, y, 1.0);
+        s += g * g;
+    }
+    s
 }
 
 /// Distance on the torus of side `period` between any two points (each coordinate difference
@@ -265,6 +290,29 @@ mod tests {
             }
         }
         best
+    }
+
+    #[test]
+    fn the_cube_distance_is_the_2d_one_at_d_2_and_the_nearest_image_in_d() {
+        let mut rng = Rng::new(25);
+        for _ in 0..10_000 {
+            let a = DVec2::new(rng.next_f64(), rng.next_f64());
+            let b = DVec2::new(rng.next_f64(), rng.next_f64());
+            let cube = distance_squared_cube(&[a.x, a.y], &[b.x, b.y]);
+            assert_eq!(cube.to_bits(), distance_squared(a, b, 1.0).to_bits());
+        }
+        // d = 3: the nearest of the 27 images, each coordinate wrapped independently.
+        for _ in 0..2000 {
+            let a: Vec<f64> = (0..3).map(|_| rng.next_f64()).collect();
+            let b: Vec<f64> = (0..3).map(|_| rng.next_f64()).collect();
+            let mut best = f64::INFINITY;
+            for s in 0..27 {
+                let shift = [s % 3, s / 3 % 3, s / 9].map(|t| t as f64 - 1.0);
+                let d2: f64 = (0..3).map(|k| (a[k] - b[k] - shift[k]).powi(2)).sum();
+                best = best.min(d2);
+            }
+            assert!((distance_squared_cube(&a, &b) - best).abs() <= 1e-15);
+        }
     }
 
     #[test]

@@ -12,6 +12,7 @@ mod budget_cli;
 mod budget_memory;
 mod cli_points;
 mod converge;
+mod cube_discrepancy;
 mod cube_patterns;
 mod faults;
 mod figures;

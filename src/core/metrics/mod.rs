@@ -68,6 +68,7 @@
 //!   2013 (PSA's normalisation of distances).
 
 pub mod cost;
+pub mod cube;
 mod dd;
 pub mod l2;
 pub mod mindist;
@@ -152,6 +153,24 @@ pub enum MetricsError {
         nu_max: f64,
         max_bins: usize,
     },
+    /// More dimensions than the measure accepts.
+    #[error("{what} accepts at most {max} dimensions ({why}), got dims = {dims}")]
+    TooManyDims {
+        what: &'static str,
+        dims: usize,
+        max: usize,
+        why: &'static str,
+    },
+    /// Fewer dimensions than the measure needs.
+    #[error("{what} needs at least {min} dimensions, got dims = {dims}")]
+    TooFewDims {
+        what: &'static str,
+        dims: usize,
+        min: usize,
+    },
+    /// A d-dimensional point set is not in [0,1)^d, or a projection is not in it.
+    #[error(transparent)]
+    Cube(#[from] crate::core::cube::CubeError),
     /// The computation was cancelled.
     #[error("cancelled")]
     Cancelled,

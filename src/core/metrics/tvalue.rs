@@ -55,7 +55,7 @@ pub struct ElementaryViolation {
 }
 
 /// `⌊x·s⌋` exactly, for `0 ≤ x < 1` and `s` a positive integer below 2⁵³ (exact in f64).
-fn exact_floor_scaled(x: f64, s: f64, s_is_pow2: bool) -> u64 {
+pub(crate) fn exact_floor_scaled(x: f64, s: f64, s_is_pow2: bool) -> u64 {
     let q = x * s;
     let mut c = q.floor();
     if !s_is_pow2 && c > 0.0 {
