@@ -25,6 +25,7 @@ use samplescope::core::metrics::cube::{
     stratification_naive, CubeMeasure, Discrepancy, DISCREPANCY_MAX_DIMS, PROJECTION_MAX_DIMS,
 };
 use samplescope::core::metrics::{self, MetricsError};
+use samplescope::core::progress::{no_progress, Progress};
 use samplescope::core::rng::Rng;
 use serde_json::Value;
 use std::path::Path;
@@ -65,7 +66,7 @@ fn never() -> Cancel {
 }
 
 fn fast(points: &CubePoints, which: Discrepancy) -> f64 {
-    discrepancy(points, which, &never(), &mut |_, _| {}).unwrap()
+    discrepancy(points, which, &never(), &mut no_progress).unwrap()
 }
 
 #[test]
@@ -86,7 +87,7 @@ fn the_five_discrepancies_equal_scipy_and_the_50_digit_formula() {
             set["dims"].as_u64().unwrap(),
             "{name}"
         );
-        let all = discrepancies(&points, &never(), &mut |_, _| {}).unwrap();
+        let all = discrepancies(&points, &never(), &mut no_progress).unwrap();
         for which in Discrepancy::ALL {
             let v = &set["values"][method(which)];
             let exact: f64 = v["reference"].as_str().unwrap().parse().unwrap();
@@ -208,9 +209,9 @@ fn results_do_not_depend_on_the_number_of_threads() {
             .build()
             .unwrap();
         pool.install(|| {
-            let d = discrepancies(&p, &never(), &mut |_, _| {}).unwrap();
-            let m = min_distance_cube(&p, &never(), &mut |_, _| {}).unwrap();
-            let t = projection_table(&p, &never(), &mut |_, _| {}).unwrap();
+            let d = discrepancies(&p, &never(), &mut no_progress).unwrap();
+            let m = min_distance_cube(&p, &never(), &mut no_progress).unwrap();
+            let t = projection_table(&p, &never(), &mut no_progress).unwrap();
             (
                 Discrepancy::ALL.map(|w| d.get(w).to_bits()),
                 m.min_distance.to_bits(),
@@ -233,7 +234,7 @@ fn the_minimum_distance_is_the_naive_one_bit_for_bit() {
         (120, 32),
     ] {
         let p = random(n, d, (n * d) as u64);
-        let f = min_distance_cube(&p, &never(), &mut |_, _| {}).unwrap();
+        let f = min_distance_cube(&p, &never(), &mut no_progress).unwrap();
         let naive = min_distance_cube_naive(&p, &never()).unwrap();
         assert_eq!(
             f.min_distance.to_bits(),
@@ -254,10 +255,10 @@ fn the_minimum_distance_is_the_naive_one_bit_for_bit() {
         vec![0.5, 0.5, 0.5, 0.1, 0.2, 0.3, 0.1, 0.2, 0.3, 0.1, 0.2, 0.3],
     )
     .unwrap();
-    let m = min_distance_cube(&p, &never(), &mut |_, _| {}).unwrap();
+    let m = min_distance_cube(&p, &never(), &mut no_progress).unwrap();
     assert_eq!((m.min_distance, m.pair), (0.0, (1, 2)));
     let p = CubePoints::new(3, vec![0.0, 0.5, 0.5, 0.75, 0.5, 0.5, 0.375, 0.0, 0.0]).unwrap();
-    let m = min_distance_cube(&p, &never(), &mut |_, _| {}).unwrap();
+    let m = min_distance_cube(&p, &never(), &mut no_progress).unwrap();
     assert_eq!((m.min_distance, m.pair), (0.25, (0, 1)));
 }
 
@@ -313,7 +314,10 @@ fn the_projection_table_is_the_naive_one_worst_first() {
     }
     let p = CubePoints::new(4, coords).unwrap();
     let mut seen = Vec::new();
-    let t = projection_table(&p, &never(), &mut |done, of| seen.push((done, of))).unwrap();
+    let t = projection_table(&p, &never(), &mut |q: Progress<'_, ()>| {
+        seen.push((q.done, q.total))
+    })
+    .unwrap();
     assert_eq!(seen.last(), Some(&(6, 6)));
     assert_eq!(t.len(), 6);
     assert_eq!(t[0].dims, [0, 3]);
@@ -349,7 +353,7 @@ fn the_projection_table_is_the_naive_one_worst_first() {
         Some(metrics::t_value(&two, 2, &never()).unwrap().t)
     );
     // N not a power of two: no t-value, rows ordered by the discrepancy.
-    let t = projection_table(&random(100, 3, 2), &never(), &mut |_, _| {}).unwrap();
+    let t = projection_table(&random(100, 3, 2), &never(), &mut no_progress).unwrap();
     assert!(t.iter().all(|r| r.t_value.is_none()));
     assert!(t[0].l2_star_discrepancy >= t[1].l2_star_discrepancy);
 }
@@ -359,7 +363,7 @@ fn limits_cancellation_and_progress() {
     let c = never();
     let wide = random(2, DISCREPANCY_MAX_DIMS + 1, 1);
     assert_eq!(
-        discrepancy(&wide, Discrepancy::Centered, &c, &mut |_, _| {})
+        discrepancy(&wide, Discrepancy::Centered, &c, &mut no_progress)
             .unwrap_err()
             .to_string(),
         "the L2 discrepancies accepts at most 512 dimensions (their terms 3^-d and 2^d leave \
@@ -367,7 +371,7 @@ fn limits_cancellation_and_progress() {
     );
     let p33 = random(4, PROJECTION_MAX_DIMS + 1, 1);
     assert!(matches!(
-        projection_table(&p33, &c, &mut |_, _| {}),
+        projection_table(&p33, &c, &mut no_progress),
         Err(MetricsError::TooManyDims {
             dims: 33,
             max: 32,
@@ -380,17 +384,17 @@ fn limits_cancellation_and_progress() {
         .contains("dims = 33 > 32"));
     assert!(CubeMeasure::Projections.skipped(4, 32).is_none());
     assert!(matches!(
-        projection_table(&random(4, 1, 1), &c, &mut |_, _| {}),
+        projection_table(&random(4, 1, 1), &c, &mut no_progress),
         Err(MetricsError::TooFewDims { dims: 1, .. })
     ));
     assert!(matches!(
-        min_distance_cube(&random(1, 3, 1), &c, &mut |_, _| {}),
+        min_distance_cube(&random(1, 3, 1), &c, &mut no_progress),
         Err(MetricsError::TooFewPoints { n: 1, .. })
     ));
     // A point set made without checks (from 2D points) is checked by the measures.
     let outside = CubePoints::from_2d(&[glam::DVec2::new(0.5, 1.5)]);
     assert_eq!(
-        discrepancy(&outside, Discrepancy::L2Star, &c, &mut |_, _| {})
+        discrepancy(&outside, Discrepancy::L2Star, &c, &mut no_progress)
             .unwrap_err()
             .to_string(),
         "point 0, x1 = 1.5: must be a number in [0, 1)"
@@ -399,26 +403,26 @@ fn limits_cancellation_and_progress() {
     cancelled.cancel();
     let p = random(300, 4, 1);
     assert_eq!(
-        discrepancies(&p, &cancelled, &mut |_, _| {}),
+        discrepancies(&p, &cancelled, &mut no_progress),
         Err(MetricsError::Cancelled)
     );
     assert_eq!(
-        min_distance_cube(&p, &cancelled, &mut |_, _| {}),
+        min_distance_cube(&p, &cancelled, &mut no_progress),
         Err(MetricsError::Cancelled)
     );
     assert_eq!(
-        projection_table(&p, &cancelled, &mut |_, _| {}),
+        projection_table(&p, &cancelled, &mut no_progress),
         Err(MetricsError::Cancelled)
     );
     // Progress counts up to the total.
     let mut last = (0, 0);
-    discrepancies(&p, &c, &mut |d, of| {
-        assert!(d >= last.0 && d <= of);
-        last = (d, of);
+    discrepancies(&p, &c, &mut |q: Progress<'_, ()>| {
+        assert!(q.done >= last.0 && q.done <= q.total);
+        last = (q.done, q.total);
     })
     .unwrap();
     assert_eq!(last, (5 * 300 * 301 / 2, 5 * 300 * 301 / 2));
     let mut last = (0, 0);
-    min_distance_cube(&p, &c, &mut |d, of| last = (d, of)).unwrap();
+    min_distance_cube(&p, &c, &mut |q: Progress<'_, ()>| last = (q.done, q.total)).unwrap();
     assert_eq!(last, (300 * 299 / 2, 300 * 299 / 2));
 }

@@ -4,7 +4,9 @@
 use crate::recon_kernels::BoxKernel;
 use glam::DVec2;
 use samplescope::core::cancel::Cancel;
+use samplescope::core::cube::CubePoints;
 use samplescope::core::integration::{run_study, run_study_naive, Study, StudyRequest};
+use samplescope::core::metrics::cube;
 use samplescope::core::params::Params;
 use samplescope::core::pattern::{optimize, Pattern};
 use samplescope::core::progress::{no_progress, OnProgress};
@@ -241,7 +243,69 @@ fn table() -> Vec<Row> {
             periodogram(Duration::MAX),
             Some(false),
         ),
+        (
+            "cube discrepancy (centred)",
+            run(
+                |p: &mut OnProgress<'_, ()>| {
+                    cube::discrepancy(&cube_points(), cube::Discrepancy::Centered, &never, p)
+                        .unwrap()
+                },
+                |v| vec![v.to_bits()],
+                |_| Vec::new(),
+            ),
+            Some(false),
+        ),
+        (
+            "cube discrepancies",
+            run(
+                |p: &mut OnProgress<'_, ()>| {
+                    let d = cube::discrepancies(&cube_points(), &never, p).unwrap();
+                    cube::Discrepancy::ALL.map(|w| d.get(w).to_bits()).to_vec()
+                },
+                |v| v.clone(),
+                |_| Vec::new(),
+            ),
+            Some(false),
+        ),
+        (
+            "cube min distance",
+            run(
+                |p: &mut OnProgress<'_, ()>| {
+                    cube::min_distance_cube(&cube_points(), &never, p).unwrap()
+                },
+                |m| vec![m.min_distance.to_bits(), m.pair.0 as u64, m.pair.1 as u64],
+                |_| Vec::new(),
+            ),
+            Some(false),
+        ),
+        (
+            "cube projection table",
+            run(
+                |p: &mut OnProgress<'_, ()>| {
+                    cube::projection_table(&cube_points(), &never, p).unwrap()
+                },
+                |rows| {
+                    rows.iter()
+                        .flat_map(|r| {
+                            [
+                                r.dims[0] as u64,
+                                r.dims[1] as u64,
+                                r.l2_star_discrepancy.to_bits(),
+                            ]
+                        })
+                        .collect()
+                },
+                |_| Vec::new(),
+            ),
+            Some(false),
+        ),
     ]
+}
+
+/// 300 random points in 7 dimensions (the d-dimensional measures' rows).
+fn cube_points() -> CubePoints {
+    let mut r = Rng::new(77);
+    CubePoints::new(7, (0..300 * 7).map(|_| r.next_f64()).collect()).unwrap()
 }
 
 #[test]

@@ -54,6 +54,7 @@ use super::super::dd::Dd;
 use super::{check_cube, pair_batches};
 use crate::core::cube::CubePoints;
 use crate::core::metrics::{Cancel, MetricsError};
+use crate::core::progress::{OnProgress, Progress};
 use serde::Serialize;
 
 /// The most dimensions the discrepancies accept (see the module docs' "Range").
@@ -511,7 +512,7 @@ fn row_sum_of(which: Discrepancy, coords: &[f64], d: usize, i: usize) -> Dd {
 }
 
 /// One discrepancy, fast: half the pairs (h is symmetric), rows in parallel, double-double
-/// sums in row order (see the module docs). `progress(pairs done, pairs)` is called between
+/// sums in row order (see the module docs). progress (`done` of `total` pairs) is called between
 /// batches of rows. Agrees with [`discrepancy_reference`] to ~1e-14 relative for the test
 /// sets (the error bound is in the module docs); N = 4096 in 32 dimensions takes ~0.3 s per
 /// measure on 2 cores.
@@ -522,7 +523,7 @@ pub fn discrepancy(
     points: &CubePoints,
     which: Discrepancy,
     cancel: &Cancel,
-    progress: &mut dyn FnMut(usize, usize),
+    progress: &mut OnProgress<'_, ()>,
 ) -> Result<f64, MetricsError> {
     check(points)?;
     let (n, d) = (points.n(), points.dims());
@@ -542,28 +543,28 @@ pub fn discrepancy(
             s2 = s2.add(s);
         }
         done += rows.map(|i| n - i).sum::<usize>();
-        progress(done, total);
+        progress(Progress::at(done, total));
     }
     cancel.check()?;
     Ok(combine_dd(which, d, n, s1, s2))
 }
 
-/// All five discrepancies ([`discrepancy`] for each); `progress(pairs done, pairs)` counts
+/// All five discrepancies ([`discrepancy`] for each); progress (`done` of `total` pairs) counts
 /// the pairs of all five.
 ///
 /// Errors: as [`discrepancy`].
 pub fn discrepancies(
     points: &CubePoints,
     cancel: &Cancel,
-    progress: &mut dyn FnMut(usize, usize),
+    progress: &mut OnProgress<'_, ()>,
 ) -> Result<Discrepancies, MetricsError> {
     check(points)?;
     let n = points.n();
     let per = n * (n + 1) / 2;
     let mut values = [0.0; 5];
     for (m, which) in Discrepancy::ALL.into_iter().enumerate() {
-        values[m] = discrepancy(points, which, cancel, &mut |done, _| {
-            progress(m * per + done, 5 * per)
+        values[m] = discrepancy(points, which, cancel, &mut |p: Progress<'_, ()>| {
+            progress(Progress::at(m * per + p.done, 5 * per))
         })?;
     }
     let [l2_star, centered, wraparound, mixture, symmetric] = values;

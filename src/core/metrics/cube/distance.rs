@@ -11,6 +11,7 @@ use serde::Serialize;
 use super::{check_cube, pair_batches};
 use crate::core::cube::CubePoints;
 use crate::core::metrics::{Cancel, MetricsError};
+use crate::core::progress::{OnProgress, Progress};
 use crate::core::torus::{axis_gap, distance_squared_cube};
 
 /// [`min_distance_cube_naive`] accepts at most this many points.
@@ -103,7 +104,7 @@ fn row_best(coords: &[f64], d: usize, i: usize, shared: &AtomicU64) -> (f64, usi
 
 /// The minimum toroidal distance and its pair: every pair, rows in parallel on rayon's pool,
 /// a pair abandoned once its partial sum exceeds the best distance found so far (usually after
-/// a few coordinates), cancel checked and `progress(pairs done, pairs)` reported between
+/// a few coordinates), cancel checked and progress (`done` of `total` pairs) reported between
 /// batches of rows. The same result, bit for bit, as [`min_distance_cube_naive`], whatever the
 /// number of threads (the minimum over rows is taken in row order).
 ///
@@ -111,7 +112,7 @@ fn row_best(coords: &[f64], d: usize, i: usize, shared: &AtomicU64) -> (f64, usi
 pub fn min_distance_cube(
     points: &CubePoints,
     cancel: &Cancel,
-    progress: &mut dyn FnMut(usize, usize),
+    progress: &mut OnProgress<'_, ()>,
 ) -> Result<CubeMinDistance, MetricsError> {
     check_two(points)?;
     let (n, d) = (points.n(), points.dims());
@@ -133,7 +134,7 @@ pub fn min_distance_cube(
             }
         }
         done += rows.map(|i| n - 1 - i).sum::<usize>();
-        progress(done, total);
+        progress(Progress::at(done, total));
     }
     Ok(CubeMinDistance {
         min_distance: best.0.sqrt(),

@@ -13,7 +13,8 @@
 //!
 //! Each measure is one [`CubeMeasure`]: its estimate is an arm of [`cost::cube_measure`] and
 //! whether it applies to a set (and why not) is [`CubeMeasure::skipped`]. The long ones take
-//! a [`Cancel`] token and a `progress(done, of)` callback, called between batches.
+//! a [`Cancel`] token and report [`crate::core::progress::Progress`] (pairs done of all
+//! pairs, no partial result) between batches, by the rules of `core::progress`.
 
 pub mod cost;
 pub mod discrepancy;

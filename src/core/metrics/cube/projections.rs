@@ -27,6 +27,7 @@ use crate::core::metrics::{
     l2_star_discrepancy, l2_star_discrepancy_naive, min_distance, min_distance_naive, t_value,
     Cancel, MetricsError,
 };
+use crate::core::progress::{OnProgress, Progress};
 
 /// The most dimensions the projection table takes (496 pairs at 32).
 pub const PROJECTION_MAX_DIMS: usize = 32;
@@ -123,7 +124,7 @@ pub fn sort_worst_first(rows: &mut [ProjectionRow]) {
 const PAIR_BATCH: usize = 16;
 
 /// The projection table, worst first: the pairs in parallel (batches of [`PAIR_BATCH`],
-/// `progress(pairs done, pairs)` between them). N = 4096 in 32 dimensions (496 pairs): about
+/// progress (`done` of `total` pairs) between them). N = 4096 in 32 dimensions (496 pairs): about
 /// a second on 2 cores.
 ///
 /// Errors: empty or invalid points, fewer than 2 or more than [`PROJECTION_MAX_DIMS`]
@@ -131,7 +132,7 @@ const PAIR_BATCH: usize = 16;
 pub fn projection_table(
     points: &CubePoints,
     cancel: &Cancel,
-    progress: &mut dyn FnMut(usize, usize),
+    progress: &mut OnProgress<'_, ()>,
 ) -> Result<Vec<ProjectionRow>, MetricsError> {
     check(points)?;
     let all = pairs(points.dims());
@@ -143,7 +144,7 @@ pub fn projection_table(
             .map(|&ij| row(points, ij, false, cancel))
             .collect();
         rows.extend(done?);
-        progress(rows.len(), all.len());
+        progress(Progress::at(rows.len(), all.len()));
     }
     sort_worst_first(&mut rows);
     Ok(rows)
