@@ -87,6 +87,7 @@ fn request(pattern: Pattern) -> StudyRequest {
         seed: SEED,
         shift: true,
         randomize: false,
+        dims: 2,
     }
 }
 
@@ -181,6 +182,7 @@ fn evaluations(c: &mut Criterion) {
             seed: SEED,
             shift: true,
             randomize: false,
+            dims: 2,
         };
         let run = || run_study(&req, &never, &mut no_progress).expect("study");
         let mut group = c.benchmark_group(&bench_id);

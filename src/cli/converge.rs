@@ -1,6 +1,6 @@
 //! `samplescope converge`: the integration error of a pattern on an integrand with a known
-//! integral, as N grows: MSE, its standard error, variance and squared bias per N, and the
-//! log–log slope of the MSE.
+//! integral over [0,1]^D (`--dims`, 2 by default), as N grows: MSE, its standard error,
+//! variance and squared bias per N, and the log–log slope of the MSE.
 
 use super::session::{check_outputs, write_output, Session};
 use super::{from_args, outln, CliError};
@@ -20,8 +20,11 @@ pub struct ConvergeArgs {
     /// Pattern parameter `key=value`; repeatable.
     #[arg(long = "set", value_name = "KEY=VALUE")]
     pub set: Vec<String>,
-    /// Integrand on [0,1]² with an exact integral: disk (cx, cy, r), gaussian (cx, cy, sigma),
-    /// heaviside (px, py, theta in degrees), bilinear (x·y), cosines (a, b).
+    /// Integrand with an exact integral. On [0,1]²: disk (cx, cy, r), gaussian (cx, cy,
+    /// sigma), heaviside (px, py, theta in degrees), bilinear (x·y), cosines (a, b). On
+    /// [0,1]^D, Genz's families (a, u: one number for every dimension or a list of D):
+    /// genz-oscillatory, genz-product-peak, genz-corner-peak, genz-gaussian, genz-continuous,
+    /// genz-discontinuous.
     #[arg(long)]
     pub integrand: String,
     /// Integrand parameter `key=value`; repeatable (e.g. `--integrand-set r=0.2`).
@@ -29,8 +32,10 @@ pub struct ConvergeArgs {
     pub integrand_set: Vec<String>,
     /// A new random instance of the integrand's family per realization (disk centre in
     /// [0.2,0.8]², r in [0.1,0.4]; gaussian centre in [0,1]², σ in [0.05,0.3]; heaviside p in
-    /// [0,1]², θ in [0°,360°); cosines a, b in [0.5,8]). Not with --integrand-set (the drawn
-    /// instances replace the integrand's parameters) nor with bilinear (it has no family).
+    /// [0,1]², θ in [0°,360°); cosines a, b in [0.5,8]; Genz's families as Genz's test
+    /// package draws them: u uniform, a uniform normalised to Σa = h/D^e). Not with
+    /// --integrand-set (the drawn instances replace the integrand's parameters) nor with
+    /// bilinear (it has no family).
     #[arg(long, conflicts_with = "integrand_set")]
     pub randomize: bool,
     /// Sample counts, comma-separated (e.g. 16,64,256,1024), each in 1..=1048576, at most 64.
@@ -39,6 +44,10 @@ pub struct ConvergeArgs {
     /// Realizations per N, in 1..=4096.
     #[arg(long, value_name = "R")]
     pub realizations: String,
+    /// Dimension D of the cube integrated over, in 1..=1024 [default: 2]. D ≠ 2 needs a Genz
+    /// integrand and a pattern with a d-dimensional form (`points --list`), and N·D ≤ 2^25.
+    #[arg(long, value_name = "D")]
+    pub dims: Option<String>,
     /// Seed of the realizations' streams [default: 0].
     #[arg(long)]
     pub seed: Option<u64>,
@@ -143,6 +152,16 @@ pub fn run(args: &ConvergeArgs, session: &Session) -> Result<(), CliError> {
             pattern.name()
         )));
     }
+    let dims = match &args.dims {
+        None => 2,
+        Some(text) => text.trim().parse::<usize>().map_err(|_| {
+            CliError::Usage(format!(
+                "--dims {}: must be an integer in 1..={}",
+                samplescope::core::params::fmt_text(text),
+                samplescope::core::cube::MAX_DIMS
+            ))
+        })?,
+    };
     let req = StudyRequest {
         pattern,
         integrand,
@@ -151,6 +170,7 @@ pub fn run(args: &ConvergeArgs, session: &Session) -> Result<(), CliError> {
         seed: args.seed.unwrap_or(0),
         shift: !args.no_shift,
         randomize: args.randomize,
+        dims,
     };
     check_request(&req).map_err(study_error)?;
     let mut plan = estimate(&req);
@@ -205,6 +225,7 @@ pub fn run(args: &ConvergeArgs, session: &Session) -> Result<(), CliError> {
                 "integrand": req.integrand.name(),
                 "integrand_params": params_json(&req.integrand),
                 "randomize": req.randomize,
+                "dims": req.dims,
                 "shift": req.applies_shift(),
                 "seed": req.seed,
                 "realizations": req.realizations,
@@ -230,11 +251,21 @@ pub fn run(args: &ConvergeArgs, session: &Session) -> Result<(), CliError> {
         "none (every realization the same)"
     };
     outln!(
-        "{} on {}{}: reference {:.12}, {} realizations, seed {}, shift: {shift}",
+        "{} on {}{}{}: reference {}, {} realizations, seed {}, shift: {shift}",
         req.pattern.name(),
         req.integrand.name(),
+        if req.dims == 2 {
+            String::new()
+        } else {
+            format!(" in {} dimensions", req.dims)
+        },
         if req.randomize { " (randomized)" } else { "" },
-        study.reference,
+        // Genz's integrals span many decades (Π aᵢ² in 32 dimensions): in scientific form.
+        if req.integrand.is_planar() {
+            format!("{:.12}", study.reference)
+        } else {
+            format!("{:.12e}", study.reference)
+        },
         req.realizations,
         req.seed
     )?;

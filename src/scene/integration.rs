@@ -69,6 +69,7 @@ impl IntegrationSettings {
             seed,
             shift: self.shift,
             randomize: self.randomize,
+            dims: 2,
         }
     }
 

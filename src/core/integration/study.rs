@@ -1,5 +1,14 @@
 //! The integration-error study: for each N of a list, the mean squared error of the estimate
-//! (1/N)·Σ f(xᵢ) of I = ∫∫ f over many realizations of a pattern, and the log–log slope.
+//! (1/N)·Σ f(xᵢ) of I = ∫ f over [0,1]^D (D = 2 by default) over many realizations of a
+//! pattern, and the log–log slope.
+//!
+//! # Dimensions
+//!
+//! [`StudyRequest::dims`] is D, in 1..=[`MAX_DIMS`]. D = 2 is the 2D study: every pattern,
+//! every integrand, the points of [`Pattern::generate_with`]. Other D need a d-dimensional
+//! integrand (Genz's families, [`super::genz`]) and a pattern with a d-dimensional form
+//! ([`Pattern::max_dims`] ≥ D, points from [`Pattern::generate_cube`]), with N·D at most
+//! [`MAX_COORDS`]. Points are held as [`CubePoints`] in every D (D = 2: x, y).
 //!
 //! # Realizations
 //!
@@ -7,11 +16,11 @@
 //! - a pattern whose points depend on the seed ([`Pattern::is_random`]) generates with seed s_r,
 //!   the same seed for every N (so a progressive pattern's N-point set is a prefix of its
 //!   larger ones);
-//! - a deterministic pattern is moved by a Cranley–Patterson rotation: u = (u₁, u₂), the first
-//!   two [`Rng::next_f64`] of `Rng::new(s_r)`, is added to every point modulo 1 — unless
+//! - a deterministic pattern is moved by a Cranley–Patterson rotation: u = (u₁, …, u_D), the
+//!   first D [`Rng::next_f64`] of `Rng::new(s_r)`, is added to every point modulo 1 — unless
 //!   [`StudyRequest::shift`] is false, when every realization is the same point set;
 //! - with [`StudyRequest::randomize`], f itself is a new random instance of its family,
-//!   [`Integrand::randomized`] with `Rng::new(derive_seed(s_r, INTEGRAND_STREAM))`, and the
+//!   [`Integrand::randomized_in`] D with `Rng::new(derive_seed(s_r, INTEGRAND_STREAM))`, and the
 //!   error is measured against that instance's exact integral.
 //!
 //! # Statistics per N
@@ -42,9 +51,11 @@
 //! realization order, so the results are the same bits whatever the number of threads, and the
 //! same as [`run_study_naive`], the plain serial loop over realizations and N.
 
+use super::genz::Genz;
 use super::integrands::{Integrand, Prepared};
 use crate::core::budget::{self, Estimate, Unit};
 use crate::core::cancel::Cancel;
+use crate::core::cube::{CubePoints, MAX_COORDS, MAX_DIMS};
 use crate::core::params::{ParamError, Params};
 use crate::core::pattern::{Pattern, PatternError};
 use crate::core::progress::{OnProgress, Progress};
@@ -84,6 +95,8 @@ pub struct StudyRequest {
     pub shift: bool,
     /// A new random instance of the integrand's family per realization.
     pub randomize: bool,
+    /// The dimension D of the cube integrated over, in 1..=[`MAX_DIMS`] (module docs).
+    pub dims: usize,
 }
 
 impl Default for StudyRequest {
@@ -97,6 +110,7 @@ impl Default for StudyRequest {
             seed: 0,
             shift: true,
             randomize: false,
+            dims: 2,
         }
     }
 }
@@ -183,6 +197,29 @@ pub enum StudyError {
     /// The pattern cannot make this N.
     #[error("--n {n}: {source}")]
     Pattern { n: usize, source: PatternError },
+    /// The dimension is out of range.
+    #[error("--dims {dims}: must be an integer in 1..={MAX_DIMS}")]
+    Dims { dims: usize },
+    /// A 2D integrand asked for in another dimension.
+    #[error(
+        "--dims {dims}: {integrand} is defined on [0,1]² only (--dims 2); the integrands \
+         defined in any dimension are {}",
+        genz_names()
+    )]
+    PlanarIntegrand {
+        integrand: &'static str,
+        dims: usize,
+    },
+    /// The pattern has no form in this dimension.
+    #[error("--dims {dims}: {message}")]
+    PatternDims { dims: usize, message: String },
+    /// N points of D coordinates are more than a point set holds.
+    #[error(
+        "--n {n} with --dims {dims}: N · D must be at most {MAX_COORDS} (N ≤ {} in {dims} \
+         dimensions)",
+        MAX_COORDS / dims
+    )]
+    TooManyCoords { n: usize, dims: usize },
     /// The study was cancelled.
     #[error("cancelled")]
     Cancelled,
@@ -194,7 +231,18 @@ impl From<crate::core::cancel::Cancelled> for StudyError {
     }
 }
 
-/// Checks the limits of a request (the sizes first, then the parameter sets).
+/// The integrands defined in any dimension, comma-separated.
+fn genz_names() -> String {
+    Integrand::all()
+        .iter()
+        .filter(|f| !f.is_planar())
+        .map(|f| f.name())
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+/// Checks the limits of a request (the sizes first, then the dimension, then the parameter
+/// sets).
 pub fn check_request(req: &StudyRequest) -> Result<(), StudyError> {
     if req.ns.is_empty() {
         return Err(StudyError::NoN);
@@ -212,15 +260,89 @@ pub fn check_request(req: &StudyRequest) -> Result<(), StudyError> {
             value: req.realizations,
         });
     }
+    let dims = req.dims;
+    if !(1..=MAX_DIMS).contains(&dims) {
+        return Err(StudyError::Dims { dims });
+    }
+    if dims != 2 && req.integrand.is_planar() {
+        return Err(StudyError::PlanarIntegrand {
+            integrand: req.integrand.name(),
+            dims,
+        });
+    }
     req.pattern.check_params()?;
     req.integrand.check_params()?;
+    // The lists of a Genz integrand have 1 or D entries (a random instance draws D).
+    if !req.randomize {
+        if let Some(g) = req.integrand.in_dims(dims) {
+            g?;
+        }
+    }
+    if dims != 2 {
+        if let Some(message) = cube_form(&req.pattern, dims) {
+            return Err(StudyError::PatternDims { dims, message });
+        }
+    }
     // Every N the pattern would refuse is refused before any estimate or work.
     for &n in &req.ns {
+        if n.saturating_mul(dims) > MAX_COORDS {
+            return Err(StudyError::TooManyCoords { n, dims });
+        }
         req.pattern
             .validate(n)
             .map_err(|source| StudyError::Pattern { n, source })?;
     }
     Ok(())
+}
+
+/// Why the pattern has no form in `dims` ≠ 2 dimensions (`None` when it has one).
+fn cube_form(pattern: &Pattern, dims: usize) -> Option<String> {
+    if pattern_max_dims(pattern) >= dims {
+        return None;
+    }
+    let with: Vec<&str> = Pattern::all()
+        .iter()
+        .filter(|p| pattern_max_dims(p) > 2)
+        .map(|p| p.name())
+        .collect();
+    Some(format!(
+        "{} is defined in 2 dimensions only; the patterns defined in d dimensions are {}",
+        pattern.name(),
+        with.join(", ")
+    ))
+}
+
+/// The most dimensions of the pattern's d-dimensional form (2: none).
+fn pattern_max_dims(pattern: &Pattern) -> usize {
+    match pattern {
+        Pattern::Random(_) => MAX_DIMS,
+        _ => 2,
+    }
+}
+
+/// `n` points of the pattern in `dims` dimensions (D = 2: its 2D points), or the error naming
+/// `n`.
+fn points(
+    pattern: &Pattern,
+    n: usize,
+    dims: usize,
+    seed: u64,
+    cancel: &Cancel,
+) -> Result<CubePoints, StudyError> {
+    if dims == 2 {
+        return generate(pattern, n, seed, cancel).map(|p| CubePoints::from_2d(&p));
+    }
+    match pattern {
+        Pattern::Random(_) => {
+            let mut rng = Rng::new(seed);
+            let coords = (0..n * dims).map(|_| rng.next_f64()).collect();
+            CubePoints::new(dims, coords).map_err(|_| StudyError::TooManyCoords { n, dims })
+        }
+        _ => Err(StudyError::PatternDims {
+            dims,
+            message: cube_form(pattern, dims).unwrap_or_default(),
+        }),
+    }
 }
 
 /// `n` points of the pattern, or the error naming `n`.
@@ -251,30 +373,45 @@ fn wrap(v: f64) -> f64 {
     }
 }
 
-#[inline]
-fn rotate(p: DVec2, shift: Option<DVec2>) -> DVec2 {
-    match shift {
-        Some(u) => DVec2::new(wrap(p.x + u.x), wrap(p.y + u.y)),
-        None => p,
-    }
-}
-
-/// Realization r's integrand instance, rotation and stream.
-fn instance(req: &StudyRequest, r: usize) -> (Integrand, Option<DVec2>, u64) {
+/// Realization r's integrand instance, rotation (D coordinates) and stream.
+fn instance(req: &StudyRequest, r: usize) -> (Integrand, Option<Vec<f64>>, u64) {
     let stream = derive_seed(req.seed, r as u64);
     let integrand = if req.randomize {
-        req.integrand
-            .randomized(&mut Rng::new(derive_seed(stream, INTEGRAND_STREAM)))
+        req.integrand.randomized_in(
+            req.dims,
+            &mut Rng::new(derive_seed(stream, INTEGRAND_STREAM)),
+        )
     } else {
         req.integrand
     };
     let shift = req.applies_shift().then(|| {
         let mut rng = Rng::new(stream);
-        let x = rng.next_f64();
-        let y = rng.next_f64();
-        DVec2::new(x, y)
+        (0..req.dims).map(|_| rng.next_f64()).collect()
     });
     (integrand, shift, stream)
+}
+
+/// An integrand ready for the hot loop: a 2D one ([`Prepared`], D = 2) or a d-dimensional
+/// one ([`Genz`], any D).
+enum Evaluator {
+    Plane(Prepared),
+    Cube(Genz),
+}
+
+impl Evaluator {
+    fn new(integrand: &Integrand, dims: usize) -> Result<Evaluator, StudyError> {
+        Ok(match integrand.in_dims(dims) {
+            Some(g) => Evaluator::Cube(g?),
+            None => Evaluator::Plane(Prepared::new(integrand)?),
+        })
+    }
+
+    fn integral(&self, integrand: &Integrand) -> f64 {
+        match self {
+            Evaluator::Plane(_) => integrand.integral(),
+            Evaluator::Cube(g) => g.integral(),
+        }
+    }
 }
 
 /// Per N, the statistics of the errors `errors[r·K + k]` (R rows of K values, realization
@@ -353,7 +490,7 @@ fn finish(
     let reference = if req.randomize {
         references.iter().sum::<f64>() / references.len() as f64
     } else {
-        req.integrand.integral()
+        references.first().copied().unwrap_or(f64::NAN)
     };
     timings.statistics = t.elapsed();
     timings.total = start.elapsed();
@@ -478,19 +615,34 @@ pub fn run_study_naive(
     for r in 0..req.realizations {
         cancel.check()?;
         let (integrand, shift, stream) = instance(req, r);
-        let reference = integrand.integral();
+        // A Genz integrand made ready once per realization; a 2D one evaluated by
+        // `Integrand::eval` point by point.
+        let genz = integrand.in_dims(req.dims).transpose()?;
+        let reference = genz
+            .as_ref()
+            .map_or_else(|| integrand.integral(), Genz::integral);
         references.push(reference);
+        let mut x = vec![0.0; req.dims];
         for &n in &req.ns {
             let t = Instant::now();
-            let points = generate(&req.pattern, n, stream, cancel)?;
+            let points = points(&req.pattern, n, req.dims, stream, cancel)?;
             timings.points += t.elapsed();
             let t = Instant::now();
             let mut sum = 0.0;
-            for (i, p) in points.iter().enumerate() {
+            for (i, p) in points.rows().enumerate() {
                 if i % CHECK_EVERY == 0 {
                     cancel.check()?;
                 }
-                sum += integrand.eval(rotate(*p, shift));
+                for (j, xj) in x.iter_mut().enumerate() {
+                    *xj = match &shift {
+                        Some(u) => wrap(p[j] + u[j]),
+                        None => p[j],
+                    };
+                }
+                sum += match &genz {
+                    Some(g) => g.eval(&x),
+                    None => integrand.eval(DVec2::new(x[0], x[1])),
+                };
             }
             errors.push(sum / n as f64 - reference);
             timings.evaluation += t.elapsed();
@@ -518,9 +670,9 @@ struct TaskOut {
 enum Cache {
     None,
     /// The largest N of a progressive pattern.
-    Prefix(Vec<DVec2>),
+    Prefix(CubePoints),
     /// One set per N (index k).
-    PerN(Vec<Vec<DVec2>>),
+    PerN(Vec<CubePoints>),
 }
 
 struct Plan<'a> {
@@ -552,7 +704,7 @@ impl<'a> Plan<'a> {
         } else {
             self.req.ns.iter().sum()
         };
-        !self.req.pattern.is_random() && points.saturating_mul(16) <= CACHE_BYTES
+        !self.req.pattern.is_random() && points.saturating_mul(8 * self.req.dims) <= CACHE_BYTES
     }
 
     fn cache(&self, cancel: &Cancel) -> Result<Cache, StudyError> {
@@ -562,17 +714,17 @@ impl<'a> Plan<'a> {
         let req = self.req;
         let seed = derive_seed(req.seed, 0);
         if self.progressive {
-            match generate(&req.pattern, self.nmax, seed, cancel) {
+            match points(&req.pattern, self.nmax, req.dims, seed, cancel) {
                 Ok(points) => return Ok(Cache::Prefix(points)),
                 Err(StudyError::Cancelled) => return Err(StudyError::Cancelled),
                 // The largest N failed: find the first N that fails, in request order.
                 Err(_) => {}
             }
         }
-        let sets: Vec<Result<Vec<DVec2>, StudyError>> = req
+        let sets: Vec<Result<CubePoints, StudyError>> = req
             .ns
             .par_iter()
-            .map(|&n| generate(&req.pattern, n, seed, cancel))
+            .map(|&n| points(&req.pattern, n, req.dims, seed, cancel))
             .collect();
         Ok(Cache::PerN(sets.into_iter().collect::<Result<_, _>>()?))
     }
@@ -580,10 +732,11 @@ impl<'a> Plan<'a> {
     fn run(&self, task: &Task, cache: &Cache, cancel: &Cancel) -> Result<TaskOut, StudyError> {
         let req = self.req;
         let (integrand, shift, stream) = instance(req, task.r);
-        let f = Prepared::new(&integrand)?;
+        let f = Evaluator::new(&integrand, req.dims)?;
+        let shift = shift.as_deref();
         let mut out = TaskOut {
             estimates: Vec::new(),
-            reference: integrand.integral(),
+            reference: f.integral(&integrand),
             points: Duration::ZERO,
             evaluation: Duration::ZERO,
         };
@@ -594,7 +747,7 @@ impl<'a> Plan<'a> {
                 out.estimates.push((k, m[0]));
             }
             (Some(k), _) => {
-                let points = generate(&req.pattern, req.ns[k], stream, cancel)?;
+                let points = points(&req.pattern, req.ns[k], req.dims, stream, cancel)?;
                 out.points = t.elapsed();
                 let t = Instant::now();
                 let m = prefix_means(&f, &points, shift, &[req.ns[k]], cancel)?;
@@ -610,7 +763,7 @@ impl<'a> Plan<'a> {
                 }
             }
             (None, Cache::None) => {
-                match generate(&req.pattern, self.nmax, stream, cancel) {
+                match points(&req.pattern, self.nmax, req.dims, stream, cancel) {
                     Ok(points) => {
                         out.points = t.elapsed();
                         let t = Instant::now();
@@ -623,7 +776,7 @@ impl<'a> Plan<'a> {
                         // The largest N failed: one set per N, so the error names the first
                         // N that fails (in request order).
                         for (k, &n) in req.ns.iter().enumerate() {
-                            let points = generate(&req.pattern, n, stream, cancel)?;
+                            let points = points(&req.pattern, n, req.dims, stream, cancel)?;
                             let m = prefix_means(&f, &points, shift, &[n], cancel)?;
                             out.estimates.push((k, m[0]));
                         }
@@ -638,9 +791,9 @@ impl<'a> Plan<'a> {
     /// Every N read off the prefix sums of one progressive set.
     fn all_n(
         &self,
-        f: &Prepared,
-        points: &[DVec2],
-        shift: Option<DVec2>,
+        f: &Evaluator,
+        points: &CubePoints,
+        shift: Option<&[f64]>,
         cancel: &Cancel,
         out: &mut TaskOut,
     ) -> Result<(), StudyError> {
@@ -654,19 +807,42 @@ impl<'a> Plan<'a> {
 /// The means (1/m)·Σ_{i<m} f(xᵢ) at every mark m (marks increasing, each ≤ points.len()), the
 /// sum accumulated in point order from 0 — the same additions as the plain loop to m.
 fn prefix_means(
-    f: &Prepared,
-    points: &[DVec2],
-    shift: Option<DVec2>,
+    f: &Evaluator,
+    points: &CubePoints,
+    shift: Option<&[f64]>,
     marks: &[usize],
     cancel: &Cancel,
+) -> Result<Vec<f64>, StudyError> {
+    match f {
+        Evaluator::Plane(g) => match shift.map(|u| DVec2::new(u[0], u[1])) {
+            Some(u) => means(points, marks, cancel, |p| {
+                g.eval(DVec2::new(wrap(p[0] + u.x), wrap(p[1] + u.y)))
+            }),
+            None => means(points, marks, cancel, |p| g.eval(DVec2::new(p[0], p[1]))),
+        },
+        Evaluator::Cube(g) => means(points, marks, cancel, |p| g.eval_shifted(p, shift)),
+    }
+}
+
+/// [`prefix_means`] of `f` over the points' rows.
+#[inline]
+fn means(
+    points: &CubePoints,
+    marks: &[usize],
+    cancel: &Cancel,
+    f: impl Fn(&[f64]) -> f64,
 ) -> Result<Vec<f64>, StudyError> {
     let mut out = Vec::with_capacity(marks.len());
     let mut sum = 0.0;
     let mut next = 0;
-    for (start, block) in (0..).step_by(CHECK_EVERY).zip(points.chunks(CHECK_EVERY)) {
+    let dims = points.dims();
+    for (start, block) in (0..)
+        .step_by(CHECK_EVERY)
+        .zip(points.coords().chunks(CHECK_EVERY * dims))
+    {
         cancel.check()?;
-        for (i, p) in (start..).zip(block) {
-            sum += f.eval(rotate(*p, shift));
+        for (i, p) in (start..).zip(block.chunks_exact(dims)) {
+            sum += f(p);
             while next < marks.len() && marks[next] == i + 1 {
                 out.push(sum / (i + 1) as f64);
                 next += 1;
@@ -681,7 +857,11 @@ fn prefix_means(
 /// them (`eval_*` rows, points in cache): 2.1 (disk), 2.2 (heaviside), 2.3 (bilinear), 6.5
 /// (gaussian), 22.6 (cosines), rounded up; sets of 2^20 points streamed from memory cost
 /// about 4 ns per point for the simple integrands.
-fn eval_ns(integrand: &Integrand) -> f64 {
+///
+/// A Genz integrand costs about `GENZ_NS.0 + GENZ_NS.1 · D` (a term per coordinate, with its
+/// rotation), its exp/cos/powi once per point.
+fn eval_ns(integrand: &Integrand, dims: usize) -> f64 {
+    let genz = GENZ_NS.0 + GENZ_NS.1 * dims as f64;
     match integrand {
         Integrand::Disk(_) | Integrand::Heaviside(_) | Integrand::Bilinear(_) => 2.5,
         Integrand::Gaussian(_) => 7.0,
@@ -691,7 +871,21 @@ fn eval_ns(integrand: &Integrand) -> f64 {
         | Integrand::GenzCornerPeak(_)
         | Integrand::GenzGaussian(_)
         | Integrand::GenzContinuous(_)
-        | Integrand::GenzDiscontinuous(_) => 30.0,
+        | Integrand::GenzDiscontinuous(_) => genz,
+    }
+}
+
+/// ns per point of a Genz integrand: (constant, per coordinate).
+const GENZ_NS: (f64, f64) = (20.0, 3.0);
+
+/// ns of one closed-form integral: the corner peak's quadrature evaluates its D terms at a few
+/// hundred nodes (about 20 ns each, `exp_m1` and `ln`); the other Genz closed forms are a
+/// product of D factors; the 2D integrands' are counted in their evaluations.
+fn integral_ns(integrand: &Integrand, dims: usize) -> f64 {
+    match integrand {
+        Integrand::GenzCornerPeak(_) => 600.0 * 20.0 * dims as f64,
+        f if f.is_planar() => 0.0,
+        _ => 50.0 * dims as f64,
     }
 }
 
@@ -712,7 +906,8 @@ pub fn estimate(req: &StudyRequest) -> Vec<Estimate> {
         .collect();
     let nmax = ns.iter().copied().max().unwrap_or(1);
     let cores = budget::REFERENCE_CORES;
-    let largest = budget::pattern(&req.pattern, nmax);
+    let dims = req.dims.clamp(1, MAX_DIMS);
+    let largest = pattern_cost(&req.pattern, nmax, dims);
     // (N generated, how many times, whether in parallel).
     let generated: Vec<(usize, f64, bool)> = match (plan.caches(), plan.progressive) {
         (true, true) => vec![(nmax, 1.0, false)],
@@ -722,7 +917,7 @@ pub fn estimate(req: &StudyRequest) -> Vec<Estimate> {
     };
     let (mut amount, mut seconds, mut cached_bytes) = (0.0, 0.0, 0.0);
     for &(n, times, parallel) in &generated {
-        let e = budget::pattern(&req.pattern, n);
+        let e = pattern_cost(&req.pattern, n, dims);
         amount += e.amount * times;
         seconds += e.seconds * times / if parallel { cores } else { 1.0 };
         cached_bytes += e.bytes;
@@ -756,19 +951,45 @@ pub fn estimate(req: &StudyRequest) -> Vec<Estimate> {
     };
     let evaluations = distinct * per_realization;
     let results = 8.0 * realizations * ns.len() as f64;
+    // The closed forms: once, or once per realization with randomisation.
+    let instances = if req.randomize { distinct } else { 1.0 };
     let eval = Estimate {
         operation: format!(
-            "{} integrand at {} points per realization",
+            "{} integrand at {} points per realization{}",
             req.integrand.name(),
-            per_realization
+            per_realization,
+            if dims == 2 {
+                String::new()
+            } else {
+                format!(" in {dims} dimensions")
+            }
         ),
         amount: evaluations,
         unit: Unit::Evaluations,
-        seconds: evaluations * eval_ns(&req.integrand) * 1e-9 / cores
+        seconds: evaluations * eval_ns(&req.integrand, dims) * 1e-9 / cores
+            + instances * integral_ns(&req.integrand, dims) * 1e-9 / cores
             + results * budget::BYTE_NS * 1e-9,
         bytes: results,
     };
     vec![points, eval]
+}
+
+/// Generating `n` points of the pattern in `dims` dimensions: D = 2 is
+/// [`budget::pattern`]; otherwise the 2D cost times ⌈D/2⌉ and the n·D coordinates held.
+fn pattern_cost(pattern: &Pattern, n: usize, dims: usize) -> Estimate {
+    let e = budget::pattern(pattern, n);
+    if dims == 2 {
+        return e;
+    }
+    let scale = dims.div_ceil(2) as f64;
+    let coords = 8.0 * n as f64 * dims as f64;
+    Estimate {
+        operation: format!("{} in {dims} dimensions", e.operation),
+        amount: e.amount * scale,
+        seconds: e.seconds * scale + coords * budget::BYTE_NS * 1e-9,
+        bytes: coords,
+        ..e
+    }
 }
 
 #[cfg(test)]
@@ -974,6 +1195,7 @@ mod tests {
                 seed: 17 + i as u64,
                 shift: i % 3 != 2,
                 randomize: i % 2 == 1,
+                dims: 2,
             });
         }
         reqs.push(StudyRequest {
@@ -987,7 +1209,31 @@ mod tests {
             seed: 2,
             shift: true,
             randomize: true,
+            dims: 2,
         });
+        // Genz integrands: in D = 2 (the 2D path), 1, 3 and 8 dimensions, randomized or not.
+        for (i, (name, dims)) in [
+            ("genz-gaussian", 2),
+            ("genz-corner-peak", 8),
+            ("genz-discontinuous", 1),
+            ("genz-oscillatory", 3),
+            ("genz-product-peak", 8),
+            ("genz-continuous", 3),
+        ]
+        .into_iter()
+        .enumerate()
+        {
+            reqs.push(StudyRequest {
+                pattern: Pattern::from_name(if dims == 2 { "jitter" } else { "random" }).unwrap(),
+                integrand: Integrand::from_name(name).unwrap(),
+                ns: vec![64, 16, 100],
+                realizations: 5,
+                seed: 40 + i as u64,
+                shift: true,
+                randomize: i % 2 == 0,
+                dims,
+            });
+        }
         reqs
     }
 
@@ -1278,5 +1524,165 @@ mod tests {
         };
         let plan = estimate(&req);
         assert!(budget::Budget::default().check(&plan).is_err());
+    }
+
+    fn genz(name: &str, settings: &[(&str, &str)]) -> Integrand {
+        let mut f = Integrand::from_name(name).unwrap();
+        for (k, v) in settings {
+            f.set(k, v).unwrap();
+        }
+        f
+    }
+
+    #[test]
+    fn random_points_on_a_genz_integrand_in_8_dimensions_have_mse_var_over_n() {
+        // Uniform random points: MSE = Var(f)/N. Var(f) of the Gaussian family with a, u per
+        // axis: the product of its 1D second moments (a√2 for f²) minus I². Each N within 5
+        // standard errors; slope −1 ± 0.1.
+        let f = genz("genz-gaussian", &[("a", "[1,2,3,1,2,3,1,2]"), ("u", "0.3")]);
+        let (a, u) = ([1.0, 2.0, 3.0, 1.0, 2.0, 3.0, 1.0, 2.0], [0.3; 8]);
+        let second = crate::core::integration::genz::integral(
+            crate::core::integration::GenzKind::Gaussian,
+            &a.map(|x: f64| x * std::f64::consts::SQRT_2),
+            &u,
+        );
+        let i = f.in_dims(8).unwrap().unwrap().integral();
+        let var = second - i * i;
+        let req = StudyRequest {
+            pattern: Pattern::Random(Random {}),
+            integrand: f,
+            ns: vec![16, 64, 256, 1024],
+            realizations: 2048,
+            seed: 11,
+            dims: 8,
+            ..StudyRequest::default()
+        };
+        let s = study(&req);
+        assert_eq!(s.reference.to_bits(), i.to_bits());
+        for row in &s.rows {
+            let expect = var / row.n as f64;
+            let se = row.mse_stderr.unwrap();
+            assert!(
+                (row.mse - expect).abs() < 5.0 * se,
+                "N = {}: mse {} vs {expect} (stderr {se})",
+                row.n,
+                row.mse
+            );
+        }
+        assert!((s.slope.unwrap() + 1.0).abs() < 0.1, "{:?}", s.slope);
+    }
+
+    #[test]
+    fn a_genz_integrand_in_two_dimensions_is_the_2d_study() {
+        // D = 2 goes through the 2D patterns (jitter has no d-dimensional form): the estimate
+        // of realization 0 with one point set, by hand.
+        let f = genz("genz-continuous", &[("a", "[3,7]"), ("u", "[0.2,0.6]")]);
+        let req = StudyRequest {
+            pattern: Pattern::Hammersley(Default::default()),
+            integrand: f,
+            ns: vec![64, 256],
+            realizations: 1,
+            shift: false,
+            ..StudyRequest::default()
+        };
+        let s = study(&req);
+        let g = f.in_dims(2).unwrap().unwrap();
+        for (row, &n) in s.rows.iter().zip(&req.ns) {
+            let pts = req.pattern.generate(n, 0).unwrap();
+            let sum: f64 = pts.iter().map(|p| g.eval(&[p.x, p.y])).sum();
+            let e = sum / n as f64 - g.integral();
+            assert_eq!(row.mse.to_bits(), (e * e).to_bits(), "N = {n}");
+        }
+    }
+
+    #[test]
+    fn bad_dimensions_name_the_flag_and_the_range() {
+        let err = |req: StudyRequest| check_request(&req).unwrap_err().to_string();
+        let ok = StudyRequest {
+            pattern: Pattern::Random(Random {}),
+            integrand: genz("genz-gaussian", &[]),
+            dims: 8,
+            ..StudyRequest::default()
+        };
+        check_request(&ok).unwrap();
+        assert_eq!(
+            err(StudyRequest {
+                dims: 0,
+                ..ok.clone()
+            }),
+            "--dims 0: must be an integer in 1..=1024"
+        );
+        assert_eq!(
+            err(StudyRequest {
+                dims: 1025,
+                ..ok.clone()
+            }),
+            "--dims 1025: must be an integer in 1..=1024"
+        );
+        let e = err(StudyRequest {
+            integrand: disk(),
+            ..ok.clone()
+        });
+        assert!(
+            e.starts_with("--dims 8: disk is defined on [0,1]² only (--dims 2); the integrands defined in any dimension are genz-oscillatory, "),
+            "{e}"
+        );
+        let e = err(StudyRequest {
+            pattern: Pattern::Jitter(Jitter::default()),
+            ..ok.clone()
+        });
+        assert!(e.starts_with("--dims 8: jitter is defined in 2 dimensions only; the patterns defined in d dimensions are "), "{e}");
+        assert!(e.contains("random"), "{e}");
+        let e = err(StudyRequest {
+            integrand: genz("genz-gaussian", &[("a", "[1,2,3]")]),
+            ..ok.clone()
+        });
+        assert_eq!(
+            e,
+            "genz-gaussian.a = [1,2,3] (3 numbers): must be one number (every dimension) or a \
+             list of 8, one per dimension (dims = 8)"
+        );
+        // With --randomize the lists are drawn in D dimensions: the given ones do not matter.
+        check_request(&StudyRequest {
+            integrand: genz("genz-gaussian", &[("a", "[1,2,3]")]),
+            randomize: true,
+            ..ok.clone()
+        })
+        .unwrap();
+        assert_eq!(
+            err(StudyRequest {
+                ns: vec![16, 1 << 20],
+                dims: 64,
+                ..ok.clone()
+            }),
+            "--n 1048576 with --dims 64: N · D must be at most 33554432 (N ≤ 524288 in 64 dimensions)"
+        );
+        // The same errors from the naive loop.
+        let naive = run_study_naive(
+            &StudyRequest { dims: 0, ..ok },
+            &Cancel::never(),
+            &mut no_progress,
+        );
+        assert_eq!(naive.unwrap_err(), StudyError::Dims { dims: 0 });
+    }
+
+    #[test]
+    fn the_estimate_grows_with_the_dimension() {
+        let req = |dims| StudyRequest {
+            pattern: Pattern::Random(Random {}),
+            integrand: genz("genz-corner-peak", &[]),
+            randomize: true,
+            dims,
+            ..StudyRequest::default()
+        };
+        let secs = |d| budget::total_seconds(&estimate(&req(d)));
+        assert!(secs(32) > 4.0 * secs(2), "{} vs {}", secs(32), secs(2));
+        let plan = estimate(&req(32));
+        assert!(
+            plan[1].operation.ends_with("in 32 dimensions"),
+            "{}",
+            plan[1].operation
+        );
+        assert!(plan[0].bytes >= (4096 * 32 * 8) as f64);
     }
 }
