@@ -249,7 +249,7 @@ fn bad_input_exits_with_status_2_and_one_line() {
         ),
         (
             with(4, "genz-gaussian").into_iter().chain(["--dims", "3"]).collect(),
-            "--dims 3: jitter is defined in 2 dimensions only",
+            "--dims 3: jitter: dims = 3: must be 2 (jitter is defined in 2 dimensions only",
         ),
         (
             with(2, "random")

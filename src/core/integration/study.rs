@@ -210,9 +210,9 @@ pub enum StudyError {
         integrand: &'static str,
         dims: usize,
     },
-    /// The pattern has no form in this dimension.
-    #[error("--dims {dims}: {message}")]
-    PatternDims { dims: usize, message: String },
+    /// The pattern has no form in this dimension ([`Pattern::check_dims`]).
+    #[error("--dims {dims}: {source}")]
+    PatternDims { dims: usize, source: PatternError },
     /// N points of D coordinates are more than a point set holds.
     #[error(
         "--n {n} with --dims {dims}: N · D must be at most {MAX_COORDS} (N ≤ {} in {dims} \
@@ -278,46 +278,19 @@ pub fn check_request(req: &StudyRequest) -> Result<(), StudyError> {
             g?;
         }
     }
-    if dims != 2 {
-        if let Some(message) = cube_form(&req.pattern, dims) {
-            return Err(StudyError::PatternDims { dims, message });
-        }
-    }
+    req.pattern
+        .check_dims(dims)
+        .map_err(|source| StudyError::PatternDims { dims, source })?;
     // Every N the pattern would refuse is refused before any estimate or work.
     for &n in &req.ns {
         if n.saturating_mul(dims) > MAX_COORDS {
             return Err(StudyError::TooManyCoords { n, dims });
         }
         req.pattern
-            .validate(n)
+            .validate_cube(n, dims)
             .map_err(|source| StudyError::Pattern { n, source })?;
     }
     Ok(())
-}
-
-/// Why the pattern has no form in `dims` ≠ 2 dimensions (`None` when it has one).
-fn cube_form(pattern: &Pattern, dims: usize) -> Option<String> {
-    if pattern_max_dims(pattern) >= dims {
-        return None;
-    }
-    let with: Vec<&str> = Pattern::all()
-        .iter()
-        .filter(|p| pattern_max_dims(p) > 2)
-        .map(|p| p.name())
-        .collect();
-    Some(format!(
-        "{} is defined in 2 dimensions only; the patterns defined in d dimensions are {}",
-        pattern.name(),
-        with.join(", ")
-    ))
-}
-
-/// The most dimensions of the pattern's d-dimensional form (2: none).
-fn pattern_max_dims(pattern: &Pattern) -> usize {
-    match pattern {
-        Pattern::Random(_) => MAX_DIMS,
-        _ => 2,
-    }
 }
 
 /// `n` points of the pattern in `dims` dimensions (D = 2: its 2D points), or the error naming
@@ -332,17 +305,12 @@ fn points(
     if dims == 2 {
         return generate(pattern, n, seed, cancel).map(|p| CubePoints::from_2d(&p));
     }
-    match pattern {
-        Pattern::Random(_) => {
-            let mut rng = Rng::new(seed);
-            let coords = (0..n * dims).map(|_| rng.next_f64()).collect();
-            CubePoints::new(dims, coords).map_err(|_| StudyError::TooManyCoords { n, dims })
-        }
-        _ => Err(StudyError::PatternDims {
-            dims,
-            message: cube_form(pattern, dims).unwrap_or_default(),
-        }),
-    }
+    pattern
+        .generate_cube(n, dims, seed, cancel)
+        .map_err(|e| match e {
+            PatternError::Cancelled => StudyError::Cancelled,
+            source => StudyError::Pattern { n, source },
+        })
 }
 
 /// `n` points of the pattern, or the error naming `n`.
@@ -974,22 +942,10 @@ pub fn estimate(req: &StudyRequest) -> Vec<Estimate> {
     vec![points, eval]
 }
 
-/// Generating `n` points of the pattern in `dims` dimensions: D = 2 is
-/// [`budget::pattern`]; otherwise the 2D cost times ⌈D/2⌉ and the n·D coordinates held.
+/// Generating `n` points of the pattern in `dims` dimensions ([`budget::pattern_cube`]; D = 2
+/// is [`budget::pattern`]).
 fn pattern_cost(pattern: &Pattern, n: usize, dims: usize) -> Estimate {
-    let e = budget::pattern(pattern, n);
-    if dims == 2 {
-        return e;
-    }
-    let scale = dims.div_ceil(2) as f64;
-    let coords = 8.0 * n as f64 * dims as f64;
-    Estimate {
-        operation: format!("{} in {dims} dimensions", e.operation),
-        amount: e.amount * scale,
-        seconds: e.seconds * scale + coords * budget::BYTE_NS * 1e-9,
-        bytes: coords,
-        ..e
-    }
+    budget::pattern_cube(pattern, n, dims)
 }
 
 #[cfg(test)]
@@ -1234,6 +1190,33 @@ mod tests {
                 dims,
             });
         }
+        // d-dimensional patterns: deterministic (shifted, or all realizations the same),
+        // progressive or not, randomised Owen scrambling.
+        for (i, (name, set, dims, shift)) in [
+            ("halton", None, 8, true),
+            ("sobol", Some(("scramble", "owen")), 3, true),
+            ("hammersley", None, 3, false),
+            ("lhs", None, 8, true),
+            ("sobol", None, 32, true),
+        ]
+        .into_iter()
+        .enumerate()
+        {
+            let mut pattern = Pattern::from_name(name).unwrap();
+            if let Some((k, v)) = set {
+                pattern.set(k, v).unwrap();
+            }
+            reqs.push(StudyRequest {
+                pattern,
+                integrand: Integrand::all()[5 + i % 6],
+                ns: vec![64, 16, 100],
+                realizations: 5,
+                seed: 60 + i as u64,
+                shift,
+                randomize: i % 2 == 1,
+                dims,
+            });
+        }
         reqs
     }
 
@@ -1327,6 +1310,29 @@ mod tests {
             let a = one.install(|| study(&req));
             let b = four.install(|| study(&req));
             same_bits(&a, &b);
+        }
+    }
+
+    #[test]
+    fn progressive_patterns_are_prefixes_of_their_larger_sets_in_every_dimension() {
+        // The study reads every N off the largest set of a progressive pattern in D dims too.
+        for p in Pattern::all()
+            .into_iter()
+            .filter(|p| p.is_progressive() && p.max_dims() > 2)
+        {
+            for dims in [1, 3, 8, 32] {
+                let never = Cancel::never();
+                let big = p.generate_cube(300, dims, 9, &never).unwrap();
+                for n in [1, 17, 64, 299] {
+                    let small = p.generate_cube(n, dims, 9, &never).unwrap();
+                    assert_eq!(
+                        small.coords(),
+                        &big.coords()[..n * dims],
+                        "{} D = {dims}",
+                        p.name()
+                    );
+                }
+            }
         }
     }
 
@@ -1631,8 +1637,11 @@ mod tests {
             pattern: Pattern::Jitter(Jitter::default()),
             ..ok.clone()
         });
-        assert!(e.starts_with("--dims 8: jitter is defined in 2 dimensions only; the patterns defined in d dimensions are "), "{e}");
-        assert!(e.contains("random"), "{e}");
+        assert!(
+            e.starts_with("--dims 8: jitter: dims = 8: must be 2 (jitter is defined in 2 dimensions only; the patterns defined in d dimensions are "),
+            "{e}"
+        );
+        assert!(e.contains("sobol"), "{e}");
         let e = err(StudyRequest {
             integrand: genz("genz-gaussian", &[("a", "[1,2,3]")]),
             ..ok.clone()
