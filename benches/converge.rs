@@ -12,6 +12,7 @@
 //! | benchmark | fast path | reference | target |
 //! |---|---|---|---|
 //! | `study_<sampler>` | `run_study`: disk, N = 16, 32, …, 4096 (9 values), 256 realizations, seed 1; samplers random, jitter, sobol (Owen), halton, pmj02, best-candidate, kronecker, rank1 | `run_study_naive`, the same study (same bits checked) | all eight studies ≤ 2 s in all (wall, 2 cores) |
+//! | `d32_<sampler>` | `run_study` in 32 dimensions (`--dims 32`): Genz's Gaussian, a random instance per realization (Genz's normalisation), N = 16, 32, …, 4096 (9 values), 64 realizations; samplers random, lhs, sobol (Owen), halton (Owen), sobol (unscrambled, Cranley–Patterson rotated) | `run_study_naive`, the same study, single-threaded (same bits checked) | the ratio naive/fast |
 //! | `eval_<integrand>` | `run_study` on 4096 Cranley–Patterson rotations of one Kronecker set of 2^14 points (in cache): integrand evaluations only | — | the per-evaluation CPU ns behind `integration::study`'s cost estimate |
 //!
 //! Hammersley is not progressive and is left out, as in the lecture's convergence plots.
@@ -162,6 +163,75 @@ fn studies(c: &mut Criterion) {
     }
 }
 
+/// The five d-dimensional samplers of the 32-dimensional study: (benchmark id, pattern).
+fn cube_samplers() -> Vec<(&'static str, Pattern)> {
+    let named = |name: &str, settings: &[(&str, &str)]| {
+        let mut p = Pattern::from_name(name).expect("a known pattern");
+        for (k, v) in settings {
+            p.set(k, v).expect("a valid setting");
+        }
+        p
+    };
+    vec![
+        ("random", named("random", &[])),
+        ("lhs", named("lhs", &[])),
+        ("sobol_owen", named("sobol", &[("scramble", "owen")])),
+        ("halton_owen", named("halton", &[("scramble", "owen")])),
+        ("sobol_shifted", named("sobol", &[])),
+    ]
+}
+
+/// The study in 32 dimensions, fast against the naive single-threaded loop in the same run.
+fn studies_d32(c: &mut Criterion) {
+    let never = Cancel::never();
+    for (id, pattern) in cube_samplers() {
+        let bench_id = format!("d32_{id}");
+        if !selected(&bench_id) {
+            continue;
+        }
+        let req = StudyRequest {
+            pattern,
+            integrand: Integrand::from_name("genz-gaussian").expect("genz-gaussian"),
+            ns: (4..=12).map(|m| 1usize << m).collect(),
+            realizations: 64,
+            seed: SEED,
+            shift: true,
+            randomize: true,
+            dims: 32,
+        };
+        let run = || run_study(&req, &never, &mut no_progress).expect("study");
+        let mut group = c.benchmark_group(&bench_id);
+        group.sample_size(10);
+        group.bench_function("fast", |b| b.iter(|| black_box(run())));
+        group.finish();
+        let fast = median_ms_with(process_cpu_ms, 5, || {
+            black_box(run());
+        });
+        let (c0, t0) = (process_cpu_ms(), Instant::now());
+        let naive_study = run_study_naive(&req, &never, &mut no_progress).expect("naive");
+        let naive = Timing {
+            wall: t0.elapsed().as_secs_f64() * 1e3,
+            cpu: process_cpu_ms() - c0,
+        };
+        let fast_study = run();
+        push(Row {
+            what: format!(
+                "D = 32 {} (slope {:.2})",
+                id,
+                fast_study.slope.unwrap_or(f64::NAN)
+            ),
+            ms: fast,
+            estimate_s: budget::total_seconds(&estimate(&req)),
+            versus: format!(
+                "naive single-threaded (1 run): {}; naive/fast {:.1}× wall; same bits: {}",
+                both(naive),
+                naive.wall / fast.wall,
+                same_bits(&fast_study, &naive_study)
+            ),
+        });
+    }
+}
+
 fn evaluations(c: &mut Criterion) {
     let never = Cancel::never();
     // 2^14 points (256 KiB) stay in cache: the rate of the loop itself, not of memory.
@@ -250,6 +320,7 @@ fn print_table() {
 fn main() {
     let mut c = Criterion::default().configure_from_args();
     studies(&mut c);
+    studies_d32(&mut c);
     evaluations(&mut c);
     c.final_summary();
     print_table();
