@@ -1,6 +1,6 @@
 //! Integration error of sample patterns: Monte Carlo and quasi-Monte Carlo estimates of
-//! integrals over [0,1]² whose exact values are known, and how their mean squared error falls
-//! with the number of samples N.
+//! integrals over [0,1]² — or [0,1]^D with Genz's integrands — whose exact values are known, and
+//! how their mean squared error falls with the number of samples N.
 //!
 //! The estimate of I = ∫∫ f is the mean of f over the N points of a pattern. Its error depends
 //! on the pattern and on f: for uniform random points MSE = Var(f)/N (slope −1 on a log–log
