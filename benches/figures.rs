@@ -55,7 +55,7 @@ fn setup() -> (FigureContext, ColumnData, Vec<f64>) {
         wall_time: Duration::ZERO,
     };
     let data = ColumnData {
-        reconstruction: Some(Arc::new(ReconData::new(exact))),
+        reconstruction: samplescope::model::Slot::from(Arc::new(ReconData::new(exact))),
         ..Default::default()
     };
     let ctx = figure::context(&Scene::default(), 0, "bench").expect("column 0 exists");

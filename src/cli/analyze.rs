@@ -593,7 +593,7 @@ fn spectrum_figure(
             figure::figure_columns(&one, &results[..1], "analyze").map_err(|e| usage(&e))?;
         let (ctx, data) = &mut columns[0];
         ctx.pattern_params = format!("files={}", names.join(","));
-        data.spectrum = Some(spectrum.clone());
+        data.spectrum = spectrum.clone().into();
         ctx.spectrum_range = samplescope::model::shared_spectrum_range(&[spectrum.auto_range]);
         (one, columns)
     } else {

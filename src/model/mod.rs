@@ -1,6 +1,7 @@
 //! The plain data that views draw: images, point sets, spectra, curves, the per-node data
 //! structs the compute graph fills, the identities of the figures ([`FigureKind`]), a column's
-//! data as the figures read it ([`ColumnData`]), the plain figure context ([`FigureContext`]),
+//! data as the panels and figures read it ([`ColumnData`]: each node's [`Slot`], its data
+//! with its [`NodeStatus`], or its error), the plain figure context ([`FigureContext`]),
 //! what one publication of a scene's figures draws ([`Publication`]),
 //! and the shared display vocabulary (the one [`Colormap`] with its CPU colorizer, the
 //! [`palette`], the dB conversion, the elementary-interval grid).
@@ -25,11 +26,12 @@ pub mod palette;
 mod points;
 mod publication;
 mod recon;
+mod slot;
 mod spectrum;
 
 pub use accuracy::Accuracy;
 pub use colormap::{colorize, Colormap};
-pub use column::ColumnData;
+pub use column::{ColumnData, InColumn};
 pub use context::{sanitize, FigureContext};
 pub use figure_kind::FigureKind;
 pub use filter::{amplitude_db, ResponseData, ResponseMetrics, DB_FLOOR};
@@ -43,6 +45,7 @@ pub use points::{
 };
 pub use publication::Publication;
 pub use recon::{ConvergencePoint, ErrorData, ReconData, ReferenceData};
+pub use slot::{NodeRow, NodeStatus, Slot};
 pub use spectrum::{shared_spectrum_range, SpectrumData, SHARED_DECADES};
 
 /// PSA's radial distribution function and the (0,k,2)-net check of power-of-two prefixes:

@@ -3,11 +3,12 @@
 //! and the [`Publication`] of a scene's figures. Which figures a column has is
 //! [`super::panels`]' rule.
 
-use super::graph::{NodeKind, NodeResult};
+use super::graph::{NodeKind, NodeResult, NodeValue};
 use super::{panels, ReconMode, Scene};
 use crate::core::params::Params;
 use crate::model::{
-    sanitize, Colormap, ColumnData, FigureContext, IntegrationCurve, IntegrationPlot, Publication,
+    sanitize, Colormap, ColumnData, FigureContext, IntegrationCurve, IntegrationPlot, NodeRow,
+    NodeStatus, Publication, Slot,
 };
 use std::collections::HashMap;
 use std::sync::Arc;
@@ -89,32 +90,85 @@ pub fn strata(scene: &Scene, column: usize, overlay: bool) -> Option<(usize, usi
     }
 }
 
-/// Picks the successful node values out of a column's results (the GUI's `ColumnResults`,
-/// or what `Evaluator::evaluate` sent for the column).
-pub fn column_data<R: AsRef<NodeResult>>(results: &HashMap<NodeKind, R>) -> ColumnData {
-    use super::graph::NodeValue;
-    let mut d = ColumnData::default();
-    for r in results.values() {
-        match &r.as_ref().value {
-            Ok(NodeValue::Points(v)) => d.points = Some(v.clone()),
-            Ok(NodeValue::Spectrum(v)) => d.spectrum = Some(v.clone()),
-            Ok(NodeValue::Reconstruction(v)) => d.reconstruction = Some(v.clone()),
-            Ok(NodeValue::Reference(v)) => d.reference = Some(v.clone()),
-            Ok(NodeValue::Error(v)) => d.error = Some(v.clone()),
-            Ok(NodeValue::Response(v)) => d.response = Some(v.clone()),
-            Ok(NodeValue::Convergence(v)) => d.convergence = Some(v.clone()),
-            Ok(NodeValue::Theorem(v)) => d.theorem = Some(v.clone()),
-            Ok(NodeValue::Integration(v)) => d.integration = Some(v.clone()),
-            // Values no figure draws (statistics, samples, …) and failed nodes.
-            _ => {}
+/// A node's result as its holder keeps it: the bare result (`render`, the CLI's fronts,
+/// `Evaluator::evaluate`'s sink) or with what the holder knows besides (the GUI's results:
+/// the progress of a coarse result, the scene it was computed for).
+pub trait HeldResult: AsRef<NodeResult> {
+    /// Its status; by default what the result alone says (no progress, no scene).
+    fn status(&self) -> NodeStatus {
+        let r = self.as_ref();
+        NodeStatus {
+            wall: r.wall,
+            accuracy: r.accuracy.clone(),
+            progress: None,
+            computed_for: None,
         }
     }
-    d
+}
+
+impl HeldResult for Arc<NodeResult> {}
+
+/// The slot of one node: its data if it is of `pick`'s kind, its error if it failed.
+fn slot_of<'a, T: 'a, R: HeldResult>(
+    held: Option<&'a R>,
+    pick: impl Fn(&'a NodeValue) -> Option<&'a Arc<T>>,
+) -> Slot<T> {
+    let Some(held) = held else {
+        return Slot::Missing;
+    };
+    match &held.as_ref().value {
+        Err(e) => Slot::Failed {
+            status: held.status(),
+            error: e.to_string(),
+        },
+        Ok(v) => pick(v).map_or(Slot::Missing, |d| Slot::Ready {
+            status: held.status(),
+            data: d.clone(),
+        }),
+    }
+}
+
+/// A column's data from its node results (the GUI's, or what `Evaluator::evaluate` sent for
+/// the column): every node the panels and figures read as a [`Slot`] (data with status,
+/// error, or missing), and every node's status for the cost view. The one place a column's
+/// node values become plain data.
+pub fn column_data<R: HeldResult>(results: &HashMap<NodeKind, R>) -> ColumnData {
+    use super::graph::NodeValue as V;
+    macro_rules! slots {
+        ($($field:ident <- $kind:ident),* $(,)?) => {
+            ColumnData {
+                $($field: slot_of(results.get(&NodeKind::$kind), |v| match v {
+                    V::$kind(d) => Some(d),
+                    _ => None,
+                }),)*
+                integration_plot: None,
+                nodes: NodeKind::ALL
+                    .into_iter()
+                    .map(|k| NodeRow {
+                        name: k.name(),
+                        status: results.get(&k).map(HeldResult::status),
+                    })
+                    .collect(),
+            }
+        };
+    }
+    slots! {
+        points <- Points,
+        statistics <- Statistics,
+        spectrum <- Spectrum,
+        reconstruction <- Reconstruction,
+        reference <- Reference,
+        error <- Error,
+        response <- Response,
+        convergence <- Convergence,
+        theorem <- Theorem,
+        integration <- Integration,
+    }
 }
 
 /// Every column's data ([`column_data`]), with column 0 also holding the integration plot:
 /// the studies of all columns, labelled with their titles.
-pub fn columns_data<R: AsRef<NodeResult>>(
+pub fn columns_data<R: HeldResult>(
     scene: &Scene,
     results: &[HashMap<NodeKind, R>],
 ) -> Vec<ColumnData> {
@@ -123,7 +177,7 @@ pub fn columns_data<R: AsRef<NodeResult>>(
         .iter()
         .enumerate()
         .filter_map(|(c, d)| {
-            let data = d.integration.clone()?;
+            let data = d.integration.data()?.clone();
             let label = scene.columns.get(c).map(|col| col.title())?;
             Some(IntegrationCurve { label, data })
         })
@@ -140,7 +194,7 @@ pub fn columns_data<R: AsRef<NodeResult>>(
 /// [`columns_data`], with one colour range for every periodogram
 /// ([`crate::model::shared_spectrum_range`] of the columns' automatic ranges), so that a
 /// comparison's periodograms share one colour bar.
-pub fn figure_columns<R: AsRef<NodeResult>>(
+pub fn figure_columns<R: HeldResult>(
     scene: &Scene,
     results: &[HashMap<NodeKind, R>],
     scene_name: &str,
@@ -151,7 +205,7 @@ pub fn figure_columns<R: AsRef<NodeResult>>(
     }
     let ranges: Vec<(f32, f32)> = columns
         .iter()
-        .filter_map(|(_, d)| d.spectrum.as_ref().map(|s| s.auto_range))
+        .filter_map(|(_, d)| d.spectrum.data().map(|s| s.auto_range))
         .collect();
     if let Some(shared) = crate::model::shared_spectrum_range(&ranges) {
         for (ctx, _) in &mut columns {

@@ -30,6 +30,9 @@ pub struct SamplescopeApp {
     pub engine: Engine,
     /// Latest results per column (possibly of different generations while recomputing).
     pub results: Vec<ColumnResults>,
+    /// Each column's plain data made from `results` (with each node's status) whenever they
+    /// change: what the panels read.
+    pub data: Vec<crate::model::ColumnData>,
     /// The results of the latest generation that finished: one consistent snapshot (saved
     /// figures come from it while a recompute runs).
     complete: Option<CompleteResults>,
@@ -103,6 +106,7 @@ impl SamplescopeApp {
             scene_name: BUILTIN[0].0.to_string(),
             engine,
             results: Vec::new(),
+            data: Vec::new(),
             complete: None,
             view: ViewState::default(),
             scene_error: None,
@@ -159,6 +163,7 @@ impl SamplescopeApp {
         self.scene_name = name;
         self.scene_error = None;
         self.results.clear();
+        self.data.clear();
         self.complete = None;
         self.playback.reset();
     }
@@ -219,9 +224,11 @@ impl SamplescopeApp {
                 .resize_with(self.scene.columns.len(), HashMap::new);
             self.results.truncate(self.scene.columns.len());
         }
+        let mut changed = self.data.len() != self.results.len();
         for u in self.engine.poll() {
             if let Some(col) = self.results.get_mut(u.column) {
                 col.insert(u.kind, Shown::from(u));
+                changed = true;
             }
         }
         let generation = self.engine.generation();
@@ -246,6 +253,10 @@ impl SamplescopeApp {
                 generation,
                 columns: self.results.clone(),
             });
+            changed = true;
+        }
+        if changed {
+            self.data = crate::scene::figure::columns_data(&self.scene, &self.results);
         }
     }
 
@@ -404,7 +415,7 @@ impl SamplescopeApp {
         let SamplescopeApp {
             scene,
             engine,
-            results,
+            data,
             view,
             images,
             columns,
@@ -415,7 +426,7 @@ impl SamplescopeApp {
         let mut cx = PanelCx {
             scene,
             column: 0,
-            results,
+            data,
             view,
             images,
             figures,
@@ -582,6 +593,9 @@ impl SamplescopeApp {
             self.scene.columns.remove(ci);
             if ci < self.results.len() {
                 self.results.remove(ci);
+            }
+            if ci < self.data.len() {
+                self.data.remove(ci);
             }
         }
         ui.heading("Spectrum");

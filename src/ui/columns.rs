@@ -118,10 +118,11 @@ fn column_header(cx: &PanelCx<'_>) -> String {
     match &column.points {
         Some(p) => format!("{} · N = {}", column.title(), p.points.len()),
         None => {
-            let lab = cx
-                .get::<PointsData>()
-                .shown()
-                .map_or(scene, |r| r.scene.as_ref());
+            let slot = cx.get::<PointsData>();
+            let lab = slot
+                .status()
+                .and_then(crate::ui::results::scene_of)
+                .unwrap_or(scene);
             let c = lab.columns.get(ci).unwrap_or(column);
             format!("{} · N = {} · seed {}", c.title(), lab.n, c.seed)
         }

@@ -435,12 +435,13 @@ mod tests {
             std::env::temp_dir().join(format!("samplescope-not-a-dir-{}", std::process::id()));
         std::fs::write(&file, b"x").unwrap();
         let mut with_points = snapshot.clone();
-        with_points.columns[0].points = Some(std::sync::Arc::new(crate::model::PointsData {
-            points: vec![glam::DVec2::new(0.5, 0.5)],
-            gpu: std::sync::Arc::new(vec![[0.5, 0.5]]),
-            version: 1,
-            note: None,
-        }));
+        with_points.columns[0].points =
+            crate::model::Slot::from(std::sync::Arc::new(crate::model::PointsData {
+                points: vec![glam::DVec2::new(0.5, 0.5)],
+                gpu: std::sync::Arc::new(vec![[0.5, 0.5]]),
+                version: 1,
+                note: None,
+            }));
         match with_points.run(png, &file) {
             Done::Failed(e) => assert!(e.contains(&file.display().to_string()), "{e}"),
             _ => panic!("wrote into a file"),

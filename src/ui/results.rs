@@ -1,15 +1,13 @@
 //! The engine's results as the UI holds them: what is on screen per column, and the last
-//! generation that finished. Plain data, shared by the app (which fills it) and the panels
-//! (which draw it). The one place the UI decodes the graph's `NodeValue`: a panel asks for the
-//! plain `model` data it draws ([`slot`], `PanelCx::get`) and gets it with its status.
+//! generation that finished. The app keeps them and makes each column's plain
+//! `model::ColumnData` from them (`scene::figure::column_data`, with the status [`Shown`]
+//! knows: progress and the scene); the panels read only that data, never the graph's values.
 
 use crate::core::progress::Steps;
 use crate::engine::Update;
-use crate::model::{
-    ConvergencePoint, ErrorData, IntegrationData, PointsData, ReconData, ReferenceData,
-    ResponseData, SpectrumData, StatsData, TheoremView,
-};
-use crate::scene::graph::{NodeError, NodeKind, NodeResult, NodeValue};
+use crate::model::NodeStatus;
+use crate::scene::figure::HeldResult;
+use crate::scene::graph::{NodeKind, NodeResult};
 use crate::scene::Scene;
 use std::collections::HashMap;
 use std::sync::Arc;
@@ -66,119 +64,52 @@ pub struct CompleteResults {
     pub columns: Vec<ColumnResults>,
 }
 
-/// A node's plain data type, and where it is among a column's results.
-pub trait NodeData: 'static {
-    /// The node that computes it.
-    const KIND: NodeKind;
-    /// The data, if `value` is this node's.
-    fn of(value: &NodeValue) -> Option<&Arc<Self>>;
-}
-
-macro_rules! node_data {
-    ($($t:ty => $kind:ident),* $(,)?) => {$(
-        impl NodeData for $t {
-            const KIND: NodeKind = NodeKind::$kind;
-            fn of(value: &NodeValue) -> Option<&Arc<Self>> {
-                match value {
-                    NodeValue::$kind(d) => Some(d),
-                    _ => None,
-                }
-            }
-        }
-    )*};
-}
-
-node_data! {
-    PointsData => Points,
-    StatsData => Statistics,
-    SpectrumData => Spectrum,
-    ReconData => Reconstruction,
-    ReferenceData => Reference,
-    ErrorData => Error,
-    ResponseData => Response,
-    Vec<ConvergencePoint> => Convergence,
-    TheoremView => Theorem,
-    IntegrationData => Integration,
-}
-
-/// What a panel finds for one node of a column.
-pub enum Slot<'a, T> {
-    /// Not computed (yet, or not asked for).
-    Missing,
-    /// The node failed: its result (wall time, scene) and the error.
-    Failed(&'a Shown, &'a NodeError),
-    /// Its data, with its result's status (a coarse one while `progress` is `Some`).
-    Ready(&'a Shown, &'a Arc<T>),
-}
-
-impl<'a, T> Slot<'a, T> {
-    /// The data, if there is any.
-    pub fn data(&self) -> Option<&'a Arc<T>> {
-        match self {
-            Slot::Ready(_, d) => Some(d),
-            _ => None,
-        }
-    }
-
-    /// The node's error, if it failed.
-    pub fn error(&self) -> Option<&'a NodeError> {
-        match self {
-            Slot::Failed(_, e) => Some(e),
-            _ => None,
-        }
-    }
-
-    /// The result (status and the scene it was computed for), failed or not.
-    pub fn shown(&self) -> Option<&'a Shown> {
-        match self {
-            Slot::Ready(r, _) | Slot::Failed(r, _) => Some(r),
-            Slot::Missing => None,
+impl HeldResult for Shown {
+    /// The result's status with what the UI holds besides: the refinement under way and the
+    /// scene it was computed for.
+    fn status(&self) -> NodeStatus {
+        NodeStatus {
+            wall: self.result.wall,
+            accuracy: self.result.accuracy.clone(),
+            progress: self.progress,
+            computed_for: Some(self.scene.clone()),
         }
     }
 }
 
-/// The `T` node of a column's results.
-pub fn slot<T: NodeData>(column: &ColumnResults) -> Slot<'_, T> {
-    let Some(r) = column.get(&T::KIND) else {
-        return Slot::Missing;
-    };
-    match &r.value {
-        Err(e) => Slot::Failed(r, e),
-        Ok(v) => T::of(v).map_or(Slot::Missing, |d| Slot::Ready(r, d)),
-    }
-}
-
-/// Every node's name, in the node table's order (the cost view's columns).
-pub fn node_names() -> impl Iterator<Item = &'static str> {
-    NodeKind::ALL.into_iter().map(|k| k.name())
-}
-
-/// Every node's result in a column (`None` where it has none), in [`node_names`]' order.
-pub fn node_results(column: &ColumnResults) -> impl Iterator<Item = Option<&Shown>> {
-    NodeKind::ALL.into_iter().map(|k| column.get(&k))
+/// The scene a status says its data was computed for (the GUI's results carry it; see
+/// [`NodeStatus::computed_for`]).
+pub fn scene_of(status: &NodeStatus) -> Option<&Scene> {
+    status.computed_for.as_ref()?.downcast_ref::<Scene>()
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::model::{ColumnData, PointsData, SpectrumData, StatsData};
+    use crate::scene::graph::{NodeError, NodeValue};
     use crate::scene::node::KeyError;
     use std::time::Duration;
 
-    fn shown(value: Result<NodeValue, NodeError>) -> Shown {
+    fn shown(value: Result<NodeValue, NodeError>, scene: &Arc<Scene>) -> Shown {
         Shown {
             result: Arc::new(NodeResult {
                 value,
                 wall: Duration::from_millis(3),
                 accuracy: None,
             }),
-            scene: Arc::new(Scene::default()),
+            scene: scene.clone(),
             generation: 1,
-            progress: None,
+            progress: Some(Steps {
+                done: 1,
+                total: 4,
+                so_far: None,
+            }),
         }
     }
 
     #[test]
-    fn a_slot_is_the_plain_data_its_error_or_missing() {
+    fn a_column_s_data_holds_each_node_s_data_error_or_nothing_with_its_status() {
         let points = Arc::new(PointsData {
             points: vec![glam::DVec2::new(0.5, 0.25)],
             gpu: Arc::new(vec![[0.5, 0.25]]),
@@ -189,25 +120,35 @@ mod tests {
             kind: "spectrum",
             message: "no key".into(),
         });
+        let scene = Arc::new(Scene {
+            n: 77,
+            ..Scene::default()
+        });
         let mut column = ColumnResults::new();
         column.insert(
             NodeKind::Points,
-            shown(Ok(NodeValue::Points(points.clone()))),
+            shown(Ok(NodeValue::Points(points.clone())), &scene),
         );
-        column.insert(NodeKind::Spectrum, shown(Err(failed)));
-        let got = slot::<PointsData>(&column);
+        column.insert(NodeKind::Spectrum, shown(Err(failed), &scene));
+        let data: ColumnData = crate::scene::figure::column_data(&column);
+        let got = data.get::<PointsData>();
         assert!(Arc::ptr_eq(got.data().unwrap(), &points));
-        assert_eq!(got.shown().unwrap().wall, Duration::from_millis(3));
-        let spectrum = slot::<SpectrumData>(&column);
+        let status = got.status().unwrap();
+        assert_eq!(status.wall, Duration::from_millis(3));
+        assert_eq!(status.progress.map(|p| (p.done, p.total)), Some((1, 4)));
+        assert_eq!(scene_of(status).map(|s| s.n), Some(77));
+        // A failed node: its error in the plain data, with its status.
+        let spectrum = data.get::<SpectrumData>();
         assert!(spectrum.data().is_none());
-        assert!(spectrum.error().unwrap().to_string().contains("no key"));
-        assert!(spectrum.shown().is_some());
-        assert!(matches!(slot::<StatsData>(&column), Slot::Missing));
-        let names: Vec<&str> = node_names().collect();
-        assert_eq!(names.len(), node_results(&column).count());
-        let with_result: Vec<&str> = node_names()
-            .zip(node_results(&column))
-            .filter_map(|(n, r)| r.map(|_| n))
+        assert!(spectrum.error().unwrap().contains("no key"));
+        assert!(spectrum.status().is_some());
+        assert!(data.get::<StatsData>().status().is_none());
+        // Every node's status in the node table's order, for the cost view.
+        assert_eq!(data.nodes.len(), NodeKind::ALL.len());
+        let with_result: Vec<&str> = data
+            .nodes
+            .iter()
+            .filter_map(|n| n.status.as_ref().map(|_| n.name))
             .collect();
         assert_eq!(with_result, vec!["points", "spectrum"]);
     }

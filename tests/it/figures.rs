@@ -211,7 +211,7 @@ fn csv_round_trips_the_drawn_numbers() {
     let points = parse_pairs(&panel_csv(FigureKind::Pattern, ctx, data).unwrap(), "x,y");
     let want: Vec<[f64; 2]> = data
         .points
-        .as_ref()
+        .data()
         .unwrap()
         .points
         .iter()
@@ -219,14 +219,14 @@ fn csv_round_trips_the_drawn_numbers() {
         .collect();
     assert_eq!(points, want, "points round-trip bit for bit");
 
-    let spectrum = data.spectrum.as_ref().unwrap();
+    let spectrum = data.spectrum.data().unwrap();
     let raps = parse_pairs(
         &panel_csv(FigureKind::Raps, ctx, data).unwrap(),
         "radius,power",
     );
     assert_eq!(raps, spectrum.raps);
 
-    let response = data.response.as_ref().unwrap();
+    let response = data.response.data().unwrap();
     let kernel = parse_pairs(&panel_csv(FigureKind::Kernel, ctx, data).unwrap(), "x,h");
     assert_eq!(kernel, response.kernel);
     let mag = parse_pairs(
@@ -241,7 +241,7 @@ fn csv_round_trips_the_drawn_numbers() {
     );
     let want: Vec<[f64; 2]> = data
         .convergence
-        .as_ref()
+        .data()
         .unwrap()
         .iter()
         .map(|p| [p.spp as f64, p.rmse])
@@ -270,7 +270,7 @@ fn csv_round_trips_the_drawn_numbers() {
     assert_eq!(top_left.to_bits(), spectrum.image.values[0].to_bits());
 
     // Images: one row per line, top row first.
-    let recon = data.reconstruction.as_ref().unwrap();
+    let recon = data.reconstruction.data().unwrap();
     let csv = panel_csv(FigureKind::Reconstruction, ctx, data).unwrap();
     let values: Vec<f32> = csv
         .lines()
@@ -343,7 +343,7 @@ fn missing_or_empty_data_is_an_error_naming_the_figure() {
         assert!(e.to_string().starts_with(kind.name()), "{e}");
     }
     let empty = ColumnData {
-        points: Some(Arc::new(PointsData {
+        points: samplescope::model::Slot::from(Arc::new(PointsData {
             points: vec![],
             gpu: Arc::new(vec![]),
             version: 0,
@@ -372,17 +372,19 @@ fn images_and_points_are_drawn_where_their_data_says() {
     let mut colours = Vec::new();
     for level in [0.0, 1.0] {
         let data = ColumnData {
-            reconstruction: Some(Arc::new(ReconData::new(Reconstruction {
-                w: 8,
-                pixels: vec![level; 64],
-                zero_weight: 0,
-                floored: 0,
-                floor: 0.5,
-                mask: vec![false; 64],
-                fill: ZERO_WEIGHT_FILL,
-                samples: 64,
-                wall_time: std::time::Duration::ZERO,
-            }))),
+            reconstruction: samplescope::model::Slot::from(Arc::new(ReconData::new(
+                Reconstruction {
+                    w: 8,
+                    pixels: vec![level; 64],
+                    zero_weight: 0,
+                    floored: 0,
+                    floor: 0.5,
+                    mask: vec![false; 64],
+                    fill: ZERO_WEIGHT_FILL,
+                    samples: 64,
+                    wall_time: std::time::Duration::ZERO,
+                },
+            ))),
             ..Default::default()
         };
         let (w, h, rgba) = panel_rgba(FigureKind::Reconstruction, &ctx, &data, 1).unwrap();
@@ -403,7 +405,7 @@ fn images_and_points_are_drawn_where_their_data_says() {
 
     // One point in the middle of the unit square: dark there, white a bit away.
     let one = ColumnData {
-        points: Some(Arc::new(PointsData {
+        points: samplescope::model::Slot::from(Arc::new(PointsData {
             points: vec![glam::DVec2::new(0.5, 0.5)],
             gpu: Arc::new(vec![[0.5, 0.5]]),
             version: 0,
@@ -641,7 +643,7 @@ const SINC2: &str = r#"(kind: "sinc-squared", bandwidth: 1.5)"#;
 
 fn theorem_view(data: &ColumnData) -> &TheoremView {
     data.theorem
-        .as_ref()
+        .data()
         .expect("the theorem node ran for column 0")
 }
 
@@ -956,7 +958,7 @@ fn four_points(k: Option<u32>) -> (FigureContext, ColumnData) {
     ctx.elementary_k = k;
     let pts = [[0.25, 0.25], [0.75, 0.25], [0.25, 0.75], [0.75, 0.75]];
     let data = ColumnData {
-        points: Some(Arc::new(PointsData {
+        points: samplescope::model::Slot::from(Arc::new(PointsData {
             points: pts.iter().map(|p| glam::DVec2::new(p[0], p[1])).collect(),
             gpu: Arc::new(pts.iter().map(|p| [p[0] as f32, p[1] as f32]).collect()),
             version: 0,
@@ -1008,8 +1010,8 @@ fn pattern_draws_the_elementary_interval_grid_when_the_column_asks() {
     assert!(!blue_near(&tall, x_10, y_half));
     // Three points are not a power of two: nothing drawn.
     let (ctx, mut data) = four_points(Some(1));
-    let p = data.points.as_ref().unwrap();
-    data.points = Some(Arc::new(PointsData {
+    let p = data.points.data().unwrap();
+    data.points = samplescope::model::Slot::from(Arc::new(PointsData {
         points: p.points[..3].to_vec(),
         gpu: Arc::new(p.gpu[..3].to_vec()),
         version: 0,
@@ -1091,7 +1093,7 @@ fn sphere_data() -> (FigureContext, ColumnData) {
 #[test]
 fn sphere_figure_draws_discs_in_both_views_and_repeats_byte_for_byte() {
     let (ctx, data) = sphere_data();
-    let n = data.points.as_ref().unwrap().points.len();
+    let n = data.points.data().unwrap().points.len();
     assert_eq!(n, 256);
     let bytes = panel_png(FigureKind::Sphere, &ctx, &data, 1).unwrap();
     assert_eq!(

@@ -292,7 +292,7 @@ fn composites_are_written_in_every_format() {
 
 fn points(pts: &[[f64; 2]]) -> ColumnData {
     ColumnData {
-        points: Some(Arc::new(PointsData {
+        points: samplescope::model::Slot::from(Arc::new(PointsData {
             points: pts.iter().map(|p| glam::DVec2::new(p[0], p[1])).collect(),
             gpu: Arc::new(pts.iter().map(|p| [p[0] as f32, p[1] as f32]).collect()),
             version: 0,

@@ -773,7 +773,7 @@ fn panel_controls_edit_the_settings_and_show_both_errors() {
     struct State {
         panel: TheoremPanel,
         scene: Scene,
-        results: Vec<ColumnResults>,
+        data: Vec<samplescope::model::ColumnData>,
         view: ViewState,
         images: ImageView,
         figures: FigureRequests,
@@ -796,7 +796,9 @@ fn panel_controls_edit_the_settings_and_show_both_errors() {
     let state = State {
         panel: TheoremPanel::default(),
         scene,
-        results: vec![ColumnResults::from([(NodeKind::Theorem, shown)])],
+        data: vec![samplescope::scene::figure::column_data(
+            &ColumnResults::from([(NodeKind::Theorem, shown)]),
+        )],
         view: ViewState::default(),
         images: ImageView::new(false),
         figures: FigureRequests::default(),
@@ -809,7 +811,7 @@ fn panel_controls_edit_the_settings_and_show_both_errors() {
                 let mut cx = PanelCx {
                     scene: &mut s.scene,
                     column: 0,
-                    results: &s.results,
+                    data: &s.data,
                     view: &mut s.view,
                     images: &mut s.images,
                     figures: &mut s.figures,

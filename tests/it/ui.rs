@@ -235,7 +235,7 @@ fn a_figure_saved_during_a_recompute_has_labels_and_pixels_of_one_scene() {
         let snap = app.figure_snapshot();
         let points = snap.columns[0]
             .points
-            .as_ref()
+            .data()
             .expect("points in the snapshot");
         assert_eq!(
             snap.scene.n,

@@ -604,7 +604,7 @@ impl Plan {
         let px = CAPTION_PX * self.scale as f64;
         // A block of theorem panels is captioned with the theorem's setup and error terms
         // (its panels then leave them out); any other block with its column.
-        let theorem = match &data.theorem {
+        let theorem = match data.theorem.data() {
             Some(v) if self.kinds.iter().all(|k| k.is_theorem()) => Some(v),
             _ => None,
         };

@@ -38,11 +38,11 @@ impl Figure for Convergence {
     }
 
     fn has_data(&self, data: &ColumnData) -> bool {
-        data.convergence.is_some()
+        data.convergence.is_ready()
     }
 
     fn check(&self, data: &ColumnData) -> Result<(), ExportError> {
-        let c = present(KIND, data.convergence.as_ref())?;
+        let c = present(KIND, data.convergence.data())?;
         if !c.iter().any(drawable) {
             return Err(empty(KIND, "no point with spp > 0 and a positive RMSE"));
         }
@@ -52,7 +52,7 @@ impl Figure for Convergence {
     fn draw(&self, f: &mut Frame<'_, '_>, body: &Area<'_>) -> Result<(), ExportError> {
         let de = |e| draw_err(KIND, e);
         let look = f.look;
-        let pts: Vec<(f64, f64)> = present(KIND, f.data.convergence.as_ref())?
+        let pts: Vec<(f64, f64)> = present(KIND, f.data.convergence.data())?
             .iter()
             .filter(|p| drawable(p))
             .map(|p| (p.spp as f64, p.rmse))
@@ -100,7 +100,7 @@ impl Figure for Convergence {
     }
 
     fn csv(&self, data: &ColumnData) -> Result<String, ExportError> {
-        let c = present(KIND, data.convergence.as_ref())?;
+        let c = present(KIND, data.convergence.data())?;
         let pts: Vec<[f64; 2]> = c.iter().map(|p| [p.spp as f64, p.rmse]).collect();
         curve("spp,rmse", &pts, KIND)
     }

@@ -23,22 +23,22 @@ impl Figure for Error {
     }
 
     fn title(&self, _ctx: &FigureContext, data: &ColumnData) -> String {
-        match &data.error {
+        match data.error.data() {
             Some(e) => format!("error, RMSE {:.4}, PSNR {:.2} dB", e.rmse, e.psnr),
             None => "error".to_string(),
         }
     }
 
     fn has_data(&self, data: &ColumnData) -> bool {
-        data.error.is_some()
+        data.error.is_ready()
     }
 
     fn check(&self, data: &ColumnData) -> Result<(), ExportError> {
-        check_image(&present(KIND, data.error.as_ref())?.image, KIND)
+        check_image(&present(KIND, data.error.data())?.image, KIND)
     }
 
     fn draw(&self, f: &mut Frame<'_, '_>, body: &Area<'_>) -> Result<(), ExportError> {
-        let r = present(KIND, f.data.error.as_ref())?;
+        let r = present(KIND, f.data.error.data())?;
         let spec = unit_square_image(
             &r.image,
             0.0,
@@ -50,6 +50,6 @@ impl Figure for Error {
     }
 
     fn csv(&self, data: &ColumnData) -> Result<String, ExportError> {
-        image_rows(&present(KIND, data.error.as_ref())?.image, KIND)
+        image_rows(&present(KIND, data.error.data())?.image, KIND)
     }
 }

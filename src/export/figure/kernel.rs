@@ -47,17 +47,17 @@ impl Figure for Kernel {
     }
 
     fn has_data(&self, data: &ColumnData) -> bool {
-        data.response.is_some()
+        data.response.is_ready()
     }
 
     fn check(&self, data: &ColumnData) -> Result<(), ExportError> {
-        check_curve(&present(KIND, data.response.as_ref())?.kernel, KIND)
+        check_curve(&present(KIND, data.response.data())?.kernel, KIND)
     }
 
     fn draw(&self, f: &mut Frame<'_, '_>, body: &Area<'_>) -> Result<(), ExportError> {
         let de = |e| draw_err(KIND, e);
         let look = f.look;
-        let pts = finite(&present(KIND, f.data.response.as_ref())?.kernel);
+        let pts = finite(&present(KIND, f.data.response.data())?.kernel);
         let x0 = pts.iter().map(|p| p.0).fold(f64::INFINITY, f64::min);
         let x1 = pts.iter().map(|p| p.0).fold(f64::NEG_INFINITY, f64::max);
         let x = if x1 > x0 {
@@ -91,7 +91,7 @@ impl Figure for Kernel {
     }
 
     fn csv(&self, data: &ColumnData) -> Result<String, ExportError> {
-        curve("x,h", &present(KIND, data.response.as_ref())?.kernel, KIND)
+        curve("x,h", &present(KIND, data.response.data())?.kernel, KIND)
     }
 }
 

@@ -68,11 +68,11 @@ impl Figure for Pattern {
     }
 
     fn has_data(&self, data: &ColumnData) -> bool {
-        data.points.is_some()
+        data.points.is_ready()
     }
 
     fn check(&self, data: &ColumnData) -> Result<(), ExportError> {
-        let p = present(KIND, data.points.as_ref())?;
+        let p = present(KIND, data.points.data())?;
         if p.points.is_empty() {
             return Err(empty(KIND, "the point set is empty"));
         }
@@ -82,7 +82,7 @@ impl Figure for Pattern {
     fn draw(&self, f: &mut Frame<'_, '_>, body: &Area<'_>) -> Result<(), ExportError> {
         let de = |e| draw_err(KIND, e);
         let look = f.look;
-        let pts = &present(KIND, f.data.points.as_ref())?.points;
+        let pts = &present(KIND, f.data.points.data())?.points;
         // The marker radius follows the plotting area's side, which the padding barely
         // changes: measured on the unpadded chart (building a chart draws nothing).
         let side = {
@@ -124,7 +124,7 @@ impl Figure for Pattern {
     }
 
     fn csv(&self, data: &ColumnData) -> Result<String, ExportError> {
-        let p = present(KIND, data.points.as_ref())?;
+        let p = present(KIND, data.points.data())?;
         let pts: Vec<[f64; 2]> = p.points.iter().map(|p| [p.x, p.y]).collect();
         curve("x,y", &pts, KIND)
     }
@@ -137,7 +137,7 @@ impl Figure for Pattern {
         }
         if let Some(grid) = data
             .points
-            .as_ref()
+            .data()
             .and_then(|p| elementary_grid(ctx.elementary_k, p.points.len()))
         {
             m.push((

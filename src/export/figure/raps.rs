@@ -33,11 +33,11 @@ impl Figure for Raps {
     }
 
     fn has_data(&self, data: &ColumnData) -> bool {
-        data.spectrum.is_some()
+        data.spectrum.is_ready()
     }
 
     fn check(&self, data: &ColumnData) -> Result<(), ExportError> {
-        let s = present(KIND, data.spectrum.as_ref())?;
+        let s = present(KIND, data.spectrum.data())?;
         if !any_finite(&s.raps) {
             return Err(empty(KIND, "the radial average has no finite bin"));
         }
@@ -47,7 +47,7 @@ impl Figure for Raps {
     fn draw(&self, f: &mut Frame<'_, '_>, body: &Area<'_>) -> Result<(), ExportError> {
         let de = |e| draw_err(KIND, e);
         let look = f.look;
-        let pts = finite(&present(KIND, f.data.spectrum.as_ref())?.raps);
+        let pts = finite(&present(KIND, f.data.spectrum.data())?.raps);
         let x_hi = pts.iter().map(|p| p.0).fold(0.0f64, f64::max).max(1.0);
         let y = padded(pts.iter().map(|p| p.1), &[0.0, 1.0]);
         let y = y.start.max(0.0)..y.end;
@@ -83,7 +83,7 @@ impl Figure for Raps {
     }
 
     fn csv(&self, data: &ColumnData) -> Result<String, ExportError> {
-        let s = present(KIND, data.spectrum.as_ref())?;
+        let s = present(KIND, data.spectrum.data())?;
         curve("radius,power", &s.raps, KIND)
     }
 }

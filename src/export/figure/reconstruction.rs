@@ -60,20 +60,20 @@ impl Figure for Reconstruction {
     }
 
     fn has_data(&self, data: &ColumnData) -> bool {
-        data.reconstruction.is_some()
+        data.reconstruction.is_ready()
     }
 
     fn check(&self, data: &ColumnData) -> Result<(), ExportError> {
-        check_image(&present(KIND, data.reconstruction.as_ref())?.image, KIND)
+        check_image(&present(KIND, data.reconstruction.data())?.image, KIND)
     }
 
     fn draw(&self, f: &mut Frame<'_, '_>, body: &Area<'_>) -> Result<(), ExportError> {
-        let r = present(KIND, f.data.reconstruction.as_ref())?;
+        let r = present(KIND, f.data.reconstruction.data())?;
         let spec = unit_square_image(&r.image, 0.0, 1.0, Colormap::Greys, None);
         f.image(body, KIND, spec)
     }
 
     fn csv(&self, data: &ColumnData) -> Result<String, ExportError> {
-        image_rows(&present(KIND, data.reconstruction.as_ref())?.image, KIND)
+        image_rows(&present(KIND, data.reconstruction.data())?.image, KIND)
     }
 }

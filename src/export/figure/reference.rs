@@ -26,20 +26,20 @@ impl Figure for Reference {
     }
 
     fn has_data(&self, data: &ColumnData) -> bool {
-        data.reference.is_some()
+        data.reference.is_ready()
     }
 
     fn check(&self, data: &ColumnData) -> Result<(), ExportError> {
-        check_image(&present(KIND, data.reference.as_ref())?.image, KIND)
+        check_image(&present(KIND, data.reference.data())?.image, KIND)
     }
 
     fn draw(&self, f: &mut Frame<'_, '_>, body: &Area<'_>) -> Result<(), ExportError> {
-        let r = present(KIND, f.data.reference.as_ref())?;
+        let r = present(KIND, f.data.reference.data())?;
         let spec = unit_square_image(&r.image, 0.0, 1.0, Colormap::Greys, None);
         f.image(body, KIND, spec)
     }
 
     fn csv(&self, data: &ColumnData) -> Result<String, ExportError> {
-        image_rows(&present(KIND, data.reference.as_ref())?.image, KIND)
+        image_rows(&present(KIND, data.reference.data())?.image, KIND)
     }
 }

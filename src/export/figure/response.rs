@@ -32,17 +32,17 @@ impl Figure for Response {
     }
 
     fn has_data(&self, data: &ColumnData) -> bool {
-        data.response.is_some()
+        data.response.is_ready()
     }
 
     fn check(&self, data: &ColumnData) -> Result<(), ExportError> {
-        check_curve(&present(KIND, data.response.as_ref())?.magnitude, KIND)
+        check_curve(&present(KIND, data.response.data())?.magnitude, KIND)
     }
 
     fn draw(&self, f: &mut Frame<'_, '_>, body: &Area<'_>) -> Result<(), ExportError> {
         let de = |e| draw_err(KIND, e);
         let look = f.look;
-        let r = present(KIND, f.data.response.as_ref())?;
+        let r = present(KIND, f.data.response.data())?;
         let db = f.ctx.response_db;
         let value = |m: f64| if db { amplitude_db(m) } else { m };
         let pts: Vec<(f64, f64)> = finite(&r.magnitude)
@@ -111,7 +111,7 @@ impl Figure for Response {
     }
 
     fn csv(&self, data: &ColumnData) -> Result<String, ExportError> {
-        let r = present(KIND, data.response.as_ref())?;
+        let r = present(KIND, data.response.data())?;
         curve("omega,magnitude", &r.magnitude, KIND)
     }
 }

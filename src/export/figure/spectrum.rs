@@ -21,7 +21,7 @@ const BAR_DESC: &str = "log₁₀ P   (white noise: 0)";
 
 /// Draws the periodogram image into `body`, with its colour bar when `bar`.
 fn draw_periodogram(f: &mut Frame<'_, '_>, body: &Area<'_>, bar: bool) -> Result<(), ExportError> {
-    let s = present(KIND, f.data.spectrum.as_ref())?;
+    let s = present(KIND, f.data.spectrum.data())?;
     let (lo, hi) = ordered_range(f.ctx.spectrum_range.unwrap_or(s.auto_range));
     let m = s.image.width as f64;
     let k0 = -((s.image.width / 2) as f64);
@@ -64,11 +64,11 @@ impl Figure for Spectrum {
     }
 
     fn has_data(&self, data: &ColumnData) -> bool {
-        data.spectrum.is_some()
+        data.spectrum.is_ready()
     }
 
     fn check(&self, data: &ColumnData) -> Result<(), ExportError> {
-        let s = present(KIND, data.spectrum.as_ref())?;
+        let s = present(KIND, data.spectrum.data())?;
         if s.image.width == 0 || s.image.height == 0 {
             return Err(empty(KIND, "the periodogram image is empty"));
         }
@@ -80,7 +80,7 @@ impl Figure for Spectrum {
     }
 
     fn csv(&self, data: &ColumnData) -> Result<String, ExportError> {
-        let s = present(KIND, data.spectrum.as_ref())?;
+        let s = present(KIND, data.spectrum.data())?;
         let im = &s.image;
         if im.width == 0 || im.height == 0 {
             return Err(empty(KIND, "the periodogram image is empty"));
@@ -106,7 +106,7 @@ impl Figure for Spectrum {
     /// The context and the colour range drawn.
     fn metadata(&self, ctx: &FigureContext, data: &ColumnData) -> Vec<(String, String)> {
         let mut m = context_metadata(ctx);
-        if let Some(s) = &data.spectrum {
+        if let Some(s) = data.spectrum.data() {
             let (lo, hi) = ctx.spectrum_range.unwrap_or(s.auto_range);
             m.push(("colour range".into(), format!("log10 P in [{lo}, {hi}]")));
         }
@@ -232,7 +232,7 @@ mod tests {
         // 2×2 display image: row 0 is ky = 0 (the highest), row 1 is ky = −1.
         let image = ImageData::new(2, 2, vec![1.0, 2.0, 3.0, 4.0]);
         let d = ColumnData {
-            spectrum: Some(Arc::new(SpectrumData {
+            spectrum: crate::model::Slot::from(Arc::new(SpectrumData {
                 image,
                 auto_range: (0.0, 1.0),
                 raps: vec![],

@@ -60,11 +60,11 @@ impl Figure for Sphere {
     }
 
     fn has_data(&self, data: &ColumnData) -> bool {
-        data.points.is_some()
+        data.points.is_ready()
     }
 
     fn check(&self, data: &ColumnData) -> Result<(), ExportError> {
-        let p = present(KIND, data.points.as_ref())?;
+        let p = present(KIND, data.points.data())?;
         if p.points.is_empty() {
             return Err(empty(KIND, "the point set is empty"));
         }
@@ -74,7 +74,7 @@ impl Figure for Sphere {
     fn draw(&self, f: &mut Frame<'_, '_>, body: &Area<'_>) -> Result<(), ExportError> {
         let de = |e| draw_err(KIND, e);
         let look = f.look;
-        let pts = pattern_to_sphere(&present(KIND, f.data.points.as_ref())?.points);
+        let pts = pattern_to_sphere(&present(KIND, f.data.points.data())?.points);
         let (front, back) = body.split_horizontally(look.u(VIEW_W));
         for (area, view, name) in [
             (front, OrthoView::FRONT, "front"),
@@ -115,7 +115,7 @@ impl Figure for Sphere {
 
     fn csv(&self, data: &ColumnData) -> Result<String, ExportError> {
         self.check(data)?;
-        let p = present(KIND, data.points.as_ref())?;
+        let p = present(KIND, data.points.data())?;
         // Shortest round-trip form, as the other figures' CSV.
         let mut out = String::from("x,y,z\n");
         for q in pattern_to_sphere(&p.points) {

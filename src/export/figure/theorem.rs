@@ -8,7 +8,7 @@ use crate::model::{ColumnData, FigureContext, FigureKind, TheoremView};
 
 /// The theorem view of `data`, or the error that it was not computed.
 pub(super) fn view(kind: FigureKind, data: &ColumnData) -> Result<&TheoremView, ExportError> {
-    present(kind, data.theorem.as_deref())
+    present(kind, data.theorem.data().map(|v| &**v))
 }
 
 /// Refuses a missing view, one whose curves `has_curves` finds nothing to draw in, and a
@@ -30,7 +30,7 @@ pub(super) fn check(
 
 /// "`what`: signal (params), f_s = …, filter" (`what` alone without a view).
 pub(super) fn title(what: &str, data: &ColumnData) -> String {
-    match &data.theorem {
+    match data.theorem.data() {
         Some(v) => format!("{what}: {}", setup(v)),
         None => what.to_string(),
     }
@@ -91,7 +91,7 @@ pub(super) fn block_caption(v: &TheoremView) -> String {
 /// pattern, N and seed do not apply).
 pub(super) fn metadata(ctx: &FigureContext, data: &ColumnData) -> Vec<(String, String)> {
     let mut m = vec![("scene".to_string(), ctx.scene_title.clone())];
-    let Some(v) = &data.theorem else {
+    let Some(v) = data.theorem.data() else {
         return m;
     };
     let s = &v.settings;

@@ -28,7 +28,7 @@ impl Figure for TheoremPair {
     }
 
     fn title(&self, _ctx: &FigureContext, data: &ColumnData) -> String {
-        match &data.theorem {
+        match data.theorem.data() {
             Some(v) => {
                 let p = &v.settings.pair;
                 format!(
@@ -43,7 +43,7 @@ impl Figure for TheoremPair {
     }
 
     fn has_data(&self, data: &ColumnData) -> bool {
-        data.theorem.is_some()
+        data.theorem.is_ready()
     }
 
     fn check(&self, data: &ColumnData) -> Result<(), ExportError> {

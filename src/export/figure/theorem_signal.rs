@@ -37,7 +37,7 @@ impl Figure for TheoremSignal {
     }
 
     fn has_data(&self, data: &ColumnData) -> bool {
-        data.theorem.is_some()
+        data.theorem.is_ready()
     }
 
     fn check(&self, data: &ColumnData) -> Result<(), ExportError> {

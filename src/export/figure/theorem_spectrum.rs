@@ -85,7 +85,7 @@ impl Figure for TheoremSpectrum {
     }
 
     fn has_data(&self, data: &ColumnData) -> bool {
-        data.theorem.is_some()
+        data.theorem.is_ready()
     }
 
     fn check(&self, data: &ColumnData) -> Result<(), ExportError> {

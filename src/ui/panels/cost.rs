@@ -4,7 +4,6 @@
 use super::{Panel, PanelCx};
 use crate::model::ConvergencePoint;
 use crate::scene::panels::PanelKind;
-use crate::ui::results::{node_names, node_results, slot};
 use eframe::egui;
 use egui_plot::{Line, Plot};
 
@@ -26,11 +25,11 @@ impl Panel for CostPanel {
                 ui.strong("Cost per node");
                 egui::Grid::new("cost-grid").striped(true).show(ui, |ui| {
                     ui.label("column");
-                    for name in node_names() {
-                        ui.label(name);
+                    for kind in crate::scene::graph::NodeKind::ALL {
+                        ui.label(kind.name());
                     }
                     ui.end_row();
-                    for (ci, col) in cx.results.iter().enumerate() {
+                    for (ci, col) in cx.data.iter().enumerate() {
                         ui.label(
                             cx.scene
                                 .columns
@@ -38,8 +37,8 @@ impl Panel for CostPanel {
                                 .map(|c| c.title())
                                 .unwrap_or_default(),
                         );
-                        for result in node_results(col) {
-                            match result {
+                        for row in &col.nodes {
+                            match &row.status {
                                 Some(r) => {
                                     let t = format!("{:.1} ms", r.wall.as_secs_f64() * 1e3);
                                     let resp = ui.label(t);
@@ -67,11 +66,11 @@ impl Panel for CostPanel {
                     ui.small("turn on the convergence effect to compute it");
                 }
                 let curves: Vec<Curve> = cx
-                    .results
+                    .data
                     .iter()
                     .enumerate()
                     .filter_map(
-                        |(ci, col)| match slot::<Vec<ConvergencePoint>>(col).data() {
+                        |(ci, col)| match col.get::<Vec<ConvergencePoint>>().data() {
                             Some(c) => Some((
                                 cx.scene
                                     .columns

@@ -4,9 +4,9 @@
 use super::{Panel, PanelCx};
 use crate::model::FigureKind;
 use crate::model::ResponseData;
+use crate::model::Slot;
 use crate::scene::panels::PanelKind;
 use crate::ui::gpu::DisplayRange;
-use crate::ui::results::Slot;
 use crate::ui::view::ViewState;
 use crate::ui::widgets::status::{error_label, time_label};
 use eframe::egui::{self, Color32};
@@ -34,9 +34,9 @@ impl Panel for FilterPanel {
             cx.figures.panel_menu_ui(ui, ci, PanelKind::Filter);
         });
         let (r, d) = match cx.get::<ResponseData>() {
-            Slot::Ready(r, d) => (r, d.clone()),
-            Slot::Failed(_, e) => {
-                error_label(ui, "filter", e);
+            Slot::Ready { status: r, data: d } => (r, d),
+            Slot::Failed { error: e, .. } => {
+                error_label(ui, "filter", &e);
                 return;
             }
             Slot::Missing => {
@@ -117,6 +117,6 @@ impl Panel for FilterPanel {
                 .collect::<Vec<_>>()
                 .join(" · "),
         );
-        time_label(ui, r, cx.view.show_timings);
+        time_label(ui, &r, cx.view.show_timings);
     }
 }

@@ -5,11 +5,11 @@
 //! R), and the panel says how many are in.
 
 use super::{Panel, PanelCx};
+use crate::model::Slot;
 use crate::model::{guide_line, palette, IntegrationData, GUIDE_SLOPES};
 use crate::scene::integration::limits;
 use crate::scene::panels::PanelKind;
 use crate::ui::gpu::DisplayRange;
-use crate::ui::results::Slot;
 use crate::ui::widgets::params::{integrand_ui, setting_ui};
 use crate::ui::widgets::status::error_label;
 use eframe::egui::{self, Color32};
@@ -41,7 +41,7 @@ impl Panel for IntegrationPanel {
     }
 
     fn ui(&mut self, ui: &mut egui::Ui, cx: &mut PanelCx<'_>) {
-        let studies: Vec<(usize, Slot<'_, IntegrationData>)> = (0..cx.scene.columns.len())
+        let studies: Vec<(usize, Slot<IntegrationData>)> = (0..cx.scene.columns.len())
             .map(|c| (c, cx.get_in::<IntegrationData>(c)))
             .collect();
         ui.horizontal_top(|ui| {
@@ -102,8 +102,8 @@ impl Panel for IntegrationPanel {
                         .map(|c| c.title())
                         .unwrap_or_default();
                     match r {
-                        Slot::Ready(_, d) => curves.push((*c, title, (*d).clone())),
-                        Slot::Failed(_, e) => status.push((title, Err(e.to_string()))),
+                        Slot::Ready { data, .. } => curves.push((*c, title, data.clone())),
+                        Slot::Failed { error, .. } => status.push((title, Err(error.clone()))),
                         Slot::Missing => status.push((title, Ok("computing…".to_string()))),
                     }
                 }

@@ -1,7 +1,8 @@
 //! The panels: one file each, one struct each, drawing plain data computed by the engine (no
 //! maths here). A panel implements [`Panel`] and reads everything it needs from a [`PanelCx`]
-//! lent by the app for the frame: its column's plain `model` data with its status
-//! ([`PanelCx::get`], a [`Slot`]), never the graph's node values.
+//! lent by the app for the frame: its column's plain `model::ColumnData` (the same data the
+//! figures read), each node's data with its status ([`PanelCx::get`], a [`Slot`]), never the
+//! graph's node values.
 //!
 //! Which panels exist, when each is shown, where it goes and which figures it saves is the
 //! panel list (`scene::panels::panel_list!`, whose rows are [`crate::scene::panels::PANELS`]);
@@ -21,11 +22,10 @@ pub mod theorem;
 pub mod zoneplate;
 
 use crate::engine::Evaluator;
-use crate::model::FigureKind;
+use crate::model::{ColumnData, FigureKind, InColumn, Slot};
 use crate::scene::panels::PanelKind;
 use crate::scene::{Panels, Scene};
 use crate::ui::figures::FigureRequests;
-use crate::ui::results::{slot, ColumnResults, NodeData, Slot};
 use crate::ui::view::ViewState;
 use crate::ui::widgets::image::ImageView;
 use eframe::egui;
@@ -84,8 +84,8 @@ pub struct PanelCx<'a> {
     pub scene: &'a mut Scene,
     /// The column drawn (0 for the panels below the columns).
     pub column: usize,
-    /// Every column's latest results.
-    pub results: &'a [ColumnResults],
+    /// Every column's latest data, with each node's status.
+    pub data: &'a [ColumnData],
     /// The shared display state.
     pub view: &'a mut ViewState,
     /// Draws images (GPU or CPU) and says whether the GPU path is on.
@@ -99,15 +99,15 @@ pub struct PanelCx<'a> {
 }
 
 impl<'a> PanelCx<'a> {
-    /// The drawn column's latest `T` (borrowed from the results, not from the context, so the
-    /// context stays usable while it is held).
-    pub fn get<T: NodeData>(&self) -> Slot<'a, T> {
+    /// The drawn column's latest `T` with its status.
+    pub fn get<T: InColumn>(&self) -> Slot<T> {
         self.get_in(self.column)
     }
 
-    /// Column `column`'s latest `T`.
-    pub fn get_in<T: NodeData>(&self, column: usize) -> Slot<'a, T> {
-        let results: &'a [ColumnResults] = self.results;
-        results.get(column).map_or(Slot::Missing, slot)
+    /// Column `column`'s latest `T` with its status.
+    pub fn get_in<T: InColumn>(&self, column: usize) -> Slot<T> {
+        self.data
+            .get(column)
+            .map_or(Slot::Missing, |d| d.get::<T>().clone())
     }
 }

@@ -3,11 +3,11 @@
 //! statistics.
 
 use super::{Panel, PanelCx};
+use crate::model::Slot;
 use crate::model::{marks, palette};
 use crate::model::{PointsData, StatsData};
 use crate::scene::panels::PanelKind;
 use crate::ui::gpu;
-use crate::ui::results::Slot;
 use crate::ui::view::screen_from_unit;
 use crate::ui::widgets::status::{error_label, time_label};
 use eframe::egui::{self, Color32, Rect, Stroke, Vec2};
@@ -32,9 +32,9 @@ impl Panel for PatternPanel {
         let painter = ui.painter_at(rect);
         painter.rect_filled(rect, 0.0, Color32::WHITE);
         let (r, data) = match cx.get::<PointsData>() {
-            Slot::Ready(r, d) => (r, d.clone()),
-            Slot::Failed(_, e) => {
-                error_label(ui, "pattern", e);
+            Slot::Ready { status: r, data: d } => (r, d),
+            Slot::Failed { error: e, .. } => {
+                error_label(ui, "pattern", &e);
                 return;
             }
             Slot::Missing => {
@@ -51,7 +51,11 @@ impl Panel for PatternPanel {
             Stroke::new(0.5, Color32::from_rgb(r, g, b))
         };
         // The figure's rule: the column's own strata or the overlay, all of them or none.
-        if let Some((c, rws)) = crate::scene::figure::strata(&r.scene, ci, cx.view.show_strata) {
+        if let Some((c, rws)) = crate::scene::figure::strata(
+            crate::ui::results::scene_of(&r).unwrap_or(cx.scene),
+            ci,
+            cx.view.show_strata,
+        ) {
             grid_lines(&painter, rect, c, rws, grid_stroke);
         }
         let k = cx.scene.columns[ci].elementary_k.or(cx.view.elementary_k);
@@ -108,7 +112,7 @@ impl Panel for PatternPanel {
                 painter.circle_filled(screen_from_unit(rect, [p.x, p.y]), radius, color);
             }
         }
-        time_label(ui, r, cx.view.show_timings);
+        time_label(ui, &r, cx.view.show_timings);
         if let Some(note) = &data.note {
             ui.small(note);
         }

@@ -2,10 +2,11 @@
 //! averaged power spectrum and the anisotropy.
 
 use super::{Panel, PanelCx};
+use crate::model::Slot;
 use crate::model::SpectrumData;
 use crate::scene::panels::PanelKind;
 use crate::ui::gpu::DisplayRange;
-use crate::ui::results::Slot;
+use crate::ui::results::scene_of;
 use crate::ui::widgets::status::{error_label, time_label};
 use eframe::egui::{self, Color32};
 use egui_plot::{Line, Plot};
@@ -22,17 +23,18 @@ impl Panel for SpectrumPanel {
     fn ui(&mut self, ui: &mut egui::Ui, cx: &mut PanelCx<'_>) {
         let (ci, side) = (cx.column, cx.side);
         ui.horizontal_wrapped(|ui| {
-            let size = cx
-                .get::<SpectrumData>()
-                .shown()
-                .map_or(cx.scene.spectrum.size, |r| r.scene.spectrum.size);
+            let slot = cx.get::<SpectrumData>();
+            let size = slot
+                .status()
+                .and_then(scene_of)
+                .map_or(cx.scene.spectrum.size, |s| s.spectrum.size);
             ui.label(format!("Periodogram {size}² (log10 P, centred)"));
             cx.figures.panel_menu_ui(ui, ci, PanelKind::Spectrum);
         });
         let (r, d) = match cx.get::<SpectrumData>() {
-            Slot::Ready(r, d) => (r, d.clone()),
-            Slot::Failed(_, e) => {
-                error_label(ui, "spectrum", e);
+            Slot::Ready { status: r, data: d } => (r, d),
+            Slot::Failed { error: e, .. } => {
+                error_label(ui, "spectrum", &e);
                 return;
             }
             Slot::Missing => {
@@ -58,7 +60,7 @@ impl Panel for SpectrumPanel {
             [0.0, 0.0, 1.0, 1.0],
             side,
         );
-        time_label(ui, r, cx.view.show_timings);
+        time_label(ui, &r, cx.view.show_timings);
         if cx.view.show_timings {
             ui.small(
                 d.stages

@@ -5,9 +5,9 @@
 use super::{Panel, PanelCx};
 use crate::core::pattern::sphere::{square_to_sphere, OrthoView};
 use crate::model::PointsData;
+use crate::model::Slot;
 use crate::model::{marks, palette};
 use crate::scene::panels::PanelKind;
-use crate::ui::results::Slot;
 use crate::ui::widgets::status::{error_label, time_label};
 use eframe::egui::{self, Color32, Pos2, Sense, Stroke, Vec2};
 
@@ -60,9 +60,9 @@ impl Panel for SpherePanel {
         let centre = rect.center();
         let r = side * 0.5 - 6.0;
         let (res, data) = match cx.get::<PointsData>() {
-            Slot::Ready(r, d) => (r, d.clone()),
-            Slot::Failed(_, e) => {
-                error_label(ui, "sphere", e);
+            Slot::Ready { status: r, data: d } => (r, d),
+            Slot::Failed { error: e, .. } => {
+                error_label(ui, "sphere", &e);
                 return;
             }
             Slot::Missing => {
@@ -98,7 +98,7 @@ impl Panel for SpherePanel {
                 painter.circle_filled(p, rad, ink);
             }
         }
-        time_label(ui, res, cx.view.show_timings);
+        time_label(ui, &res, cx.view.show_timings);
         let yaw = view.yaw.to_degrees().rem_euclid(360.0).round();
         let pitch = view.pitch.to_degrees().round();
         ui.small(format!(

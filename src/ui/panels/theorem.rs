@@ -6,10 +6,10 @@ use crate::core::filter::Filter;
 use crate::core::signal::theorem::{
     AliasingErrors, PairKind, Reconstructor, TheoremSettings, TheoremView,
 };
+use crate::model::Slot;
 use crate::model::{palette, FigureKind};
 use crate::scene::panels::PanelKind;
 use crate::ui::figures::FigureRequests;
-use crate::ui::results::Slot;
 use crate::ui::widgets::params::{family_ui, labelled_params_ui, params_ui, setting_ui};
 use eframe::egui::{self, Color32};
 use egui_plot::{Legend, Line, Plot, Points, VLine};
@@ -63,8 +63,8 @@ impl Panel for TheoremPanel {
             });
             ui.separator();
             let view = match result {
-                Slot::Ready(_, v) => v.clone(),
-                Slot::Failed(_, e) => {
+                Slot::Ready { data: v, .. } => v.clone(),
+                Slot::Failed { error: e, .. } => {
                     ui.colored_label(NYQUIST, format!("sampling theorem: {e}"));
                     return;
                 }

@@ -3,10 +3,11 @@
 
 use super::{Panel, PanelCx};
 use crate::model::FigureKind;
+use crate::model::Slot;
 use crate::model::{Colormap, ErrorData, ReconData, ReferenceData};
 use crate::scene::panels::PanelKind;
 use crate::ui::gpu::DisplayRange;
-use crate::ui::results::Slot;
+use crate::ui::results::scene_of;
 use crate::ui::view::{ViewState, ZoneImage};
 use crate::ui::widgets::status::{error_label, time_label};
 use eframe::egui::{self, Color32};
@@ -31,10 +32,8 @@ impl Panel for ZonePlatePanel {
     fn ui(&mut self, ui: &mut egui::Ui, cx: &mut PanelCx<'_>) {
         let (ci, side) = (cx.column, cx.side);
         ui.horizontal_wrapped(|ui| {
-            let lab = cx
-                .get::<ReconData>()
-                .shown()
-                .map_or(&*cx.scene, |r| r.scene.as_ref());
+            let slot = cx.get::<ReconData>();
+            let lab = slot.status().and_then(scene_of).unwrap_or(&*cx.scene);
             ui.label(format!("{} {}²", lab.signal.name(), lab.recon.size));
             ui.selectable_value(&mut cx.view.zone_image, ZoneImage::Reconstruction, "recon");
             ui.selectable_value(&mut cx.view.zone_image, ZoneImage::Reference, "reference");
@@ -60,15 +59,15 @@ impl Panel for ZonePlatePanel {
         let zone = cx.view.zone_image;
         let (r, image, range, name) = match zone {
             ZoneImage::Reconstruction => match cx.get::<ReconData>() {
-                Slot::Ready(r, d) => (r, d.image.clone(), grey, "reconstruction"),
+                Slot::Ready { status: r, data: d } => (r, d.image.clone(), grey, "reconstruction"),
                 other => return not_ready(ui, zone, error_effect, &other),
             },
             ZoneImage::Reference => match cx.get::<ReferenceData>() {
-                Slot::Ready(r, d) => (r, d.image.clone(), grey, "reference"),
+                Slot::Ready { status: r, data: d } => (r, d.image.clone(), grey, "reference"),
                 other => return not_ready(ui, zone, error_effect, &other),
             },
             ZoneImage::ErrorSpectrum => match cx.get::<ErrorData>() {
-                Slot::Ready(r, d) => match &d.spectrum {
+                Slot::Ready { status: r, data: d } => match &d.spectrum {
                     Some((img, lo, hi)) => (
                         r,
                         img.clone(),
@@ -87,7 +86,7 @@ impl Panel for ZonePlatePanel {
                 other => return not_ready(ui, zone, error_effect, &other),
             },
             ZoneImage::Error => match cx.get::<ErrorData>() {
-                Slot::Ready(r, d) => (
+                Slot::Ready { status: r, data: d } => (
                     r,
                     d.image.clone(),
                     DisplayRange {
@@ -111,7 +110,7 @@ impl Panel for ZonePlatePanel {
             window,
             side,
         );
-        time_label(ui, r, cx.view.show_timings);
+        time_label(ui, &r, cx.view.show_timings);
         if let Some(d) = cx.get::<ReconData>().data() {
             if d.zero_weight > 0 {
                 ui.colored_label(
@@ -140,7 +139,11 @@ impl Panel for ZonePlatePanel {
                      W/8 cycles per image; blue-noise error (zsobol) keeps it small",
                 );
         }
-        if let Slot::Ready(r, rf) = cx.get::<ReferenceData>() {
+        if let Slot::Ready {
+            status: r,
+            data: rf,
+        } = cx.get::<ReferenceData>()
+        {
             {
                 // The node's own words: "≤" for a bound, "≈" for an estimate.
                 let own = r.accuracy.as_ref().map(|a| format!(", {a}"));
@@ -160,9 +163,9 @@ impl Panel for ZonePlatePanel {
 
 /// What the panel says when the image chosen has no data: the node's error, that the error
 /// effect is off (reference and error need it), or a spinner while it is computed.
-fn not_ready<T>(ui: &mut egui::Ui, zone: ZoneImage, error_effect: bool, slot: &Slot<'_, T>) {
+fn not_ready<T>(ui: &mut egui::Ui, zone: ZoneImage, error_effect: bool, slot: &Slot<T>) {
     match slot.error() {
-        Some(e) => error_label(ui, "reconstruction", e),
+        Some(e) => error_label(ui, "reconstruction", &e),
         None if zone != ZoneImage::Reconstruction && !error_effect => {
             ui.small("reference/error effect is off");
         }

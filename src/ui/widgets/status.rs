@@ -1,12 +1,12 @@
 //! A result's status under its panel: wall time and accuracy, progress while it refines, or
 //! the error.
 
-use crate::ui::results::Shown;
+use crate::model::NodeStatus;
 use eframe::egui::{self, Color32};
 
 /// The node's wall time (when `show_timings`) and accuracy; while it refines, a progress bar
 /// with "refining i/n" and its current error estimate.
-pub fn time_label(ui: &mut egui::Ui, r: &Shown, show_timings: bool) {
+pub fn time_label(ui: &mut egui::Ui, r: &NodeStatus, show_timings: bool) {
     if let Some(p) = r.progress {
         let text = match &r.accuracy {
             Some(a) => format!("refining {}/{}, {a}", p.done, p.total),
