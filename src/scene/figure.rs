@@ -128,14 +128,20 @@ fn slot_of<'a, T: 'a, R: HeldResult>(
     }
 }
 
-/// A column's data from its node results (the GUI's, or what `Evaluator::evaluate` sent for
-/// the column): every node the panels and figures read as a [`Slot`] (data with status,
-/// error, or missing), and every node's status for the cost view. The one place a column's
-/// node values become plain data.
-pub fn column_data<R: HeldResult>(results: &HashMap<NodeKind, R>) -> ColumnData {
-    use super::graph::NodeValue as V;
-    macro_rules! slots {
-        ($($field:ident <- $kind:ident),* $(,)?) => {
+/// Expands the node list (`compute::node_list!`) into [`column_data`]: one slot per node,
+/// its `ColumnData` field named as the node's file.
+macro_rules! column_slots {
+    (
+        kinds: $kinds:tt
+        table: $table:tt
+        columns: [$($(#[$doc:meta])* $kind:ident($ty:ty) $field:ident;)*]
+    ) => {
+        /// A column's data from its node results (the GUI's, or what `Evaluator::evaluate`
+        /// sent for the column): every node as a [`Slot`] (data with status, error, or
+        /// missing), and every node's status for the cost view. The one place a column's node
+        /// values become plain data.
+        pub fn column_data<R: HeldResult>(results: &HashMap<NodeKind, R>) -> ColumnData {
+            use super::graph::NodeValue as V;
             ColumnData {
                 $($field: slot_of(results.get(&NodeKind::$kind), |v| match v {
                     V::$kind(d) => Some(d),
@@ -150,21 +156,11 @@ pub fn column_data<R: HeldResult>(results: &HashMap<NodeKind, R>) -> ColumnData 
                     })
                     .collect(),
             }
-        };
-    }
-    slots! {
-        points <- Points,
-        statistics <- Statistics,
-        spectrum <- Spectrum,
-        reconstruction <- Reconstruction,
-        reference <- Reference,
-        error <- Error,
-        response <- Response,
-        convergence <- Convergence,
-        theorem <- Theorem,
-        integration <- Integration,
-    }
+        }
+    };
 }
+
+super::compute::node_list!(column_slots);
 
 /// Every column's data ([`column_data`]), with column 0 also holding the integration plot:
 /// the studies of all columns, labelled with their titles.

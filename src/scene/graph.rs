@@ -62,6 +62,7 @@ macro_rules! node_table {
     (
         kinds: $kinds:tt
         table: [$($kind:ident $file:ident $disk:literal;)*]
+        $($rest:tt)*
     ) => {
         /// The node table, indexed by `NodeKind as usize`.
         pub static NODES: [NodeDef; NodeKind::ALL.len()] = [$(

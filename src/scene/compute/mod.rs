@@ -42,7 +42,9 @@ pub use spectrum::spectrum_data;
 ///                           // no cache (the disk cache above all) serves the old ones
 ///     disk_cached: bool,    // whether its result is kept on disk across runs
 ///     bytes: |data| …,      // the approximate heap bytes of its data (the cache budget)
-///     file: module,         // its file here: `inputs`, `run` (the job) and `estimate`
+///     file: module,         // its file here: `inputs`, `run` (the job) and `estimate`;
+///                           // also its field in `model::ColumnData`, where panels and
+///                           // figures read its data
 /// }
 /// ```
 macro_rules! node_list {
@@ -182,8 +184,9 @@ macro_rules! node_list {
 pub(crate) use node_list;
 
 /// Reads the entries of [`node_list!`] (the one place their grammar is written) and hands
-/// `$then!` two views of them: the vocabulary (`kinds`: doc, kind, data type, name, version,
-/// bytes) and the table (`table`: kind, file, disk caching).
+/// `$then!` three views of them: the vocabulary (`kinds`: doc, kind, data type, name, version,
+/// bytes), the table (`table`: kind, file, disk caching) and the column data (`columns`: doc,
+/// kind, data type and its `model::ColumnData` field, named as the node's file).
 macro_rules! node_project {
     ($then:path; $(
         $(#[$doc:meta])*
@@ -198,6 +201,7 @@ macro_rules! node_project {
         $then! {
             kinds: [$($(#[$doc])* $kind($ty) $name $version ($bytes);)*]
             table: [$($kind $file $disk;)*]
+            columns: [$($(#[$doc])* $kind($ty) $file;)*]
         }
     };
 }
