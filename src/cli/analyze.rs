@@ -84,6 +84,11 @@ pub struct AnalyzeArgs {
     /// Map the points' bounding box onto [0,1)² instead of rejecting points outside (with --points).
     #[arg(long, conflicts_with = "pattern")]
     pub normalize: bool,
+    /// With --points: analyse the 2D projection onto columns i and j (0-based) of files of
+    /// any number of columns, e.g. `--project 3,7`. Without it, a file of other than two
+    /// columns gets the d-dimensional measures (see the README).
+    #[arg(long, value_name = "I,J", requires = "points")]
+    pub project: Option<String>,
     /// Spectrum size M (M×M integer frequencies).
     #[arg(long, default_value_t = 256)]
     pub size: usize,
@@ -203,7 +208,11 @@ fn wildcard_match(pattern: &[u8], name: &[u8]) -> bool {
 
 /// Reads the point files of `--points` (one realization each): the same N in every file, at
 /// most [`MAX_N`] points in all.
-fn read_point_files(files: &[String], normalize: bool) -> Result<Vec<Vec<DVec2>>, CliError> {
+fn read_point_files(
+    files: &[String],
+    normalize: bool,
+    project: Option<&str>,
+) -> Result<Vec<Vec<DVec2>>, CliError> {
     let mode = if normalize {
         OutOfRange::NormalizeToBoundingBox
     } else {
@@ -212,6 +221,11 @@ fn read_point_files(files: &[String], normalize: bool) -> Result<Vec<Vec<DVec2>>
     let mut sets: Vec<Vec<DVec2>> = Vec::with_capacity(files.len().min(1024));
     let mut total = 0usize;
     for path in files {
+        if project.is_some() {
+            let cube = super::analyze_cube::read(path, normalize)?;
+            sets.push(super::analyze_cube::plane(path, &cube.points, project)?);
+            continue;
+        }
         let file = super::open_input(Path::new(path))?;
         // Streamed with a size and line-length limit: a binary or endless file is refused
         // after at most one line.
@@ -370,6 +384,14 @@ pub fn run(args: &AnalyzeArgs, session: &Session) -> Result<(), CliError> {
         ("--raps", args.raps.as_deref()),
         ("--rdf", args.rdf.as_deref()),
     ])?;
+    // A file of other than two columns (without --project): the d-dimensional measures.
+    if let (Some(first), None) = (args.points.first(), &args.project) {
+        let files = expand_points(std::slice::from_ref(first))?;
+        let cube = super::analyze_cube::read(&files[0], args.normalize)?;
+        if cube.points.dims() != 2 {
+            return super::analyze_cube::run(args, &files[0], &cube.points, session);
+        }
+    }
     let t0 = Instant::now();
     let input = read_input(args)?;
     let read_ms = t0.elapsed().as_secs_f64() * 1e3;
@@ -388,7 +410,7 @@ pub fn read_input(args: &AnalyzeArgs) -> Result<Input, CliError> {
                 args.realizations
             )));
         }
-        let sets = read_point_files(&files, args.normalize)?;
+        let sets = read_point_files(&files, args.normalize, args.project.as_deref())?;
         return Ok(Input::Files { files, sets });
     }
     let name = args.pattern.as_deref().unwrap_or_default();

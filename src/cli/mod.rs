@@ -2,6 +2,7 @@
 //! status 2 and one line naming the field and what is allowed; I/O failures exit with 1.
 
 pub mod analyze;
+pub mod analyze_cube;
 pub mod converge;
 pub mod filter;
 pub mod gui;

@@ -123,7 +123,7 @@ fn points_text(
 }
 
 /// `--project i,j`: two different dimensions below `dims`, else one line naming the range.
-fn parse_project(text: &str, dims: usize) -> Result<(usize, usize), CliError> {
+pub(super) fn parse_project(text: &str, dims: usize) -> Result<(usize, usize), CliError> {
     let bad = || {
         CliError::Usage(format!(
             "--project {}: must be two different dimensions i,j in 0..={} (dims = {dims})",

@@ -39,6 +39,7 @@
 //! endless input (`/dev/zero`, a FIFO that never ends) is refused without holding more than
 //! the points allowed.
 
+use crate::core::cube::{CubeError, CubePoints};
 use crate::core::pattern::ONE_MINUS_EPSILON;
 use glam::DVec2;
 use std::io::Read;
@@ -139,6 +140,160 @@ pub enum PointsFileError {
     /// The file could not be read.
     #[error("{path}: {message}")]
     Io { path: String, message: String },
+    /// A coordinate of a file of other than two columns lies outside [0,1].
+    #[error(
+        "{at}: x{dim} = {value} is outside [0,1]; use the bounding-box normalisation to map it in"
+    )]
+    OutsideCube {
+        at: Position,
+        dim: usize,
+        value: f64,
+    },
+    /// The bounding-box normalisation was asked for a set of other than two columns whose
+    /// bounding box is one point.
+    #[error("the bounding box of the {n} point(s) is a single point: there is no box to map onto [0,1)^{dims}")]
+    DegenerateCubeBox { n: usize, dims: usize },
+    /// The points do not make a d-dimensional point set (beyond the limits of [`CubePoints`]).
+    #[error(transparent)]
+    Cube(#[from] CubeError),
+}
+
+/// The longest line accepted in a file of any number of columns (1024 coordinates of up to
+/// 31 bytes each, with their separators).
+pub const MAX_CUBE_LINE_BYTES: usize = 32 * 1024;
+
+/// A point file of any number of columns as read: the points in [0,1)^d, the format, and how
+/// many points had a coordinate exactly 1 (taken as `1 − 2⁻⁵³`).
+#[derive(Debug, Clone, PartialEq)]
+pub struct CubeRead {
+    /// The points; `dims` is the file's column count (2 for `.rps`).
+    pub points: CubePoints,
+    /// The format the file was read as.
+    pub format: PointFormat,
+    /// Points with a coordinate exactly 1 (0 with the bounding-box normalisation).
+    pub on_closed_edge: usize,
+}
+
+/// Reads a point file of any number of columns (see [`read_cube_named`]). Errors do not name
+/// the file; callers prefix its path.
+pub fn read_cube_file(path: &Path, out_of_range: OutOfRange) -> Result<CubeRead, PointsFileError> {
+    let io = |e: std::io::Error| PointsFileError::Io {
+        path: path.display().to_string(),
+        message: e.to_string(),
+    };
+    let file = std::fs::File::open(path).map_err(io)?;
+    read_cube_named(file, path, out_of_range).map_err(|e| match e {
+        PointsFileError::Io { message, .. } => PointsFileError::Io {
+            path: path.display().to_string(),
+            message,
+        },
+        e => e,
+    })
+}
+
+/// Parses the text of a point file of any number of columns (see [`read_cube_named`]).
+pub fn parse_cube(text: &str, out_of_range: OutOfRange) -> Result<CubePoints, PointsFileError> {
+    read_cube_named(text.as_bytes(), Path::new(""), out_of_range).map(|r| r.points)
+}
+
+/// Reads a point file of any number of columns, the one reader of [`read_points_named`] with
+/// the columns the file declares: text with a header of D column names (`x0,x1,…`, or any
+/// names) or, without one, the column count of its first row, every row then holding exactly
+/// that many (an error names the line, the count expected and where it was set); `.npy` of
+/// shape (N, D) or (N,); `.rps` (always two). At most [`crate::core::cube::MAX_DIMS`] columns,
+/// N·D ≤ [`crate::core::cube::MAX_COORDS`], lines of at most [`MAX_CUBE_LINE_BYTES`]; a single
+/// integer on the first line is a count, as in 2D (a one-column file whose first value is
+/// exactly 0 or 1 needs a header). A file of two columns gives exactly what
+/// [`read_points_named`] gives (the same checks, errors and normalisation); for other counts
+/// a coordinate exactly 1 is taken as `1 − 2⁻⁵³` as in 2D, one outside [0,1] is an error naming
+/// its line (or point) and dimension, and the bounding-box normalisation maps the box onto
+/// [0,1)^D keeping the aspect ratio (every axis scaled by the largest extent).
+pub fn read_cube_named(
+    reader: impl std::io::Read,
+    name: &Path,
+    out_of_range: OutOfRange,
+) -> Result<CubeRead, PointsFileError> {
+    let raw = read_raw(
+        reader,
+        name,
+        MAX_FILE_BYTES,
+        crate::core::pattern::MAX_N,
+        Columns::Any,
+    )?;
+    if raw.dims == 2 {
+        let r = finish(raw, out_of_range)?;
+        return Ok(CubeRead {
+            points: CubePoints::from_2d(&r.points),
+            format: r.format,
+            on_closed_edge: r.on_closed_edge,
+        });
+    }
+    let dims = raw.dims;
+    let n = raw.coords.len() / dims;
+    if n == 0 {
+        return Err(PointsFileError::Empty);
+    }
+    let (coords, on_closed_edge) = match out_of_range {
+        OutOfRange::Reject => {
+            if let Some(k) = raw.coords.iter().position(|v| !(0.0..=1.0).contains(v)) {
+                return Err(PointsFileError::OutsideCube {
+                    at: raw.position(k / dims),
+                    dim: k % dims,
+                    value: raw.coords[k],
+                });
+            }
+            let on_edge = raw
+                .coords
+                .chunks_exact(dims)
+                .filter(|p| p.contains(&1.0))
+                .count();
+            let coords = raw
+                .coords
+                .into_iter()
+                .map(|v| if v == 1.0 { ONE_MINUS_EPSILON } else { v })
+                .collect();
+            (coords, on_edge)
+        }
+        OutOfRange::NormalizeToBoundingBox => (normalize_cube(dims, &raw.coords)?, 0),
+    };
+    Ok(CubeRead {
+        points: CubePoints::new(dims, coords)?,
+        format: raw.format,
+        on_closed_edge,
+    })
+}
+
+/// [`normalize_to_bounding_box`] in `dims` dimensions, the same arithmetic per axis.
+fn normalize_cube(dims: usize, coords: &[f64]) -> Result<Vec<f64>, PointsFileError> {
+    let n = coords.len() / dims;
+    let mut lo = vec![f64::INFINITY; dims];
+    let mut hi = vec![f64::NEG_INFINITY; dims];
+    for p in coords.chunks_exact(dims) {
+        for k in 0..dims {
+            lo[k] = lo[k].min(p[k]);
+            hi[k] = hi[k].max(p[k]);
+        }
+    }
+    let half_extent = (0..dims)
+        .map(|k| hi[k] * 0.5 - lo[k] * 0.5)
+        .fold(f64::NEG_INFINITY, f64::max);
+    if half_extent.is_nan() || half_extent <= 0.0 {
+        return Err(PointsFileError::DegenerateCubeBox { n, dims });
+    }
+    let inverse = 1.0 / half_extent;
+    Ok(coords
+        .iter()
+        .enumerate()
+        .map(|(i, &v)| {
+            let half = v * 0.5 - lo[i % dims] * 0.5;
+            let q = if inverse.is_finite() {
+                half * inverse
+            } else {
+                half / half_extent
+            };
+            q.clamp(0.0, ONE_MINUS_EPSILON)
+        })
+        .collect())
 }
 
 /// The largest text point file read: 1 GiB (16 777 216 points at up to 64 bytes a line).
@@ -264,13 +419,14 @@ pub fn read_points_named(
     name: &Path,
     out_of_range: OutOfRange,
 ) -> Result<PointsRead, PointsFileError> {
-    read_limited(
+    let raw = read_raw(
         reader,
         name,
-        out_of_range,
         MAX_FILE_BYTES,
         crate::core::pattern::MAX_N,
-    )
+        Columns::Two,
+    )?;
+    finish(raw, out_of_range)
 }
 
 fn io_error(e: std::io::Error) -> PointsFileError {
@@ -282,10 +438,21 @@ fn io_error(e: std::io::Error) -> PointsFileError {
 
 /// Points as parsed, before the range check: each with where it stands in the file.
 struct Raw {
-    points: Vec<DVec2>,
+    /// Coordinates per point.
+    dims: usize,
+    /// Every coordinate, row-major.
+    coords: Vec<f64>,
     /// The line of each point (text), or empty (binary: the index is the position).
     lines: Vec<usize>,
     format: PointFormat,
+}
+
+/// How many columns a reader takes: exactly two (the 2D API: its messages name `x y`), or any
+/// number the file declares (a header's names, a `.npy` shape, the first row).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Columns {
+    Two,
+    Any,
 }
 
 impl Raw {
@@ -298,6 +465,7 @@ impl Raw {
 }
 
 /// [`read_points_named`] with other limits (bytes of text read, points kept).
+#[cfg(test)]
 fn read_limited(
     reader: impl std::io::Read,
     name: &Path,
@@ -305,6 +473,21 @@ fn read_limited(
     max_bytes: u64,
     max: usize,
 ) -> Result<PointsRead, PointsFileError> {
+    finish(
+        read_raw(reader, name, max_bytes, max, Columns::Two)?,
+        out_of_range,
+    )
+}
+
+/// Reads a file's points before the range check: the format by content and name, at most
+/// `max_bytes` of text and `max` points, the columns `columns` allows.
+fn read_raw(
+    reader: impl std::io::Read,
+    name: &Path,
+    max_bytes: u64,
+    max: usize,
+    columns: Columns,
+) -> Result<Raw, PointsFileError> {
     let mut reader = reader;
     // The first bytes decide: the .npy magic, whatever the name.
     let mut head = [0u8; 6];
@@ -321,33 +504,38 @@ fn read_limited(
     let ext = name
         .extension()
         .map(|e| e.to_string_lossy().to_ascii_lowercase());
-    let raw = if &head[..got] == NPY_MAGIC {
-        read_npy(stream, max)?
+    if &head[..got] == NPY_MAGIC {
+        read_npy(stream, max, columns)
     } else if ext.as_deref() == Some("npy") {
-        return Err(PointsFileError::Binary {
+        Err(PointsFileError::Binary {
             format: PointFormat::Npy,
             message: format!(
                 "the file does not start with the NumPy magic `\\x93NUMPY` ({EXPECTED_FORMATS})"
             ),
-        });
+        })
     } else if ext.as_deref() == Some("rps") {
-        read_rps(stream, max)?
+        read_rps(stream, max)
     } else {
-        read_text(stream, max_bytes, max)?
-    };
-    finish(raw, out_of_range)
+        read_text(stream, max_bytes, max, columns)
+    }
 }
 
 /// The range check (or the normalisation) every format shares.
 fn finish(raw: Raw, out_of_range: OutOfRange) -> Result<PointsRead, PointsFileError> {
-    if raw.points.is_empty() {
+    debug_assert_eq!(raw.dims, 2);
+    let points: Vec<DVec2> = raw
+        .coords
+        .chunks_exact(2)
+        .map(|c| DVec2::new(c[0], c[1]))
+        .collect();
+    if points.is_empty() {
         return Err(PointsFileError::Empty);
     }
     match out_of_range {
         OutOfRange::Reject => {
             let mut on_closed_edge = 0;
             let edge = |v: f64| if v == 1.0 { ONE_MINUS_EPSILON } else { v };
-            for (i, p) in raw.points.iter().enumerate() {
+            for (i, p) in points.iter().enumerate() {
                 let ok = |v: f64| (0.0..=1.0).contains(&v);
                 if !ok(p.x) || !ok(p.y) {
                     return Err(PointsFileError::OutOfRange {
@@ -361,12 +549,12 @@ fn finish(raw: Raw, out_of_range: OutOfRange) -> Result<PointsRead, PointsFileEr
                 }
             }
             let points = if on_closed_edge > 0 {
-                raw.points
+                points
                     .iter()
                     .map(|p| DVec2::new(edge(p.x), edge(p.y)))
                     .collect()
             } else {
-                raw.points
+                points
             };
             Ok(PointsRead {
                 points,
@@ -375,7 +563,7 @@ fn finish(raw: Raw, out_of_range: OutOfRange) -> Result<PointsRead, PointsFileEr
             })
         }
         OutOfRange::NormalizeToBoundingBox => Ok(PointsRead {
-            points: normalize_to_bounding_box(&raw.points)?,
+            points: normalize_to_bounding_box(&points)?,
             format: raw.format,
             on_closed_edge: 0,
         }),
@@ -387,10 +575,20 @@ fn read_text(
     reader: impl std::io::Read,
     max_bytes: u64,
     max: usize,
+    columns: Columns,
 ) -> Result<Raw, PointsFileError> {
     use std::io::BufRead;
+    let max_line = match columns {
+        Columns::Two => MAX_LINE_BYTES,
+        Columns::Any => MAX_CUBE_LINE_BYTES,
+    };
     let mut reader = std::io::BufReader::new(reader.take(max_bytes + 1));
-    let mut points: Vec<DVec2> = Vec::new();
+    let mut coords: Vec<f64> = Vec::new();
+    // Columns::Two: 2. Columns::Any: set by the header or the first row, with that line.
+    let mut dims: Option<(usize, usize, &str)> = match columns {
+        Columns::Two => Some((2, 0, "")),
+        Columns::Any => None,
+    };
     let mut lines: Vec<usize> = Vec::new();
     let mut count_line: Option<(usize, usize)> = None;
     let mut first_content = true;
@@ -401,7 +599,7 @@ fn read_text(
         buf.clear();
         // At most MAX_LINE_BYTES + 1 bytes of one line are ever held.
         let n = (&mut reader)
-            .take(MAX_LINE_BYTES as u64 + 1)
+            .take(max_line as u64 + 1)
             .read_until(b'\n', &mut buf)
             .map_err(io_error)?;
         if n == 0 {
@@ -412,10 +610,10 @@ fn read_text(
             return Err(PointsFileError::TooLarge { max_bytes });
         }
         let ended = buf.last() == Some(&b'\n');
-        if !ended && n > MAX_LINE_BYTES {
+        if !ended && n > max_line {
             return Err(PointsFileError::LineTooLong {
                 line,
-                max: MAX_LINE_BYTES,
+                max: max_line,
             });
         }
         let mut bytes: &[u8] = &buf;
@@ -439,19 +637,37 @@ fn read_text(
         };
         if first_content {
             first_content = false;
-            // A header (two column names) or a count line.
+            // A header (column names: two, or any number) or a count line.
             if fields.iter().all(|f| f.parse::<f64>().is_err()) {
-                if fields.len() == 2 && fields.iter().all(|f| is_column_name(f)) {
-                    continue;
+                let names = fields.iter().all(|f| is_column_name(f));
+                match columns {
+                    Columns::Two if names && fields.len() == 2 => continue,
+                    Columns::Any if names => {
+                        check_columns(fields.len(), line)?;
+                        dims = Some((fields.len(), line, "the header on line"));
+                        continue;
+                    }
+                    Columns::Two => {
+                        return Err(PointsFileError::Malformed {
+                            line,
+                            message: format!(
+                                "expected a header of two column names (`x,y`), a count or a point, found `{t}`"
+                            ),
+                        })
+                    }
+                    Columns::Any => {
+                        return Err(PointsFileError::Malformed {
+                            line,
+                            message: format!(
+                                "expected a header of column names (`x0,x1,…`), a count or a point, found `{t}`"
+                            ),
+                        })
+                    }
                 }
-                return Err(PointsFileError::Malformed {
-                    line,
-                    message: format!(
-                        "expected a header of two column names (`x,y`), a count or a point, found `{t}`"
-                    ),
-                });
             }
-            if fields.len() == 1 {
+            // In any-column files a single value that is not a count is a 1D point.
+            let count_like = columns == Columns::Two || fields[0].parse::<usize>().is_ok();
+            if fields.len() == 1 && count_like {
                 let declared =
                     fields[0]
                         .parse::<usize>()
@@ -463,7 +679,26 @@ fn read_text(
                 continue;
             }
         }
-        if fields.len() != 2 {
+        let (want, since, what) = match dims {
+            Some(d) => d,
+            None => {
+                check_columns(fields.len(), line)?;
+                dims = Some((fields.len(), line, "line"));
+                (fields.len(), line, "line")
+            }
+        };
+        if columns == Columns::Any && fields.len() != want {
+            let message = if fields.len() > want && fields.last() == Some(&"") {
+                format!("a trailing separator after the coordinates in `{t}`")
+            } else {
+                format!(
+                    "expected {want} coordinates (the columns of {what} {since}), found {} in `{t}`",
+                    fields.len()
+                )
+            };
+            return Err(PointsFileError::Malformed { line, message });
+        }
+        if fields.len() != want {
             let message = if fields.len() > 2 && fields.last() == Some(&"") {
                 format!("a trailing separator after the coordinates in `{t}`")
             } else if fields.len() > 2 {
@@ -476,7 +711,6 @@ fn read_text(
             };
             return Err(PointsFileError::Malformed { line, message });
         }
-        let mut xy = [0.0f64; 2];
         for (col, f) in fields.iter().enumerate() {
             let v: f64 = f.parse().map_err(|_| PointsFileError::Malformed {
                 line,
@@ -488,34 +722,48 @@ fn read_text(
                     message: format!("column {}: `{f}` is not finite", col + 1),
                 });
             }
-            xy[col] = v;
+            coords.push(v);
         }
-        if points.len() >= max {
+        // At most `max` points, and n·dims within the coordinate limit.
+        let max = max.min(crate::core::cube::MAX_COORDS / want);
+        if lines.len() >= max {
             return Err(PointsFileError::TooMany {
-                found: points.len() + 1,
+                found: lines.len() + 1,
                 max,
             });
         }
-        points.push(DVec2::new(xy[0], xy[1]));
         lines.push(line);
     }
-    if points.is_empty() {
+    if lines.is_empty() {
         return Err(PointsFileError::Empty);
     }
     if let Some((line, declared)) = count_line {
-        if declared != points.len() {
+        if declared != lines.len() {
             return Err(PointsFileError::CountMismatch {
                 line,
                 declared,
-                found: points.len(),
+                found: lines.len(),
             });
         }
     }
     Ok(Raw {
-        points,
+        dims: dims.map_or(2, |d| d.0),
+        coords,
         lines,
         format: PointFormat::Text,
     })
+}
+
+/// Checks a file's column count against [`crate::core::cube::MAX_DIMS`].
+fn check_columns(k: usize, line: usize) -> Result<(), PointsFileError> {
+    use crate::core::cube::MAX_DIMS;
+    if k > MAX_DIMS {
+        return Err(PointsFileError::Malformed {
+            line,
+            message: format!("{k} columns: a point has at most {MAX_DIMS} coordinates (dims)"),
+        });
+    }
+    Ok(())
 }
 
 /// The inside of a row wrapped as pmj-cpp writes it, `(x, y),` (or `[x, y],`): the text
@@ -563,7 +811,7 @@ fn read_full(reader: &mut impl std::io::Read, buf: &mut [u8]) -> Result<usize, P
 }
 
 /// Checks a coordinate read from a binary file: finite.
-fn binary_value(format: PointFormat, v: f64, i: usize, axis: char) -> Result<f64, PointsFileError> {
+fn binary_value(format: PointFormat, v: f64, i: usize, axis: &str) -> Result<f64, PointsFileError> {
     if v.is_finite() {
         Ok(v)
     } else {
@@ -578,15 +826,16 @@ fn binary_value(format: PointFormat, v: f64, i: usize, axis: char) -> Result<f64
 fn read_rps(reader: impl std::io::Read, max: usize) -> Result<Raw, PointsFileError> {
     let format = PointFormat::Rps;
     let mut reader = std::io::BufReader::new(reader);
-    let mut points = Vec::new();
+    let mut coords: Vec<f64> = Vec::new();
     let mut pair = [0u8; 8];
     loop {
         let got = read_full(&mut reader, &mut pair)?;
         if got == 0 {
             break;
         }
+        let i = coords.len() / 2;
         if got < 8 {
-            let bytes = points.len() as u64 * 8 + got as u64;
+            let bytes = i as u64 * 8 + got as u64;
             return Err(PointsFileError::Binary {
                 format,
                 message: format!(
@@ -594,22 +843,17 @@ fn read_rps(reader: impl std::io::Read, max: usize) -> Result<Raw, PointsFileErr
                 ),
             });
         }
-        if points.len() >= max {
-            return Err(PointsFileError::TooMany {
-                found: points.len() + 1,
-                max,
-            });
+        if i >= max {
+            return Err(PointsFileError::TooMany { found: i + 1, max });
         }
-        let i = points.len();
         let x = f32::from_le_bytes([pair[0], pair[1], pair[2], pair[3]]) as f64;
         let y = f32::from_le_bytes([pair[4], pair[5], pair[6], pair[7]]) as f64;
-        points.push(DVec2::new(
-            binary_value(format, x, i, 'x')?,
-            binary_value(format, y, i, 'y')?,
-        ));
+        coords.push(binary_value(format, x, i, "x")?);
+        coords.push(binary_value(format, y, i, "y")?);
     }
     Ok(Raw {
-        points,
+        dims: 2,
+        coords,
         lines: Vec::new(),
         format,
     })
@@ -626,10 +870,17 @@ struct NpyHeader {
     big_endian: bool,
     fortran: bool,
     n: usize,
+    /// Columns: 2 for `(N, 2)`, D for `(N, D)`, 1 for `(N,)`.
+    dims: usize,
 }
 
-/// Reads a NumPy `.npy` file of shape (N, 2), float32 or float64.
-fn read_npy(reader: impl std::io::Read, max: usize) -> Result<Raw, PointsFileError> {
+/// Reads a NumPy `.npy` file of shape (N, 2) (with [`Columns::Any`]: (N, D) or (N,)),
+/// float32 or float64.
+fn read_npy(
+    reader: impl std::io::Read,
+    max: usize,
+    columns: Columns,
+) -> Result<Raw, PointsFileError> {
     let format = PointFormat::Npy;
     let err = |message: String| PointsFileError::Binary { format, message };
     let mut reader = std::io::BufReader::new(reader);
@@ -671,15 +922,17 @@ fn read_npy(reader: impl std::io::Read, max: usize) -> Result<Raw, PointsFileErr
         )));
     }
     let text = std::str::from_utf8(&header).map_err(|_| err("the header is not text".into()))?;
-    let h = parse_npy_header(text).map_err(|m| err(format!("header: {m}")))?;
+    let h = parse_npy_header(text, columns).map_err(|m| err(format!("header: {m}")))?;
     if h.n == 0 {
         return Err(PointsFileError::Empty);
     }
+    let max = max.min(crate::core::cube::MAX_COORDS / h.dims);
     if h.n > max {
         return Err(PointsFileError::TooMany { found: h.n, max });
     }
     // Grows with the values actually read: the declared shape never sizes an allocation.
-    let total = 2 * h.n;
+    let d = h.dims;
+    let total = d * h.n;
     let mut values: Vec<f64> = Vec::with_capacity(total.min(1 << 16));
     let mut word = [0u8; 8];
     let w = h.width;
@@ -687,7 +940,7 @@ fn read_npy(reader: impl std::io::Read, max: usize) -> Result<Raw, PointsFileErr
         let got = read_full(&mut reader, &mut word[..w])?;
         if got < w {
             return Err(err(format!(
-                "the data ends after {} of the {} values of shape ({}, 2): the file is truncated",
+                "the data ends after {} of the {} values of shape ({}, {d}): the file is truncated",
                 values.len(),
                 total,
                 h.n
@@ -704,24 +957,29 @@ fn read_npy(reader: impl std::io::Read, max: usize) -> Result<Raw, PointsFileErr
     let mut extra = [0u8; 1];
     if read_full(&mut reader, &mut extra)? > 0 {
         return Err(err(format!(
-            "bytes after the {} values of shape ({}, 2): not what numpy.save writes",
+            "bytes after the {} values of shape ({}, {d}): not what numpy.save writes",
             total, h.n
         )));
     }
-    let mut points = Vec::with_capacity(h.n);
+    let mut coords = Vec::with_capacity(total);
     for i in 0..h.n {
-        let (x, y) = if h.fortran {
-            (values[i], values[h.n + i])
-        } else {
-            (values[2 * i], values[2 * i + 1])
-        };
-        points.push(DVec2::new(
-            binary_value(format, x, i, 'x')?,
-            binary_value(format, y, i, 'y')?,
-        ));
+        for k in 0..d {
+            let v = if h.fortran {
+                values[k * h.n + i]
+            } else {
+                values[d * i + k]
+            };
+            let axis = match (d, k) {
+                (2, 0) => "x".to_string(),
+                (2, _) => "y".to_string(),
+                _ => format!("x{k}"),
+            };
+            coords.push(binary_value(format, v, i, &axis)?);
+        }
     }
     Ok(Raw {
-        points,
+        dims: d,
+        coords,
         lines: Vec::new(),
         format,
     })
@@ -730,7 +988,7 @@ fn read_npy(reader: impl std::io::Read, max: usize) -> Result<Raw, PointsFileErr
 /// Parses the Python dict literal of a `.npy` header:
 /// `{'descr': '<f8', 'fortran_order': False, 'shape': (N, 2), }` (keys in any order, each
 /// once, no others, as NumPy requires).
-fn parse_npy_header(text: &str) -> Result<NpyHeader, String> {
+fn parse_npy_header(text: &str, columns: Columns) -> Result<NpyHeader, String> {
     let t = text.trim_end_matches(['\n', ' ', '\0']).trim_start();
     let inner = t
         .strip_prefix('{')
@@ -814,11 +1072,20 @@ fn parse_npy_header(text: &str) -> Result<NpyHeader, String> {
             ))
         }
     };
-    let n = match shape.as_slice() {
-        [n, 2] => *n,
-        dims => {
+    use crate::core::cube::MAX_DIMS;
+    let (n, dims) = match (columns, shape.as_slice()) {
+        (_, [n, 2]) => (*n, 2),
+        (Columns::Any, [n, d]) if (1..=MAX_DIMS).contains(d) => (*n, *d),
+        (Columns::Any, [n]) => (*n, 1),
+        (columns, dims) => {
             let d: Vec<String> = dims.iter().map(|d| d.to_string()).collect();
-            return Err(format!("shape ({}): must be (N, 2)", d.join(", ")));
+            return Err(match columns {
+                Columns::Two => format!("shape ({}): must be (N, 2)", d.join(", ")),
+                Columns::Any => format!(
+                    "shape ({}): must be (N, D) with 1 ≤ D ≤ {MAX_DIMS} (dims), or (N,)",
+                    d.join(", ")
+                ),
+            });
         }
     };
     Ok(NpyHeader {
@@ -826,6 +1093,7 @@ fn parse_npy_header(text: &str) -> Result<NpyHeader, String> {
         big_endian,
         fortran,
         n,
+        dims,
     })
 }
 

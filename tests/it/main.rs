@@ -6,6 +6,7 @@ use samplescope::ui::SamplescopeApp;
 use std::sync::Arc;
 use std::time::{Duration, Instant};
 
+mod analyze_cube;
 mod analyze_scene;
 mod bad_input;
 mod budget_cli;
@@ -14,6 +15,7 @@ mod cli_points;
 mod converge;
 mod cube_discrepancy;
 mod cube_patterns;
+mod cube_reader;
 mod faults;
 mod figures;
 mod filter_cli;
