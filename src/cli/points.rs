@@ -55,7 +55,7 @@ pub struct PointsArgs {
 pub fn run(args: &PointsArgs, session: &Session) -> Result<(), CliError> {
     if args.list {
         session.refuse_budget_flags("--list")?;
-        out!("{}", Pattern::list_text())?;
+        out!("{}{}", Pattern::list_text(), dims_text())?;
         return Ok(());
     }
     let (Some(name), Some(n)) = (&args.pattern, args.n) else {
@@ -91,6 +91,21 @@ pub fn run(args: &PointsArgs, session: &Session) -> Result<(), CliError> {
     let text = points_text(&points, args.sphere, cancel)?;
     drop(progress);
     write_text(args, &text, cancel)
+}
+
+/// The `--list` section on dimensions: each pattern's `--dims` range.
+pub fn dims_text() -> String {
+    let mut s = String::from(
+        "dimensions (--dims D, default 2; D = 2 is always the 2D pattern; n·D ≤ 2^25)\n",
+    );
+    for p in Pattern::all() {
+        let range = match p.max_dims() {
+            2 => "2 only".to_string(),
+            max => format!("1..={max}"),
+        };
+        s.push_str(&format!("    {:<20} {range}\n", p.name()));
+    }
+    s
 }
 
 /// `x,y` lines of 2D points (`x,y,z` on the sphere), checking `cancel` every 4096 points.

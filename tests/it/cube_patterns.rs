@@ -327,26 +327,32 @@ fn random_is_uniform_per_dimension_and_progressive() {
 }
 
 /// The d-dimensional patterns and settings (n chosen so every one is defined).
-fn cube_cases() -> Vec<(Pattern, &'static str)> {
+fn cube_cases() -> Vec<(Pattern, usize)> {
     let mut v = vec![
-        (pattern("random", &[]), "random"),
-        (pattern("lhs", &[]), "lhs"),
-        (pattern("hammersley", &[]), "hammersley"),
+        (pattern("random", &[]), 5000),
+        (pattern("lhs", &[]), 5000),
+        (pattern("hammersley", &[]), 5000),
+        (pattern("kronecker", &[]), 5000),
+        (pattern("rank1", &[]), 4999),
+        (pattern("rank1", &[("shift", "true")]), 4999),
+        (pattern("rank1", &[("g", "123")]), 5000),
+        (pattern("padded", &[]), 5000),
+        (pattern("padded", &[("base", "sobol")]), 5000),
+        (pattern("padded", &[("base", "jitter")]), 5000),
     ];
     for s in ["none", "random-digit", "owen", "owen-shuffled"] {
-        v.push((pattern("sobol", &[("scramble", s)]), "sobol"));
+        v.push((pattern("sobol", &[("scramble", s)]), 5000));
     }
     for s in ["none", "permute", "owen"] {
-        v.push((pattern("halton", &[("scramble", s)]), "halton"));
+        v.push((pattern("halton", &[("scramble", s)]), 5000));
     }
     v
 }
 
 #[test]
 fn every_pattern_in_every_dimension_count_is_deterministic_across_thread_counts() {
-    for (p, _) in cube_cases() {
+    for (p, n) in cube_cases() {
         for d in DIMS {
-            let n = 5000;
             let one = rayon::ThreadPoolBuilder::new()
                 .num_threads(1)
                 .build()
@@ -366,15 +372,19 @@ fn every_pattern_in_every_dimension_count_is_deterministic_across_thread_counts(
 #[test]
 fn dims_2_is_the_2d_pattern_and_the_d_dim_construction_agrees_with_it() {
     let mut cases = cube_cases();
-    cases.push((pattern("grid", &[]), "grid"));
-    cases.push((pattern("lhs", &[("amount", "0.5")]), "lhs"));
+    cases.push((pattern("grid", &[]), 0));
+    cases.push((pattern("lhs", &[("amount", "0.5")]), 0));
     for (p, _) in cases {
+        let cbc = matches!(&p, Pattern::Rank1(r) if r.g == 0);
         for (n, seed) in [(256usize, 0u64), (1000, 3)] {
             let two = p.generate(n, seed).unwrap();
             let via = cube(&p, n, 2, seed);
             assert_eq!(via.to_2d().unwrap(), two, "{p:?}");
             if matches!(p, Pattern::Grid(_)) && n != 256 {
                 continue; // 1000 is not a square: the 2D grid is 40 × 25
+            }
+            if cbc {
+                continue; // the 2D g = 0 is the largest-minimum-distance generator, not CBC
             }
             let construction = p.cube_coords(n, 2, seed, &Cancel::never()).unwrap();
             assert_eq!(
@@ -543,5 +553,142 @@ fn points_refuses_bad_dims_with_status_2_and_one_line() {
         assert_eq!(out.status.code(), Some(2), "{args:?}: {err}");
         assert_eq!(err.trim_end().lines().count(), 1, "{args:?}: {err}");
         assert!(err.contains(want), "{args:?}: {err}");
+    }
+}
+
+#[test]
+fn kronecker_r_d_is_roberts_sequence_and_r2_at_two_dimensions() {
+    use samplescope::core::pattern::cube::lattice::{alpha_fixed, phi};
+    for d in DIMS.into_iter().chain([1024]) {
+        let f = phi(d);
+        let lhs = f.powi(d as i32 + 1);
+        assert!((lhs - f - 1.0).abs() < 1e-12 * lhs, "φ_{d}^(D+1) = φ + 1");
+        for (k, a) in alpha_fixed(d).iter().enumerate().take(40) {
+            let want = f.powi(-(k as i32 + 1));
+            let got = *a as f64 / 2f64.powi(128);
+            assert!(
+                (got - want).abs() < 1e-13 * want,
+                "dims {d}: α_{k} {got} vs {want}"
+            );
+        }
+    }
+    // Golden ratio at D = 1.
+    assert!((phi(1) - (1.0 + 5f64.sqrt()) / 2.0).abs() < 1e-15);
+    // Dimension d of point i is frac(½ + i·α_d) (to f64 accuracy).
+    let pts = cube(&pattern("kronecker", &[]), 1000, 8, 0);
+    let f = phi(8);
+    for (i, row) in pts.rows().enumerate() {
+        for (k, v) in row.iter().enumerate() {
+            let want = (0.5 + i as f64 * f.powi(-(k as i32 + 1))).fract();
+            assert!((v - want).abs() < 1e-9, "point {i}, x{k}");
+        }
+    }
+}
+
+#[test]
+fn rank1_cbc_fast_is_as_good_as_the_naive_cbc_and_a_lattice() {
+    use samplescope::core::pattern::cube::lattice::{cbc_fast, cbc_naive, worst_case_error};
+    let never = Cancel::never();
+    for (n, d) in [(31usize, 8usize), (101, 8), (257, 5), (1009, 3)] {
+        let fast = cbc_fast(n, d, &never).unwrap();
+        let naive = cbc_naive(n, d, &never).unwrap();
+        let (pf, pn) = (worst_case_error(n, &fast), worst_case_error(n, &naive));
+        if fast == naive {
+            assert_eq!(pf.to_bits(), pn.to_bits());
+        }
+        assert!(pf <= pn * (1.0 + 1e-12), "n = {n}: fast {pf} > naive {pn}");
+        // And far better than the trivial vector (1, 1, …, 1).
+        assert!(pf < worst_case_error(n, &vec![1; d]), "n = {n}");
+    }
+    // The lattice: x_i + x_j ≡ x_{i+j} (mod 1), and every 1D projection is {k/N}.
+    let n = 101;
+    let pts = cube(&pattern("rank1", &[]), n, 8, 0);
+    for k in 0..8 {
+        let mut c: Vec<usize> = pts
+            .column(k)
+            .map(|v| (v * n as f64).round() as usize)
+            .collect();
+        c.sort_unstable();
+        assert_eq!(c, (0..n).collect::<Vec<_>>(), "x{k} is stratified");
+    }
+    for (i, j) in [(3usize, 5usize), (40, 90), (100, 100)] {
+        for k in 0..8 {
+            let s = (pts.point(i)[k] + pts.point(j)[k]).fract();
+            let t = pts.point((i + j) % n)[k];
+            assert!((s - t).abs() < 1e-12 || (s - t).abs() > 1.0 - 1e-12);
+        }
+    }
+    // A composite N too large for the naive CBC names the primes around it.
+    let e = pattern("rank1", &[])
+        .generate_cube(1 << 16, 3, 0, &never)
+        .unwrap_err();
+    assert!(e.to_string().contains("nearest: 65521 and 65537"), "{e}");
+    // Composite N within the naive bound works, and a Korobov g is (1, g, g², …).
+    assert!(pattern("rank1", &[])
+        .generate_cube(1000, 3, 0, &never)
+        .is_ok());
+    let k = cube(&pattern("rank1", &[("g", "7")]), 100, 3, 0);
+    assert_eq!(k.point(1), &[0.01, 0.07, 0.49]);
+}
+
+#[test]
+fn padded_pairs_are_shuffled_copies_of_the_base_pattern() {
+    use samplescope::core::rng::derive_seed;
+    let seed = 9;
+    let n = 256;
+    for base in ["pmj02", "sobol", "jitter"] {
+        let p = pattern("padded", &[("base", base)]);
+        let pts = cube(&p, n, 7, seed);
+        let base_p = samplescope::core::pattern::cube::padded::base_pattern(match &p {
+            Pattern::Padded(q) => q.base,
+            _ => unreachable!(),
+        });
+        let key = |x: f64, y: f64| (x.to_bits(), y.to_bits());
+        let mut orders = Vec::new();
+        for k in 0..3 {
+            let want = base_p.generate(n, derive_seed(seed, 2 * k as u64)).unwrap();
+            let mut w: Vec<_> = want.iter().map(|q| key(q.x, q.y)).collect();
+            let mut g: Vec<_> = pts.rows().map(|r| key(r[2 * k], r[2 * k + 1])).collect();
+            orders.push(g.clone());
+            assert_ne!(g, w, "{base}: pair {k} is shuffled");
+            g.sort();
+            w.sort();
+            assert_eq!(g, w, "{base}: pair {k} is the base pattern");
+            if base != "jitter" {
+                assert_eq!(
+                    t_value(&pts, 2 * k, 2 * k + 1),
+                    0,
+                    "{base}: pair {k} a (0,8,2)-net"
+                );
+            }
+        }
+        // The odd last dimension is pair 3's x.
+        let want = base_p.generate(n, derive_seed(seed, 6)).unwrap();
+        let mut w: Vec<u64> = want.iter().map(|q| q.x.to_bits()).collect();
+        let mut g: Vec<u64> = pts.column(6).map(f64::to_bits).collect();
+        w.sort_unstable();
+        g.sort_unstable();
+        assert_eq!(g, w);
+    }
+}
+
+#[test]
+fn points_list_says_every_pattern_s_dimensions() {
+    let out = samplescope(&["points", "--list"]);
+    let text = String::from_utf8(out.stdout).unwrap();
+    let section = &text[text
+        .find("dimensions (--dims D")
+        .expect("a dimensions section")..];
+    for p in Pattern::all() {
+        let want = if p.max_dims() == 2 {
+            "2 only".to_string()
+        } else {
+            format!("1..={}", p.max_dims())
+        };
+        let line = section
+            .lines()
+            .find(|l| l.split_whitespace().next() == Some(p.name()))
+            .unwrap_or_else(|| panic!("{} listed", p.name()));
+        assert!(line.ends_with(&want), "{line}");
     }
 }

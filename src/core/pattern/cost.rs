@@ -155,6 +155,18 @@ pub(crate) fn pattern_cost(p: &Pattern, n: usize) -> (f64, Unit, f64, f64) {
             let secs = updates * cpu(GBN_UPDATE_NS) / REFERENCE_CORES + call + touch(bytes);
             (updates, Unit::PointUpdates, secs, bytes)
         }
+        Pattern::Padded(p) => {
+            // One pair: the base pattern, then its shuffle.
+            let base = pattern::cube::padded::base_pattern(p.base);
+            let (amount, unit, secs, bytes) = pattern_cost(&base, n);
+            let shuffle = 8.0 * nf + points_bytes;
+            (
+                amount,
+                unit,
+                secs + nf * cpu(SHUFFLE_POINT_NS) + touch(shuffle),
+                bytes + shuffle,
+            )
+        }
         Pattern::NRooks(_) | Pattern::MultiJitter(_) | Pattern::CorrelatedMultiJitter(_) => {
             let bytes = points_bytes + 8.0 * nf;
             (
@@ -208,6 +220,10 @@ pub(crate) fn pattern_label(p: &Pattern, n: usize) -> String {
             s.iterations, s.directions
         ),
         Pattern::Gbn(g) => format!("gbn n = {n}, iterations = {}", g.iterations),
+        Pattern::Padded(p) => format!(
+            "padded n = {n}, base = {}",
+            pattern_label(&pattern::cube::padded::base_pattern(p.base), n)
+        ),
         // Patterns whose cost depends on n alone.
         other @ (Pattern::Grid(_)
         | Pattern::Random(_)
@@ -244,7 +260,19 @@ pub fn pattern_cube(p: &Pattern, n: usize, dims: usize) -> Estimate {
     if dims == 2 {
         return pattern(p, n);
     }
-    let (amount, unit, secs, bytes) = pattern_cost(p, n);
+    let (amount, unit, mut secs, bytes) = pattern_cost(p, n);
+    if let Pattern::Rank1(r) = p {
+        if r.g == 0 {
+            // The CBC vector: per dimension an FFT of length N (prime N), or N² terms.
+            let nf = n as f64;
+            let per_dim = if pattern::radical_inverse::is_prime(n as u64) {
+                nf * nf.log2().max(1.0) * 20.0
+            } else {
+                nf * nf * 4.0
+            };
+            secs = per_dim * dims as f64 * 1e-9;
+        }
+    }
     let scale = dims.div_ceil(2) as f64;
     let coords = 8.0 * n as f64 * dims as f64;
     Estimate::new(

@@ -439,6 +439,68 @@ declare_params! {
     }
 }
 
+/// The 2D pattern a `padded` pattern repeats in every dimension pair (`cube::padded`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum PadBase {
+    /// Progressive multi-jittered (0,2).
+    #[default]
+    Pmj02,
+    /// PMJ02 with blue noise.
+    Pmj02bn,
+    /// Owen-scrambled Sobol' (0,2).
+    Sobol,
+    /// Owen-scrambled Halton (2, 3).
+    Halton,
+    /// Jittered.
+    Jitter,
+    /// Multi-jittered.
+    MultiJitter,
+    /// Correlated multi-jittered.
+    Cmj,
+    /// White noise.
+    Random,
+    /// Mitchell's best candidate.
+    BestCandidate,
+}
+
+impl ChoiceParam for PadBase {
+    const OPTIONS: &'static [&'static str] = &[
+        "pmj02",
+        "pmj02bn",
+        "sobol",
+        "halton",
+        "jitter",
+        "multijitter",
+        "cmj",
+        "random",
+        "best-candidate",
+    ];
+    fn index(self) -> usize {
+        self as usize
+    }
+    fn from_index(index: usize) -> Self {
+        [
+            PadBase::Pmj02,
+            PadBase::Pmj02bn,
+            PadBase::Sobol,
+            PadBase::Halton,
+            PadBase::Jitter,
+            PadBase::MultiJitter,
+            PadBase::Cmj,
+            PadBase::Random,
+            PadBase::BestCandidate,
+        ][index]
+    }
+}
+
+declare_params! {
+    /// A 2D pattern padded to d dimensions (pbrt-v4's padded samplers).
+    Padded = "padded", "pbrt-v4's padding: each dimension pair an independent randomized copy of the 2D base pattern, shuffled (its own random order); in 2D one shuffled copy" {
+        base: choice(PadBase, "the 2D pattern of every pair: pmj02 | pmj02bn | sobol (Owen) | halton (Owen) | jitter | multijitter | cmj | random | best-candidate"),
+    }
+}
+
 /// A radical-inverse base: a prime in 2..=7919 (the range of its descriptor holds every
 /// integer; primality is checked with the set, so `--set`, scene files and the GUI refuse a
 /// composite base before any generation, with the words of the generators).
@@ -507,6 +569,7 @@ family! {
         Lloyd(Lloyd) = "lloyd",
         Sot(Sot) = "sot",
         Gbn(Gbn) = "gbn",
+        Padded(Padded) = "padded",
     }
 }
 
@@ -635,6 +698,7 @@ impl Pattern {
             Pattern::Lloyd(p) => optimize::check_lloyd(n, p.iterations),
             Pattern::Sot(p) => optimize::check_sot(n, p.iterations, p.directions),
             Pattern::Gbn(p) => optimize::check_gbn(n, p.iterations, p.sigma).map(drop),
+            Pattern::Padded(p) => cube::padded::check_padded(p, n),
         }
     }
 
@@ -690,6 +754,7 @@ impl Pattern {
                 optimize::sot(n, p.iterations, p.directions, seed, cancel, progress)?
             }
             Pattern::Gbn(p) => optimize::gbn(n, p.iterations, p.sigma, seed, cancel, progress)?,
+            Pattern::Padded(p) => cube::padded::padded_2d(p, n, seed, cancel)?,
         };
         debug_assert!(points
             .iter()

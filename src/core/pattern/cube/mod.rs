@@ -22,6 +22,8 @@
 //! pattern's own rules on `n` (grid: a D-th power; rank1: prime or small for the CBC vector).
 
 pub mod halton;
+pub mod lattice;
+pub mod padded;
 pub mod sobol;
 pub mod stratified;
 
@@ -30,7 +32,8 @@ use crate::core::cube::{CubeError, CubePoints, MAX_COORDS, MAX_DIMS};
 
 /// The patterns with a d-dimensional form, as `max_dims` lists them (the one list the error of
 /// a 2D-only pattern and `points --list` print).
-pub const CUBE_PATTERNS: &str = "random, lhs, grid, sobol, halton, hammersley";
+pub const CUBE_PATTERNS: &str =
+    "random, lhs, grid, sobol, halton, hammersley, kronecker, rank1, padded";
 
 impl Pattern {
     /// The most dimensions [`Pattern::generate_cube`] takes: [`MAX_DIMS`] for the patterns with
@@ -42,7 +45,10 @@ impl Pattern {
             | Pattern::Grid(_)
             | Pattern::Sobol(_)
             | Pattern::Halton(_)
-            | Pattern::Hammersley(_) => MAX_DIMS,
+            | Pattern::Hammersley(_)
+            | Pattern::Kronecker(_)
+            | Pattern::Rank1(_)
+            | Pattern::Padded(_) => MAX_DIMS,
             _ => 2,
         }
     }
@@ -96,6 +102,9 @@ impl Pattern {
             Pattern::Sobol(p) => lowdisc::check_sobol(p, n),
             Pattern::Halton(p) => halton::check_halton(p, n, dims),
             Pattern::Hammersley(p) => halton::check_hammersley(p, n, dims),
+            Pattern::Kronecker(p) => lattice::check_kronecker(p, n, dims),
+            Pattern::Rank1(p) => lattice::check_rank1(p, n, dims),
+            Pattern::Padded(p) => padded::check_padded(p, n),
             _ => unreachable!("check_dims refused dims ≠ 2 for a 2D-only pattern"),
         }
     }
@@ -138,6 +147,9 @@ impl Pattern {
             Pattern::Sobol(p) => sobol::sobol(p, n, dims, seed, cancel),
             Pattern::Halton(p) => halton::halton(p, n, dims, seed, cancel),
             Pattern::Hammersley(_) => halton::hammersley(n, dims, cancel),
+            Pattern::Kronecker(p) => lattice::kronecker(p, n, dims),
+            Pattern::Rank1(p) => lattice::rank1(p, n, dims, seed, cancel),
+            Pattern::Padded(p) => padded::padded(p, n, dims, seed, cancel),
             _ => Err(PatternError::InvalidDims {
                 pattern: self.name(),
                 dims,
