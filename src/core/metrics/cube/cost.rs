@@ -1,7 +1,7 @@
 //! What each measure of a point set in [0,1)^d costs (work, seconds, bytes): one arm per
 //! [`CubeMeasure`] and no fallback, so a measure without a cost does not compile. Rates and
-//! method: [`crate::core::budget`]; the rates here were measured with `analyze --points` on
-//! sets of 4096 points in 32 dimensions (BENCHMARKS.md).
+//! method: [`crate::core::budget`]. The rates here are first estimates from the operation
+//! counts of the loops (not yet timed on the reference machine).
 
 use super::CubeMeasure;
 use crate::core::budget::{cpu, parallel, Estimate, Unit};
