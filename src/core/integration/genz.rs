@@ -39,6 +39,15 @@ use std::f64::consts::PI;
 /// The largest aᵢ (Genz's normalised difficulties reach 600 in one dimension).
 pub const MAX_A: f64 = 1000.0;
 
+/// The largest aᵢ of the discontinuous family, whose peak exp(Σ aᵢ) must stay finite: at most
+/// 300 keeps it finite in the GUI's 2D study (exp(600) < f64::MAX ≈ exp(709.78)); in more
+/// dimensions the peak check refuses a sum that overflows.
+pub const MAX_A_DISCONTINUOUS: f64 = 300.0;
+
+/// The smallest edge u₁, u₂ of the discontinuous family: the region x₁ ≤ u₁, x₂ ≤ u₂ keeps an
+/// area, so the integral is not 0.
+pub const MIN_U_DISCONTINUOUS: f64 = 0.001;
+
 declare_params! {
     /// Genz's oscillatory family.
     GenzOscillatory = "genz-oscillatory", "Genz oscillatory cos(2πu + Σ aᵢxᵢ) on [0,1]^D (smooth; a sets the frequency along each axis)" {
@@ -87,8 +96,8 @@ declare_params! {
 declare_params! {
     /// Genz's discontinuous family.
     GenzDiscontinuous = "genz-discontinuous", "Genz discontinuous: 0 if x₁ > u₁ or x₂ > u₂, else exp(Σ aᵢxᵢ), on [0,1]^D (with D = 1: 0 if x₁ > u₁)" {
-        a: per_dim(1.0, 0.0, MAX_A, "aᵢ, the growth along axis i: one number (every axis) or one per axis"),
-        u: per_dim(0.5, 0.0, 1.0, "uᵢ: the edges x₁ = u₁ and x₂ = u₂ (entries past the second are not used): one number or one per axis"),
+        a: per_dim(1.0, 0.0, MAX_A_DISCONTINUOUS, "aᵢ, the growth along axis i: one number (every axis) or one per axis"),
+        u: per_dim(0.5, MIN_U_DISCONTINUOUS, 1.0, "uᵢ: the edges x₁ = u₁ and x₂ = u₂ (entries past the second are not used; at least 0.001, so the region x₁ ≤ u₁, x₂ ≤ u₂ has an area and the integral is not 0): one number or one per axis"),
     }
 }
 
@@ -161,6 +170,12 @@ impl GenzFamily {
         let per = |v: &[f64]| PerDim::list(v).unwrap_or(PerDim::all(v[0]));
         let u = match kind {
             GenzKind::Oscillatory => PerDim::all(u[0]),
+            // The edges keep the region x₁ ≤ u₁, x₂ ≤ u₂ an area (u ≥ MIN_U_DISCONTINUOUS, the
+            // descriptor's minimum): u = MIN + (1 − MIN)·U, the same draws.
+            GenzKind::Discontinuous => per(&u
+                .iter()
+                .map(|v| MIN_U_DISCONTINUOUS + (1.0 - MIN_U_DISCONTINUOUS) * v)
+                .collect::<Vec<_>>()),
             _ => per(&u),
         };
         GenzFamily {
