@@ -7,6 +7,11 @@
 //! This library holds the computation (`core`); the binary `samplescope` is the command line
 //! and, with no subcommand, the GUI.
 //!
+//! ## Features
+//! - `gui` (default): the GUI ([`ui`]: eframe, egui, wgpu, winit). Without it
+//!   (`--no-default-features`) the library and the command line build with no GUI stack, and
+//!   the binary says so when asked for a window.
+//!
 //! ## Conventions
 //!
 //! - **Domain.** Points live in the unit square [0,1)², stored as `f64` ([`glam::DVec2`]).
@@ -59,4 +64,5 @@ pub mod engine;
 pub mod export;
 pub mod model;
 pub mod scene;
+#[cfg(feature = "gui")]
 pub mod ui;

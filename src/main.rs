@@ -111,15 +111,7 @@ fn main() -> ExitCode {
         Some(Command::Recon(args)) => cli::recon::run(&args, &session),
         Some(Command::Render(args)) => cli::render::run(&args, &session),
         Some(Command::Converge(args)) => cli::converge::run(&args, &session),
-        // The arguments are checked before a window (and a display) is asked for.
-        None => cli::gui::check_inputs(cli.scene.as_deref(), cli.points.as_deref(), cli.normalize)
-            .and_then(|()| {
-                samplescope::ui::run_gui_with_points(
-                    cli.scene,
-                    cli.points.map(|p| (p, cli.normalize)),
-                )
-                .map_err(cli::CliError::Gui)
-            }),
+        None => cli::gui::run(cli.scene, cli.points, cli.normalize),
     };
     // Results are line-buffered: a failure of the last flush is a failed write too.
     let result = result.and_then(|()| {

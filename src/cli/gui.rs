@@ -1,19 +1,48 @@
-//! The GUI's arguments, checked before a window is asked for: a bad scene or point file is
-//! reported (status 2, or 1 when an existing file cannot be read: the README's "Exit status")
-//! whether or not there is a display, and "no display" only comes for arguments that would
-//! open.
+//! The GUI's start (no subcommand): its arguments are checked before a window is asked for, so
+//! a bad scene or point file is reported (status 2, or 1 when an existing file cannot be
+//! read: the README's "Exit status") whether or not there is a display, and "no display" only
+//! comes for arguments that would open. A build without the `gui` feature says so instead.
 
 use super::CliError;
-use samplescope::core::pointset::{read_points, OutOfRange, PointsFileError};
-use samplescope::scene::{Scene, MAX_SCENE_N};
-use std::path::Path;
+use std::path::PathBuf;
 
-/// Loads and validates `--scene` and `--points` as the window would.
-pub fn check_inputs(
-    scene: Option<&Path>,
-    points: Option<&Path>,
+/// Opens the window on `scene` (or the default scene) with `points` (and `--normalize`) in
+/// column 1, after checking them.
+#[cfg(feature = "gui")]
+pub fn run(
+    scene: Option<PathBuf>,
+    points: Option<PathBuf>,
     normalize: bool,
 ) -> Result<(), CliError> {
+    check_inputs(scene.as_deref(), points.as_deref(), normalize)?;
+    samplescope::ui::run_gui_with_points(scene, points.map(|p| (p, normalize)))
+        .map_err(CliError::Gui)
+}
+
+/// Without the `gui` feature there is no window: one line, bad input (status 2).
+#[cfg(not(feature = "gui"))]
+pub fn run(
+    scene: Option<PathBuf>,
+    points: Option<PathBuf>,
+    normalize: bool,
+) -> Result<(), CliError> {
+    let _ = (scene, points, normalize);
+    Err(CliError::Usage(
+        "this build of samplescope has no GUI (built without the cargo feature `gui`): give a \
+         subcommand (see --help)"
+            .into(),
+    ))
+}
+
+/// Loads and validates `--scene` and `--points` as the window would.
+#[cfg(feature = "gui")]
+fn check_inputs(
+    scene: Option<&std::path::Path>,
+    points: Option<&std::path::Path>,
+    normalize: bool,
+) -> Result<(), CliError> {
+    use samplescope::core::pointset::{read_points, OutOfRange, PointsFileError};
+    use samplescope::scene::{Scene, MAX_SCENE_N};
     if let Some(path) = scene {
         Scene::load(path).map_err(super::scene_error)?;
     }

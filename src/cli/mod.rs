@@ -40,6 +40,7 @@ pub enum CliError {
     #[error("interrupted")]
     Cancelled,
     /// The window could not be opened (exit status 1).
+    #[cfg_attr(not(feature = "gui"), allow(dead_code))]
     #[error("cannot open the window: {0}")]
     Gui(String),
     /// Writing the results to standard output failed (exit status 1; a closed pipe ends the
