@@ -4,8 +4,9 @@
 //! Fourier spectra, sampling and reconstruction of test signals, reconstruction filters in
 //! the spatial and the frequency domain, and discrepancy.
 //!
-//! This library holds the computation (`core`); the binary `samplescope` is the command line
-//! and, with no subcommand, the GUI.
+//! This library holds the computation (`core`) and the command line's subcommands (`cli`,
+//! which the Python module calls too); the binary `samplescope` parses the command line and
+//! runs them, or with no subcommand the GUI.
 //!
 //! ## Features
 //! - `gui` (default): the GUI ([`ui`]: eframe, egui, wgpu, winit). Without it
@@ -59,6 +60,10 @@
 //! [`core::pattern::PatternError`]) that names the field and the allowed range. Long work takes a
 //! [`core::cancel::Cancel`] token and stops promptly when it is cancelled.
 
+// The subcommands name the crate `samplescope::…` as the binary does.
+extern crate self as samplescope;
+
+pub mod cli;
 pub mod core;
 pub mod engine;
 pub mod export;

@@ -1,6 +1,6 @@
 //! The `samplescope` command line.
 
-mod cli;
+use samplescope::cli;
 
 use clap::{Parser, Subcommand};
 use std::process::ExitCode;

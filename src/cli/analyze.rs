@@ -389,13 +389,33 @@ pub fn run(args: &AnalyzeArgs, session: &Session) -> Result<(), CliError> {
         let files = expand_points(std::slice::from_ref(first))?;
         let cube = super::analyze_cube::read(&files[0], args.normalize)?;
         if cube.points.dims() != 2 {
-            return super::analyze_cube::run(args, &files[0], &cube.points, session);
+            return super::analyze_cube::run(args, &files[0], &cube.points, session, Sink::Print);
         }
     }
     let t0 = Instant::now();
     let input = read_input(args)?;
     let read_ms = t0.elapsed().as_secs_f64() * 1e3;
-    analyze_2d(args, input, read_ms, session)
+    analyze_2d(args, input, read_ms, session, Sink::Print)
+}
+
+/// Where `analyze`'s result goes: printed (the command), or kept for a caller (the Python
+/// module) as the object `--json` prints together with the arrays behind it.
+pub enum Sink<'a> {
+    /// Printed as text, or as JSON with `--json`.
+    Print,
+    /// Kept: the JSON object (whatever `--json` says), the spectrum and the RDF.
+    Keep(&'a mut Kept),
+}
+
+/// What [`Sink::Keep`] keeps of one analysis.
+#[derive(Default)]
+pub struct Kept {
+    /// The object `analyze --json` prints.
+    pub json: serde_json::Value,
+    /// The spectrum node's data: the periodogram, its RAPS and anisotropy (2D input only).
+    pub spectrum: Option<Arc<SpectrumData>>,
+    /// The RDF rows `r_min, r_max, r_mid_normalized, g` that `--rdf` writes (2D input only).
+    pub rdf: Option<Vec<[f64; 4]>>,
 }
 
 /// Reads what `analyze` analyses: the point files of `--points` (read first, bounded and
@@ -492,9 +512,9 @@ pub fn analysis_scene(
 
 /// The nodes `analyze` reads besides the spectrum its scene shows: the statistics and PSA's,
 /// the RDF with `--rdf`, the prefixes' net check for point files.
-pub fn asked_nodes(args: &AnalyzeArgs, files: bool) -> Vec<NodeKind> {
+pub fn asked_nodes(args: &AnalyzeArgs, files: bool, keep: bool) -> Vec<NodeKind> {
     let mut v = vec![NodeKind::Statistics, NodeKind::Psa, NodeKind::Spectrum];
-    if args.rdf.is_some() {
+    if args.rdf.is_some() || keep {
         v.push(NodeKind::Rdf);
     }
     if files {
@@ -504,10 +524,43 @@ pub fn asked_nodes(args: &AnalyzeArgs, files: bool) -> Vec<NodeKind> {
 }
 
 /// The node results of every column of an evaluated scene.
-type Results = Vec<HashMap<NodeKind, Arc<NodeResult>>>;
+pub type Results = Vec<HashMap<NodeKind, Arc<NodeResult>>>;
+
+/// Runs `plan` of `scene` with the engine's evaluator (no disk cache): the results of every
+/// column, or the first node that failed by itself (later ones fail through their inputs).
+pub fn evaluate(scene: &Scene, plan: graph::Plan, cancel: &Cancel) -> Result<Results, CliError> {
+    let mut results: Results = vec![HashMap::new(); scene.columns.len()];
+    Evaluator::new(DEFAULT_BUDGET, None).evaluate_planned(
+        scene,
+        Arc::new(plan),
+        cancel,
+        &mut |c, kind, r| {
+            results[c].insert(kind, r);
+        },
+    );
+    if cancel.is_cancelled() {
+        return Err(CliError::Cancelled);
+    }
+    for kind in [
+        NodeKind::Points,
+        NodeKind::Statistics,
+        NodeKind::Psa,
+        NodeKind::Spectrum,
+        NodeKind::Rdf,
+        NodeKind::NetPrefixes,
+    ] {
+        for r in &results {
+            match r.get(&kind).map(|r| &r.value) {
+                Some(Err(NodeError::Input { .. })) | Some(Ok(_)) | None => {}
+                Some(Err(e)) => return Err(super::node_error(e)),
+            }
+        }
+    }
+    Ok(results)
+}
 
 /// The `T` value of node `kind` in every column (an internal error if one has none).
-fn values<'a, T>(
+pub fn values<'a, T>(
     results: &'a Results,
     kind: NodeKind,
     pick: impl Fn(&'a NodeValue) -> Option<&'a Arc<T>>,
@@ -555,7 +608,7 @@ fn spectrum_accuracy(a: Option<&Accuracy>) -> (Option<f64>, Option<f64>) {
 /// realization), summed in column order and scaled by 1/K as the core averages
 /// realizations; its display data as the spectrum node makes it, with the columns' stage
 /// times summed (the mean's own time in `average`).
-fn mean_spectrum(spectra: &[&Arc<SpectrumData>]) -> Result<SpectrumData, CliError> {
+pub fn mean_spectrum(spectra: &[&Arc<SpectrumData>]) -> Result<SpectrumData, CliError> {
     let t = Instant::now();
     let first = &spectra[0].power;
     let mut power = vec![0.0; first.power.len()];
@@ -625,16 +678,43 @@ fn spectrum_figure(
     super::figure_png(&one, columns, "analyze", FigureKind::Spectrum, cancel)
 }
 
+/// The spectrum settings of `analyze`'s scene for `input`, the request they make (averaged
+/// over the files) checked with the core's messages; DC masked in the figure only (the
+/// numbers hold it).
+pub fn spectrum_settings(args: &AnalyzeArgs, input: &Input) -> Result<SpectrumSettings, CliError> {
+    let settings = SpectrumSettings {
+        size: args.size,
+        tolerance: args.tolerance.unwrap_or(DEFAULT_TOLERANCE),
+        exact: args.exact,
+        realizations: args.realizations,
+        mask_dc: true,
+    };
+    let (k, n) = match input {
+        Input::Files { sets, .. } => (sets.len(), sets[0].len()),
+        Input::Pattern { n, .. } => (args.realizations, *n),
+    };
+    SpectrumSettings {
+        realizations: k,
+        ..settings
+    }
+    .request(n, false)
+    .validate()
+    .map_err(|e| CliError::Usage(e.to_string()))?;
+    Ok(settings)
+}
+
 /// Analyses 2D points (`input`, read in `read_ms`): the scene of [`analysis_scene`] checked
 /// against the budget with the scene's estimate (`scene::cost`) and the outputs', evaluated
 /// by the engine's `Evaluator`; over K ≥ 2 files the spectrum and RDF are the means of the
 /// columns'. `--spectrum` is the scene's spectrum figure, published through
-/// `export::publish`.
+/// `export::publish`. With [`Sink::Keep`] the RDF is computed too and the result is kept, not
+/// printed.
 pub fn analyze_2d(
     args: &AnalyzeArgs,
     input: Input,
     read_ms: f64,
     session: &Session,
+    mut sink: Sink<'_>,
 ) -> Result<(), CliError> {
     let cancel = &session.cancel;
     let seed = args.seed.unwrap_or(0);
@@ -649,29 +729,13 @@ pub fn analyze_2d(
         Input::Pattern { .. } => 1,
     };
     let averaged = sets_k > 1;
-    // The scene's spectrum settings (its error check included: two rows of the exact DFT,
-    // ~2·N·M); DC masked in the figure only, the numbers hold it.
-    let settings = SpectrumSettings {
-        size: args.size,
-        tolerance: args.tolerance.unwrap_or(DEFAULT_TOLERANCE),
-        exact: args.exact,
-        realizations: args.realizations,
-        mask_dc: true,
-    };
-    // The request the spectrum (averaged over the files) is, checked with the core's messages.
+    let settings = spectrum_settings(args, &input)?;
     let n = match &input {
         Input::Files { sets, .. } => sets[0].len(),
         Input::Pattern { n, .. } => *n,
     };
-    SpectrumSettings {
-        realizations: if is_files { sets_k } else { args.realizations },
-        ..settings
-    }
-    .request(n, false)
-    .validate()
-    .map_err(|e| CliError::Usage(e.to_string()))?;
     let mut scene = analysis_scene(&input, settings, seed, args.normalize);
-    let asked = asked_nodes(args, is_files);
+    let asked = asked_nodes(args, is_files, matches!(sink, Sink::Keep(_)));
     let mut plan = graph::plan_asking(&scene, &asked);
     let mut estimates = cost::estimate_plan(&scene, &plan);
     let m = args.size;
@@ -716,35 +780,7 @@ pub fn analyze_2d(
         }
     }
     let generated_ms = t0.elapsed().as_secs_f64() * 1e3;
-    // The scene's nodes, run by the engine's evaluator.
-    let mut results: Results = vec![HashMap::new(); scene.columns.len()];
-    Evaluator::new(DEFAULT_BUDGET, None).evaluate_planned(
-        &scene,
-        Arc::new(plan),
-        cancel,
-        &mut |c, kind, r| {
-            results[c].insert(kind, r);
-        },
-    );
-    if cancel.is_cancelled() {
-        return Err(CliError::Cancelled);
-    }
-    // The first node that failed by itself (later ones fail through their inputs).
-    for kind in [
-        NodeKind::Points,
-        NodeKind::Statistics,
-        NodeKind::Psa,
-        NodeKind::Spectrum,
-        NodeKind::Rdf,
-        NodeKind::NetPrefixes,
-    ] {
-        for r in &results {
-            match r.get(&kind).map(|r| &r.value) {
-                Some(Err(NodeError::Input { .. })) | Some(Ok(_)) | None => {}
-                Some(Err(e)) => return Err(super::node_error(e)),
-            }
-        }
-    }
+    let results = evaluate(&scene, plan, cancel)?;
     let points = values(&results, NodeKind::Points, |v| match v {
         NodeValue::Points(p) => Some(p),
         _ => None,
@@ -821,7 +857,7 @@ pub fn analyze_2d(
         }
         outputs.push((path, s.into_bytes()));
     }
-    if let Some(path) = &args.rdf {
+    if args.rdf.is_some() || matches!(sink, Sink::Keep(_)) {
         let rdfs = values(&results, NodeKind::Rdf, |v| match v {
             NodeValue::Rdf(g) => Some(g),
             _ => None,
@@ -843,12 +879,24 @@ pub fn analyze_2d(
             wall_ms(&results, NodeKind::Rdf) + t0.elapsed().as_secs_f64() * 1e3,
         ));
         let d_hex = metrics::hex_distance(n);
-        let mut s = String::from("r_min,r_max,r_mid_normalized,g\n");
-        for (i, v) in mean.iter().enumerate() {
-            let (lo, hi) = (i as f64 * dr, (i + 1) as f64 * dr);
-            let _ = writeln!(s, "{lo:?},{hi:?},{:?},{v:?}", 0.5 * (lo + hi) / d_hex);
+        let rows: Vec<[f64; 4]> = mean
+            .iter()
+            .enumerate()
+            .map(|(i, &v)| {
+                let (lo, hi) = (i as f64 * dr, (i + 1) as f64 * dr);
+                [lo, hi, 0.5 * (lo + hi) / d_hex, v]
+            })
+            .collect();
+        if let Some(path) = &args.rdf {
+            let mut s = String::from("r_min,r_max,r_mid_normalized,g\n");
+            for [lo, hi, mid, v] in &rows {
+                let _ = writeln!(s, "{lo:?},{hi:?},{mid:?},{v:?}");
+            }
+            outputs.push((path, s.into_bytes()));
         }
-        outputs.push((path, s.into_bytes()));
+        if let Sink::Keep(kept) = &mut sink {
+            kept.rdf = Some(rows);
+        }
     }
     // For point files: the (0,k,2)-net check of every power-of-two prefix.
     let nets: Vec<metrics::NetPrefixes> = if is_files {
@@ -888,6 +936,9 @@ pub fn analyze_2d(
             (None, _) => "exact DFT".to_string(),
         }
     );
+    if let Sink::Keep(kept) = &mut sink {
+        kept.spectrum = Some(spectrum.clone());
+    }
     if averaged {
         return print_averaged(
             args,
@@ -900,12 +951,13 @@ pub fn analyze_2d(
             spectrum_json,
             &spectrum_line,
             &timings,
+            sink,
         );
     }
     let stats = all_stats[0];
     let psa_stats = all_psa.as_ref().map(|v| v[0]);
     let md = stats.min_distance.as_ref();
-    if args.json {
+    if args.json || matches!(sink, Sink::Keep(_)) {
         let timings_obj: serde_json::Map<String, serde_json::Value> =
             timings.iter().map(|(k, v)| (k.clone(), json!(v))).collect();
         let mut out = json!({
@@ -927,7 +979,10 @@ pub fn analyze_2d(
         if let Some(p) = nets.first() {
             out["net_prefixes"] = net_prefixes_json(p);
         }
-        outln!("{out}")?;
+        match sink {
+            Sink::Keep(kept) => kept.json = out,
+            Sink::Print => outln!("{out}")?,
+        }
     } else {
         outln!("n                      {n}")?;
         if let Some(m) = md {
@@ -1006,6 +1061,7 @@ fn print_averaged(
     spectrum_json: serde_json::Value,
     spectrum_line: &str,
     timings: &[(String, f64)],
+    sink: Sink<'_>,
 ) -> Result<(), CliError> {
     let k = all_stats.len();
     // Per statistic, the values of every file.
@@ -1016,7 +1072,7 @@ fn print_averaged(
         .collect();
     let names: Vec<&'static str> = per_file[0].iter().map(|(name, _)| *name).collect();
     let column = |j: usize| -> Vec<Option<f64>> { per_file.iter().map(|f| f[j].1).collect() };
-    if args.json {
+    if args.json || matches!(sink, Sink::Keep(_)) {
         let timings_obj: serde_json::Map<String, serde_json::Value> =
             timings.iter().map(|(k, v)| (k.clone(), json!(v))).collect();
         let mut out = json!({
@@ -1041,7 +1097,10 @@ fn print_averaged(
         out["net_prefixes"] = json!(nets.iter().map(net_prefixes_json).collect::<Vec<_>>());
         out["spectrum"] = spectrum_json;
         out["timings_ms"] = json!(timings_obj);
-        outln!("{out}")?;
+        match sink {
+            Sink::Keep(kept) => kept.json = out,
+            Sink::Print => outln!("{out}")?,
+        }
         return Ok(());
     }
     outln!(

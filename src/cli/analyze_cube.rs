@@ -79,9 +79,11 @@ pub fn run(
     path: &str,
     points: &CubePoints,
     session: &Session,
+    sink: super::analyze::Sink<'_>,
 ) -> Result<(), CliError> {
+    use super::analyze::Sink;
     let (n, dims) = (points.n(), points.dims());
-    let json_out = args.json;
+    let json_out = args.json || matches!(sink, Sink::Keep(_));
     if super::analyze::expand_points(&args.points)?.len() > 1 {
         plane(path, points, None)?;
     }
@@ -158,10 +160,13 @@ pub fn run(
         for which in Discrepancy::ALL {
             o[which.key()] = json!(disc.map(|d| d.get(which)));
         }
-        outln!(
-            "{}",
-            serde_json::to_string_pretty(&o).map_err(|e| CliError::Usage(e.to_string()))?
-        )?;
+        match sink {
+            Sink::Keep(kept) => kept.json = o,
+            Sink::Print => outln!(
+                "{}",
+                serde_json::to_string_pretty(&o).map_err(|e| CliError::Usage(e.to_string()))?
+            )?,
+        }
         return Ok(());
     }
     outln!("points: {path}: N = {n} in {dims} dimensions")?;

@@ -109,6 +109,61 @@ pub fn csv_text(study: &Study) -> String {
 
 /// Runs `samplescope converge`.
 pub fn run(args: &ConvergeArgs, session: &Session) -> Result<(), CliError> {
+    let Some((req, study)) = study(args, session)? else {
+        return Ok(());
+    };
+    let t = &study.timings;
+    if args.json {
+        outln!("{}", study_json(&req, &study))?;
+        return Ok(());
+    }
+    print_text(&req, &study, t)
+}
+
+/// The object `converge --json` prints.
+pub fn study_json(req: &StudyRequest, study: &Study) -> serde_json::Value {
+    let t = &study.timings;
+    let rows: Vec<serde_json::Value> = study
+        .rows
+        .iter()
+        .map(|r| {
+            serde_json::json!({
+                "n": r.n,
+                "mse": num(Some(r.mse)),
+                "mse_stderr": num(r.mse_stderr),
+                "variance": num(Some(r.variance)),
+                "bias2": num(Some(r.bias2)),
+            })
+        })
+        .collect();
+    serde_json::json!({
+        "pattern": req.pattern.name(),
+        "pattern_params": params_json(&req.pattern),
+        "integrand": req.integrand.name(),
+        "integrand_params": params_json(&req.integrand),
+        "randomize": req.randomize,
+        "dims": req.dims,
+        "shift": req.applies_shift(),
+        "seed": req.seed,
+        "realizations": req.realizations,
+        "reference": study.reference,
+        "rows": rows,
+        "slope": num(study.slope),
+        "slope_stderr": num(study.slope_stderr),
+        "timings_ms": {
+            "points": ms(t.points),
+            "evaluation": ms(t.evaluation),
+            "statistics": ms(t.statistics),
+            "total": ms(t.total),
+        },
+    })
+}
+
+/// The study `converge` runs (`None` after `--estimate`), its CSV written with `--csv`.
+pub fn study(
+    args: &ConvergeArgs,
+    session: &Session,
+) -> Result<Option<(StudyRequest, Study)>, CliError> {
     let pattern = super::pattern_from_args(&args.pattern, &args.set)?;
     let integrand: Integrand = from_args(
         "--integrand",
@@ -182,7 +237,7 @@ pub fn run(args: &ConvergeArgs, session: &Session) -> Result<(), CliError> {
     }
     check_outputs(&[("--csv", args.csv.as_deref())])?;
     let Some(progress) = session.admit(plan)? else {
-        return Ok(());
+        return Ok(None);
     };
     progress.stage(0);
     let mut stage = 0;
@@ -202,47 +257,15 @@ pub fn run(args: &ConvergeArgs, session: &Session) -> Result<(), CliError> {
         )?;
     }
     drop(progress);
-    let t = &study.timings;
-    if args.json {
-        let rows: Vec<serde_json::Value> = study
-            .rows
-            .iter()
-            .map(|r| {
-                serde_json::json!({
-                    "n": r.n,
-                    "mse": num(Some(r.mse)),
-                    "mse_stderr": num(r.mse_stderr),
-                    "variance": num(Some(r.variance)),
-                    "bias2": num(Some(r.bias2)),
-                })
-            })
-            .collect();
-        outln!(
-            "{}",
-            serde_json::json!({
-                "pattern": req.pattern.name(),
-                "pattern_params": params_json(&req.pattern),
-                "integrand": req.integrand.name(),
-                "integrand_params": params_json(&req.integrand),
-                "randomize": req.randomize,
-                "dims": req.dims,
-                "shift": req.applies_shift(),
-                "seed": req.seed,
-                "realizations": req.realizations,
-                "reference": study.reference,
-                "rows": rows,
-                "slope": num(study.slope),
-                "slope_stderr": num(study.slope_stderr),
-                "timings_ms": {
-                    "points": ms(t.points),
-                    "evaluation": ms(t.evaluation),
-                    "statistics": ms(t.statistics),
-                    "total": ms(t.total),
-                },
-            })
-        )?;
-        return Ok(());
-    }
+    Ok(Some((req, study)))
+}
+
+/// The text `converge` prints without `--json`.
+fn print_text(
+    req: &StudyRequest,
+    study: &Study,
+    t: &samplescope::core::integration::StudyTimings,
+) -> Result<(), CliError> {
     let shift = if req.pattern.is_random() {
         "none (random pattern)"
     } else if req.shift {

@@ -132,8 +132,84 @@ fn one_column_scene(
     scene
 }
 
+/// What [`reconstruct`] made: the reconstruction, the reference, the error and the times.
+pub struct Reconstructed {
+    /// The reconstruction (f64 pixels, row 0 at the bottom).
+    pub recon: Arc<samplescope::core::recon::Reconstruction>,
+    /// The signal's reference image.
+    pub reference: Arc<samplescope::model::ReferenceData>,
+    /// The reconstruction's error against the reference.
+    pub report: Arc<samplescope::model::ErrorData>,
+    /// Sampling and reconstruction, and the reference, in ms.
+    pub recon_ms: f64,
+    pub reference_ms: f64,
+}
+
+impl Reconstructed {
+    /// The object `recon --json` prints.
+    pub fn json(&self) -> serde_json::Value {
+        let (recon, report, reference) = (&self.recon, &self.report, &self.reference);
+        serde_json::json!({
+            "rmse": report.rmse,
+            "psnr": report.psnr,
+            "max_abs_error": report.max_abs,
+            "zero_weight_pixels": recon.zero_weight,
+            "normaliser": {
+                "rule": RULE,
+                "c": recon.floor,
+                "floored_pixels": recon.floored,
+            },
+            "reference_error_estimate": reference.error_estimate,
+            "reference_method": reference.method.label(),
+            "timings_ms": { "reconstruction": self.recon_ms, "reference": self.reference_ms },
+        })
+    }
+}
+
 /// Runs `samplescope recon`.
 pub fn run(args: &ReconArgs, session: &Session) -> Result<(), CliError> {
+    let Some(made) = reconstruct(args, None, session)? else {
+        return Ok(());
+    };
+    let (recon, reference, report) = (&made.recon, &made.reference, &made.report);
+    let (recon_ms, reference_ms) = (made.recon_ms, made.reference_ms);
+    if args.json {
+        outln!("{}", made.json())?;
+    } else {
+        outln!("RMSE   {:.6}", report.rmse)?;
+        outln!("PSNR   {:.3} dB", report.psnr)?;
+        outln!("time   {recon_ms:.2} ms (reconstruction, sampling included); reference {reference_ms:.2} ms")?;
+        outln!(
+            "norm   Σw·f/Σw, floored where Σw < c·Σ|w| (c = {:.3}): {} pixels floored",
+            recon.floor,
+            recon.floored
+        )?;
+        if recon.zero_weight > 0 {
+            outln!(
+                "note   {} pixels had zero total filter weight",
+                recon.zero_weight
+            )?;
+        }
+        if let Some(e) = reference.error_estimate {
+            if reference.method.estimate_is_bound() {
+                outln!("reference's own error ≤ {e:.2e} (any pixel)")?;
+            } else {
+                outln!("reference's own RMS error ≈ {e:.2e}")?;
+            }
+        }
+    }
+    Ok(())
+}
+
+/// The reconstruction of `recon` (`None` after `--estimate`), its PNG written with `--out`:
+/// the one-column scene evaluated by the engine. `samples` (the Python module's `points=`)
+/// replaces the pattern's points by these scattered samples (N = their count; not with
+/// `--spp`, `-n` or `--allow-fewer`).
+pub fn reconstruct(
+    args: &ReconArgs,
+    samples: Option<Vec<glam::DVec2>>,
+    session: &Session,
+) -> Result<Option<Reconstructed>, CliError> {
     let cancel = &session.cancel;
     let signal: Signal = from_args(
         "--signal",
@@ -168,6 +244,15 @@ pub fn run(args: &ReconArgs, session: &Session) -> Result<(), CliError> {
     let w = args.size;
     // Ok(spp): supersampling; Err(n): n scattered samples.
     let sampling = match (args.spp, args.n) {
+        _ if samples.is_some() => {
+            if args.spp.is_some() || args.n.is_some() || args.allow_fewer {
+                return Err(CliError::Usage(
+                    "recon: points are scattered samples: give them without n, spp or allow_fewer"
+                        .into(),
+                ));
+            }
+            Err(samples.as_ref().map_or(0, Vec::len))
+        }
         (Some(spp), _) => Ok(spp),
         (None, Some(n)) => Err(n),
         (None, None) => {
@@ -192,6 +277,13 @@ pub fn run(args: &ReconArgs, session: &Session) -> Result<(), CliError> {
     };
     // The scene's estimate (its points node's included, made here with --allow-fewer).
     let mut scene = one_column_scene(signal, pattern, filter, seed, w, sampling);
+    if let Some(points) = &samples {
+        scene.columns[0].points = Some(ImportedPoints {
+            points: points.iter().map(|p| [p.x, p.y]).collect(),
+            source: "points".into(),
+            ..Default::default()
+        });
+    }
     let mut plan = samplescope::scene::cost::estimate(&scene);
     if args.out.is_some() {
         // The reconstruction figure's PNG, at its base size.
@@ -199,7 +291,7 @@ pub fn run(args: &ReconArgs, session: &Session) -> Result<(), CliError> {
         plan.push(budget::png(fw as usize, fh as usize));
     }
     let Some(progress) = session.admit(plan)? else {
-        return Ok(());
+        return Ok(None);
     };
     progress.stage(0);
     let t0 = Instant::now();
@@ -271,46 +363,11 @@ pub fn run(args: &ReconArgs, session: &Session) -> Result<(), CliError> {
         write_output(Path::new(path), &bytes, cancel)?;
     }
     drop(progress);
-    if args.json {
-        outln!(
-            "{}",
-            serde_json::json!({
-                "rmse": report.rmse,
-                "psnr": report.psnr,
-                "max_abs_error": report.max_abs,
-                "zero_weight_pixels": recon.zero_weight,
-                "normaliser": {
-                    "rule": RULE,
-                    "c": recon.floor,
-                    "floored_pixels": recon.floored,
-                },
-                "reference_error_estimate": reference.error_estimate,
-                "reference_method": reference.method.label(),
-                "timings_ms": { "reconstruction": recon_ms, "reference": reference_ms },
-            })
-        )?;
-    } else {
-        outln!("RMSE   {:.6}", report.rmse)?;
-        outln!("PSNR   {:.3} dB", report.psnr)?;
-        outln!("time   {recon_ms:.2} ms (reconstruction, sampling included); reference {reference_ms:.2} ms")?;
-        outln!(
-            "norm   Σw·f/Σw, floored where Σw < c·Σ|w| (c = {:.3}): {} pixels floored",
-            recon.floor,
-            recon.floored
-        )?;
-        if recon.zero_weight > 0 {
-            outln!(
-                "note   {} pixels had zero total filter weight",
-                recon.zero_weight
-            )?;
-        }
-        if let Some(e) = reference.error_estimate {
-            if reference.method.estimate_is_bound() {
-                outln!("reference's own error ≤ {e:.2e} (any pixel)")?;
-            } else {
-                outln!("reference's own RMS error ≈ {e:.2e}")?;
-            }
-        }
-    }
-    Ok(())
+    Ok(Some(Reconstructed {
+        recon,
+        reference,
+        report,
+        recon_ms,
+        reference_ms,
+    }))
 }

@@ -141,6 +141,20 @@ fn evaluate(
 
 /// Runs `samplescope render`.
 pub fn run(args: &RenderArgs, session: &Session) -> Result<(), CliError> {
+    render(args, None, session, &mut |path| {
+        outln!("{}", path.display())
+    })
+}
+
+/// Renders the scene of `args.scene` (or of the RON `text`, named `args.scene` in errors and
+/// file names, its point files read relative to the current directory) into `args.out`,
+/// calling `wrote` with each file once it is written.
+pub fn render(
+    args: &RenderArgs,
+    text: Option<&str>,
+    session: &Session,
+    wrote: &mut dyn FnMut(&std::path::Path) -> Result<(), CliError>,
+) -> Result<(), CliError> {
     let scale = args.scale.unwrap_or(1);
     if !SCALES.contains(&scale) {
         return Err(CliError::Usage(format!(
@@ -175,7 +189,11 @@ pub fn run(args: &RenderArgs, session: &Session) -> Result<(), CliError> {
     }
     samplescope::core::output::check_output_dir("--out", &args.out)?;
     let source = args.scene.display().to_string();
-    let scene = Scene::load(&args.scene).map_err(super::scene_error)?;
+    let scene = match text {
+        Some(text) => Scene::from_ron(text, &source),
+        None => Scene::load(&args.scene),
+    }
+    .map_err(super::scene_error)?;
     // What a column's points node would refuse is refused before the estimate and the budget,
     // with the words of that node's failure.
     for (c, col) in scene.columns.iter().enumerate() {
@@ -239,7 +257,7 @@ pub fn run(args: &RenderArgs, session: &Session) -> Result<(), CliError> {
     for (name, bytes) in made.files {
         let path = args.out.join(name);
         write_output(&path, &bytes, cancel)?;
-        outln!("{}", path.display())?;
+        wrote(&path)?;
     }
     Ok(())
 }

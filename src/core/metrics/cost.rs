@@ -48,6 +48,20 @@ pub fn statistics(n: usize) -> Estimate {
     )
 }
 
+/// The exact star discrepancy of `n` points alone ([`crate::core::metrics::star_discrepancy`]:
+/// N(N+1) sweep cells), as the Python module's `discrepancy(points, "star")` computes it.
+pub fn star_discrepancy(n: usize) -> Estimate {
+    let nf = n as f64;
+    let cells = nf * (nf + 1.0);
+    Estimate::new(
+        format!("star discrepancy of {n} points"),
+        cells,
+        Unit::Cells,
+        cpu(cells * STAR_CELL_NS) + touch(32.0 * nf),
+        32.0 * nf,
+    )
+}
+
 /// PSA's statistics of `n` points ([`crate::core::metrics::psa_statistics`]): the RDF over
 /// N(N−1)/2 pairs, its transform (≈ m²/2 terms for m = ⌊100√N⌋ RDF bins and frequencies),
 /// and a toroidal Delaunay triangulation of ≈ N + 16√N points. Nothing above

@@ -20,6 +20,21 @@ pub(crate) const DISTANCE_DIM_NS: f64 = 0.1;
 /// One coordinate's interval and count of the stratification check (serial).
 pub(crate) const STRATUM_NS: f64 = 8.0;
 
+/// The estimate of one of the five discrepancies of `n` points in `dims` dimensions (a fifth
+/// of [`CubeMeasure::Discrepancies`]' work: what `discrepancy(points, method)` of the Python
+/// module computes).
+pub fn cube_discrepancy(which: super::Discrepancy, n: usize, dims: usize) -> Estimate {
+    let (nf, d) = (n as f64, dims as f64);
+    let pairs = nf * (nf + 1.0) / 2.0;
+    Estimate::new(
+        format!("{} of {n} points in {dims} dimensions", which.label()),
+        pairs,
+        Unit::Pairs,
+        parallel(pairs * (d * DISCREPANCY_FACTOR_NS + DISCREPANCY_PAIR_NS)),
+        8.0 * nf * d,
+    )
+}
+
 /// The estimate of one measure of `n` points in `dims` dimensions.
 pub fn cube_measure(measure: CubeMeasure, n: usize, dims: usize) -> Estimate {
     let nf = n as f64;
