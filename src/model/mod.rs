@@ -40,7 +40,7 @@ pub use integration::{
     guide_line, IntegrationCurve, IntegrationData, IntegrationPlot, GUIDE_SLOPES,
 };
 pub use points::{
-    drawn_strata, elementary_grid, PointsData, PsaData, StatsData, MAX_STRATA_LINES,
+    drawn_strata, elementary_grid, PointsData, PsaData, SequenceData, StatsData, MAX_STRATA_LINES,
     STATS_PSA_MAX_N,
 };
 pub use publication::Publication;

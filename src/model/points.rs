@@ -14,6 +14,11 @@ pub struct PointsData {
     pub note: Option<String>,
 }
 
+/// A column's full run of N points (the sequence node's data): the points node of a scene
+/// with a prefix shows its first k, so moving k slices it instead of generating again.
+#[derive(Debug, Clone)]
+pub struct SequenceData(pub PointsData);
+
 /// Point-set statistics for the overlays.
 #[derive(Debug, Clone)]
 pub struct StatsData {

@@ -21,13 +21,22 @@ pub fn estimate(scene: &Scene) -> Vec<Estimate> {
 /// [`estimate`] of the scene's plan `plan` (`graph::plan(scene)`, made once by the caller, who
 /// hands the same plan to the engine).
 pub fn estimate_plan(scene: &Scene, plan: &Plan) -> Vec<Estimate> {
+    estimate_frames(&[(scene, plan)])
+}
+
+/// [`estimate_plan`] of several scenes evaluated one after another on one cache (the frames
+/// of an animation, `scene::animation`): a node whose key an earlier frame computed is counted
+/// once.
+pub fn estimate_frames(frames: &[(&Scene, &Plan)]) -> Vec<Estimate> {
     let mut seen = HashSet::new();
     let mut out = Vec::new();
-    for (c, plan) in plan.iter().enumerate() {
-        for node in &plan.nodes {
-            let Ok(key) = node.key else { continue };
-            if seen.insert(key) {
-                out.extend(node_estimates(scene, c, node.kind));
+    for (scene, plan) in frames {
+        for (c, plan) in plan.iter().enumerate() {
+            for node in &plan.nodes {
+                let Ok(key) = node.key else { continue };
+                if seen.insert(key) {
+                    out.extend(node_estimates(scene, c, node.kind));
+                }
             }
         }
     }

@@ -65,7 +65,8 @@ pub fn context(
         column_slug: slugs[column].clone(),
         pattern,
         pattern_params,
-        n: scene.n,
+        // What the column shows: the prefix's k of a scene with a prefix.
+        n: scene.shown_n(column),
         seed: col.seed,
         signal: ron::to_string(&scene.signal).unwrap_or_else(|_| scene.signal.name().into()),
         filter: ron::to_string(&scene.filter).unwrap_or_else(|_| scene.filter.filter.name().into()),

@@ -5,6 +5,7 @@
 //! effects that are on. The [`graph`] turns a scene into the list of nodes that the visible
 //! panels need; nothing else is computed.
 
+pub mod animation;
 mod builtin;
 pub mod compute;
 pub mod cost;
@@ -22,6 +23,7 @@ pub mod ron_path;
 mod settings;
 mod validate;
 
+pub use animation::{Animates, AnimationSettings};
 pub use builtin::BUILTIN;
 pub use error::{Location, SceneError};
 pub use limits::{MAX_COLUMNS, MAX_ELEMENTARY_K, MAX_SCENE_N};

@@ -486,9 +486,9 @@ mod tests {
                 .count();
             assert_eq!(owners, 1, "{} is saved by {owners} panels", f.name());
         }
-        // Every node a panel reads is in the node table, and only `Samples` and `Psa`
-        // (inputs of the reconstruction and the statistics) and the nodes `analyze` asks for
-        // by name (`Rdf`, `NetPrefixes`) are asked for by no panel.
+        // Every node a panel reads is in the node table, and only `Samples`, `Psa` and
+        // `Sequence` (inputs of the reconstruction, the statistics and a prefix's points) and
+        // the nodes `analyze` asks for by name (`Rdf`, `NetPrefixes`) are asked for by no panel.
         for k in NodeKind::ALL {
             let readers = PANELS
                 .iter()
@@ -496,7 +496,11 @@ mod tests {
                 .count();
             let unread = matches!(
                 k,
-                NodeKind::Samples | NodeKind::Psa | NodeKind::Rdf | NodeKind::NetPrefixes
+                NodeKind::Samples
+                    | NodeKind::Psa
+                    | NodeKind::Sequence
+                    | NodeKind::Rdf
+                    | NodeKind::NetPrefixes
             );
             assert_eq!(readers == 0, unread, "{}", k.name());
         }

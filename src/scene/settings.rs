@@ -1,7 +1,7 @@
 //! What a scene holds: its columns, shared settings and effects (serde types and defaults);
 //! its visible panels ([`Panels`]) live with the panel table in `panels.rs`.
 
-use super::{ImportedPoints, IntegrationSettings, Motion, Panels};
+use super::{AnimationSettings, ImportedPoints, IntegrationSettings, Motion, Panels};
 use crate::core::filter::Filter2D;
 use crate::core::params::{declare_params, ParamKind, ParamSpec, ParamValue, Params};
 use crate::core::pattern::Pattern;
@@ -288,6 +288,11 @@ pub struct Scene {
     pub theorem: TheoremSettings,
     /// The integration-error study (used only while `panels.integration` is on).
     pub integration: IntegrationSettings,
+    /// Show only the first k of every column's points (`Some(k)`, 1 ≤ k ≤ N; only when every
+    /// column's points come in order): see `scene::animation`.
+    pub prefix: Option<usize>,
+    /// How the scene animates (motion or prefix): frames and rate of its player and GIF.
+    pub animation: AnimationSettings,
 }
 
 impl Default for Scene {
@@ -306,6 +311,8 @@ impl Default for Scene {
             motion: None,
             theorem: TheoremSettings::default(),
             integration: IntegrationSettings::default(),
+            prefix: None,
+            animation: AnimationSettings::default(),
         }
     }
 }

@@ -278,6 +278,37 @@ impl Scene {
                 ));
             }
         }
+        self.animation
+            .check_params()
+            .map_err(|e| param("animation", e))?;
+        if let Some(k) = self.prefix {
+            if let Some(allowed) = int_range(k, &(1..=self.n)) {
+                return Err(invalid(
+                    "prefix",
+                    format!("Some({k})"),
+                    &format!("None, or Some(k) with k {} (N = {})", &allowed[3..], self.n),
+                ));
+            }
+            if let Some((ci, col)) = self
+                .columns
+                .iter()
+                .enumerate()
+                .find(|(_, c)| c.points.is_none() && !c.pattern.plays_in_order())
+            {
+                return Err(invalid(
+                    "prefix",
+                    format!(
+                        "Some({k}) with columns[{ci}].pattern {}",
+                        col.pattern.name()
+                    ),
+                    &format!(
+                        "None: a prefix plays only when every column plays in order ({}, or \
+                         imported points)",
+                        super::animation::in_order_patterns()
+                    ),
+                ));
+            }
+        }
         for (ci, col) in self.columns.iter().enumerate() {
             if let Some(imp) = &col.points {
                 let field = format!("columns[{ci}].points.points");

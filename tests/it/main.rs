@@ -38,6 +38,7 @@ mod params;
 mod patterns_lowdisc;
 mod patterns_poisson;
 mod patterns_stratified;
+mod prefix;
 mod progress;
 mod psa;
 mod recon_error;

@@ -584,6 +584,7 @@ fn bits(v: &NodeValue) -> String {
     let img = |i: &samplescope::model::ImageData| format!("{:?}", i.values);
     match v {
         NodeValue::Points(p) => format!("{:?}", p.points),
+        NodeValue::Sequence(s) => format!("{:?}", s.0.points),
         NodeValue::Statistics(s) => {
             // The core's whole result without its stage timings.
             let mut full = s.full.clone();

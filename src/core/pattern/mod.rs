@@ -615,6 +615,14 @@ impl Pattern {
         )
     }
 
+    /// Whether the points come in an order whose prefixes mean something, so that showing the
+    /// first k of N points plays the construction: the progressive patterns (the first k
+    /// points are the k-point run) and dart throwing (the first k darts accepted, at the
+    /// N-point radius).
+    pub fn plays_in_order(&self) -> bool {
+        self.is_progressive() || matches!(self, Pattern::PoissonDart(_))
+    }
+
     /// `n` points in [0,1)²; a pure function of `(self, n, seed)`.
     ///
     /// Exactly `n` points or an error: a pattern that places fewer (dart throwing that gives

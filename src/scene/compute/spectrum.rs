@@ -46,6 +46,7 @@ pub(in crate::scene) fn run(ctx: &JobCtx) -> Output {
     let req = s.request(n_points, imported);
     let first = crate::core::rng::derive_seed(col.seed, 0);
     let (pattern, n) = (col.pattern, scene.n);
+    let shown = scene.prefix.unwrap_or(n);
     let mut on_progress = |p: Progress<'_, crate::core::spectrum::Spectrum>| {
         if let Some(Ok(data)) = p.interim().map(|spec| spectrum_data(spec, Vec::new())) {
             let accuracy = Accuracy::Realizations {
@@ -66,7 +67,11 @@ pub(in crate::scene) fn run(ctx: &JobCtx) -> Output {
             if sd == first || imported {
                 Ok(points0.points.clone())
             } else {
-                pattern.generate(n, sd)
+                // Another realization of what the column shows: its first k with a prefix.
+                pattern.generate(n, sd).map(|mut v| {
+                    v.truncate(shown);
+                    v
+                })
             }
         },
         cancel,
