@@ -5,8 +5,9 @@
 #   libegl1, libgl1-mesa-dri         - llvmpipe through EGL/GL: the fallback wgpu adapter
 #   libxkbcommon-x11-0               - keyboard handling for the eframe window (winit loads it at run time)
 #   xvfb                             - a virtual X display, to run the real window on a headless machine
+#   python3, python3-venv            - the Python package's tests: a virtual environment to build the wheel in
 set -euo pipefail
-PACKAGES=(mesa-vulkan-drivers libvulkan1 libegl1 libgl1-mesa-dri libxkbcommon-x11-0 xvfb)
+PACKAGES=(mesa-vulkan-drivers libvulkan1 libegl1 libgl1-mesa-dri libxkbcommon-x11-0 xvfb python3 python3-venv)
 
 if ! command -v dpkg-query >/dev/null 2>&1; then
     echo "system-packages: not a Debian system; install the equivalents of: ${PACKAGES[*]}" >&2

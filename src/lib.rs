@@ -12,6 +12,8 @@
 //! - `gui` (default): the GUI ([`ui`]: eframe, egui, wgpu, winit). Without it
 //!   (`--no-default-features`) the library and the command line build with no GUI stack, and
 //!   the binary says so when asked for a window.
+//! - `python`: the Python extension module `samplescope` (`src/python/`, pyo3 and NumPy),
+//!   built by maturin from `pyproject.toml` without `gui`.
 //!
 //! ## Conventions
 //!
@@ -68,6 +70,8 @@ pub mod core;
 pub mod engine;
 pub mod export;
 pub mod model;
+#[cfg(feature = "python")]
+mod python;
 pub mod scene;
 #[cfg(feature = "gui")]
 pub mod ui;

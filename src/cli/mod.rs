@@ -13,7 +13,7 @@ pub mod session;
 
 use samplescope::core::family::Family;
 use samplescope::core::filter::FilterError;
-use samplescope::core::params::{ParamError, ParamKind, ParamSpec, Params};
+use samplescope::core::params::{ParamError, Params};
 use samplescope::core::pattern::{Generated, Pattern, PatternError};
 
 /// An error of a subcommand.
@@ -162,42 +162,16 @@ pub fn apply_settings(
         }
         pairs.push((k, v));
     }
-    let is_choice = |p: &dyn Fn(&str) -> Option<ParamSpec>, k: &str| {
-        matches!(p(k).map(|s| s.kind), Some(ParamKind::Choice { .. }))
-    };
-    let snapshot = params.clone();
-    pairs.sort_by_key(|(k, _)| !is_choice(&|key| snapshot.spec(key), k));
-    let mut given = Vec::with_capacity(pairs.len());
-    for (k, v) in pairs {
-        given.push(params.set_field(k, v)?);
-    }
-    params.check_params().map_err(|e| match e {
-        ParamError::Invalid {
-            owner,
-            field,
-            value,
-            allowed,
-        } if !given.contains(&field) => ParamError::Invalid {
-            owner,
-            field,
-            value: format!("{value} (default)"),
-            allowed,
-        },
-        e => e,
-    })?;
+    params.set_all(&pairs)?;
     Ok(())
 }
 
 /// Refuses a seed given explicitly (`flag`) for a deterministic pattern: it would have no
 /// effect (the pattern draws no random numbers).
 pub fn check_seed(pattern: &Pattern, seed: Option<u64>, flag: &str) -> Result<(), CliError> {
-    match seed {
-        Some(s) if !pattern.is_random() => Err(CliError::Usage(format!(
-            "{flag} {s}: {} with these parameters is deterministic (it draws no random numbers), \
-             so {flag} would have no effect; leave it out",
-            pattern.name()
-        ))),
-        _ => Ok(()),
+    match seed.and_then(|s| pattern.seed_refusal(s, flag)) {
+        Some(message) => Err(CliError::Usage(message)),
+        None => Ok(()),
     }
 }
 

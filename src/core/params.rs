@@ -587,6 +587,38 @@ pub trait Params: Clone {
         Ok(spec.name)
     }
 
+    /// Applies several `(key, value text)` settings at once, as the CLI's `--set` and the
+    /// Python module's keyword arguments do: enum settings first, so that a parameter that
+    /// exists only for one option (`beta` with `window=kaiser`) may be given in any order; each
+    /// value checked against its own descriptor as it is applied ([`Params::set_field`]); the
+    /// constraints between fields checked once, after every setting, so the order never
+    /// matters. An error about a field that was not given marks its value `(default)`. On an
+    /// error the set may be partly changed (callers drop it).
+    fn set_all(&mut self, pairs: &[(&str, &str)]) -> Result<(), ParamError> {
+        let is_choice =
+            |k: &str| matches!(self.spec(k).map(|s| s.kind), Some(ParamKind::Choice { .. }));
+        let mut ordered: Vec<(&str, &str)> = pairs.to_vec();
+        ordered.sort_by_key(|(k, _)| !is_choice(k));
+        let mut given = Vec::with_capacity(ordered.len());
+        for (k, v) in ordered {
+            given.push(self.set_field(k, v)?);
+        }
+        self.check_params().map_err(|e| match e {
+            ParamError::Invalid {
+                owner,
+                field,
+                value,
+                allowed,
+            } if !given.contains(&field) => ParamError::Invalid {
+                owner,
+                field,
+                value: format!("{value} (default)"),
+                allowed,
+            },
+            e => e,
+        })
+    }
+
     /// Sets `key` from text (`--set key=value`); applied only if the whole set is then valid.
     fn set(&mut self, key: &str, text: &str) -> Result<(), ParamError> {
         let spec = self.lookup(key)?;

@@ -599,6 +599,19 @@ impl Pattern {
             && !matches!(self, Pattern::Hex(h) if h.amount == 0.0)
     }
 
+    /// The one-line refusal of a `seed` given explicitly (as `flag`: `--seed`, `seed`) for a
+    /// pattern that is deterministic with these parameters: it draws no random numbers, so the
+    /// seed would have no effect. `None` when the pattern uses its seed.
+    pub fn seed_refusal(&self, seed: u64, flag: &str) -> Option<String> {
+        (!self.is_random()).then(|| {
+            format!(
+                "{flag} {seed}: {} with these parameters is deterministic (it draws no random \
+                 numbers), so {flag} would have no effect; leave it out",
+                self.name()
+            )
+        })
+    }
+
     /// Whether every prefix of the output is itself a good pattern (sequences, best candidate).
     pub fn is_progressive(&self) -> bool {
         matches!(

@@ -1,0 +1,54 @@
+"""Long calls release the GIL and stop on Ctrl-C: a KeyboardInterrupt reaches the caller within
+about 0.2 s of SIGINT, and two threads compute at once."""
+import signal
+import subprocess
+import sys
+import textwrap
+import threading
+import time
+
+import samplescope
+
+CHILD = textwrap.dedent(
+    """
+    import sys, time, samplescope
+    print("start", flush=True)
+    try:
+        samplescope.points("best-candidate", 1000000, seed=1, m=10)
+        print("finished", flush=True)
+    except KeyboardInterrupt:
+        print("interrupted %.6f" % time.time(), flush=True)
+    """
+)
+
+
+def test_ctrl_c_raises_keyboard_interrupt_promptly():
+    child = subprocess.Popen([sys.executable, "-c", CHILD], stdout=subprocess.PIPE, text=True)
+    assert child.stdout.readline().strip() == "start"
+    time.sleep(1.0)
+    sent = time.time()
+    child.send_signal(signal.SIGINT)
+    out, _ = child.communicate(timeout=30)
+    assert child.returncode == 0
+    word, at = out.split()
+    assert word == "interrupted"
+    assert float(at) - sent < 0.2 + 0.05  # 0.2 s, with slack for the print
+
+
+def test_two_threads_compute_at_once():
+    def work():
+        samplescope.points("lloyd", 4096, seed=1, iterations=20)
+
+    start = time.perf_counter()
+    work()
+    one = time.perf_counter() - start
+    threads = [threading.Thread(target=work) for _ in range(2)]
+    start = time.perf_counter()
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    two = time.perf_counter() - start
+    # Serialised by the GIL, two calls would take 2x one; they overlap (on 2 cores or more:
+    # rayon's pool is shared, so allow up to 1.8x).
+    assert two < 1.8 * one, (one, two)
