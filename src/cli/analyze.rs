@@ -494,14 +494,8 @@ pub fn analysis_scene(
         ..Scene::default()
     };
     scene.panels = Panels {
-        pattern: false,
-        sphere: false,
         spectrum: true,
-        zoneplate: false,
-        filter: false,
-        cost: false,
-        integration: false,
-        theorem: false,
+        ..Panels::none()
     };
     scene.effects.reconstruction = false;
     scene.effects.error = false;

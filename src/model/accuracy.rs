@@ -38,6 +38,8 @@ pub enum Accuracy {
     TheoremBand { band: f64, tail: f64 },
     /// An iterative pattern (Lloyd, SOT, GBN) part way: `done` of `of` iterations.
     Iterations { done: usize, of: usize },
+    /// The projection matrix part way: `done` of `of` pairs measured.
+    Pairs { done: usize, of: usize },
     /// Points read from a file, not generated (`source` names it).
     Imported { source: String },
     /// The error image against the reference: RMSE, PSNR (dB) and the share of the error's
@@ -110,6 +112,7 @@ impl std::fmt::Display for Accuracy {
                 write!(f, "band ±{band:.3} cycles/unit, tail ≤ {tail:.1e}")
             }
             Accuracy::Iterations { done, of } => write!(f, "iteration {done} of {of}"),
+            Accuracy::Pairs { done, of } => write!(f, "{done} of {of} pairs measured"),
             Accuracy::Imported { source } => write!(f, "imported from {source}"),
             Accuracy::Error {
                 rmse,

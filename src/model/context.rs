@@ -47,12 +47,23 @@ pub struct FigureContext {
     /// Draw the pattern's strata, (columns, rows), under its points (the column's `strata`,
     /// or the GUI's overlay; `scene::figure::strata` is the one rule, shared with the panel).
     pub strata: Option<(usize, usize)>,
+    /// For a column in D > 2 dimensions (or a swapped pair), (i, j, D): its 2D figures show the
+    /// projection (x_i, x_j) of its points in [0,1)^D; `None` for the 2D pattern itself.
+    pub projection: Option<(usize, usize, usize)>,
+    /// What tints the projection matrix's cells (the scene's `matrix.measure`).
+    pub matrix_measure: crate::core::metrics::cube::ProjectionMeasure,
 }
 
 impl FigureContext {
     /// "label, N = n, seed s": the column as the titles name it.
     pub fn column_caption(&self) -> String {
-        format!("{}, N = {}, seed {}", self.column_title, self.n, self.seed)
+        match self.projection {
+            None => format!("{}, N = {}, seed {}", self.column_title, self.n, self.seed),
+            Some((i, j, d)) => format!(
+                "{}, N = {}, seed {}, x{i} × x{j} of D = {d}",
+                self.column_title, self.n, self.seed
+            ),
+        }
     }
 }
 

@@ -76,6 +76,12 @@ pub fn context(
         response_db: false,
         elementary_k: col.elementary_k,
         strata: strata(scene, column, false),
+        projection: (!col.is_plain_2d() && col.points.is_none()).then_some((
+            col.project.0,
+            col.project.1,
+            col.dims,
+        )),
+        matrix_measure: scene.matrix.measure,
     })
 }
 

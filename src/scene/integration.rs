@@ -59,8 +59,9 @@ pub mod limits {
 }
 
 impl IntegrationSettings {
-    /// The study of a column's pattern and seed.
-    pub fn request(&self, pattern: Pattern, seed: u64) -> StudyRequest {
+    /// The study of a column's pattern and seed in its `dims` dimensions (2: the 2D study;
+    /// other D take the pattern's points in [0,1)^D, `Pattern::generate_cube`).
+    pub fn request(&self, pattern: Pattern, seed: u64, dims: usize) -> StudyRequest {
         StudyRequest {
             pattern,
             integrand: self.integrand,
@@ -69,28 +70,35 @@ impl IntegrationSettings {
             seed,
             shift: self.shift,
             randomize: self.randomize,
-            dims: 2,
+            dims,
         }
     }
 
-    /// The first sample count (`ns`) out of its range, or a Genz integrand without a D = 2
-    /// instance (a list of `a` or `u` of another length than 1 or 2: the panel's study is 2D):
-    /// (field, value, allowed). The other settings and the integrand's parameters are checked
-    /// through their descriptors.
-    pub fn check(&self) -> Option<(&'static str, String, String)> {
-        if let Some(Err(ParamError::Invalid {
-            field,
-            value,
-            allowed,
-            ..
-        })) = self.integrand.in_dims(2)
-        {
-            let path = if field == "u" {
-                "integrand.u"
-            } else {
-                "integrand.a"
-            };
-            return Some((path, value, format!("{allowed}; the panel's study is 2D")));
+    /// The first sample count (`ns`) out of its range, or a Genz integrand without an
+    /// instance in one of the columns' dimensions `dims` (a list of `a` or `u` of another
+    /// length than 1 or D: each column's study is in its own D): (field, value, allowed). The
+    /// other settings and the integrand's parameters are checked through their descriptors.
+    pub fn check(&self, dims: &[usize]) -> Option<(&'static str, String, String)> {
+        for &d in dims {
+            if let Some(Err(ParamError::Invalid {
+                field,
+                value,
+                allowed,
+                ..
+            })) = self.integrand.in_dims(d)
+            {
+                let path = if field == "u" {
+                    "integrand.u"
+                } else {
+                    "integrand.a"
+                };
+                let why = if d == 2 {
+                    "the panel's study is 2D".to_string()
+                } else {
+                    format!("a column's study is in D = {d} dimensions")
+                };
+                return Some((path, value, format!("{allowed}; {why}")));
+            }
         }
         if !limits::NS.contains(&self.ns.len()) {
             return Some((
@@ -125,11 +133,11 @@ mod tests {
 
     #[test]
     fn the_default_is_valid_and_bad_values_name_their_field() {
-        assert_eq!(IntegrationSettings::default().check(), None);
+        assert_eq!(IntegrationSettings::default().check(&[2]), None);
         let bad = |f: fn(&mut IntegrationSettings)| {
             let mut s = IntegrationSettings::default();
             f(&mut s);
-            s.check().map(|c| c.0)
+            s.check(&[2]).map(|c| c.0)
         };
         assert_eq!(bad(|s| s.ns.clear()), Some("ns"));
         assert_eq!(bad(|s| s.ns = vec![0]), Some("ns"));
@@ -143,7 +151,7 @@ mod tests {
                 ..Default::default()
             };
             s.integrand.set("a", a).unwrap();
-            s.check()
+            s.check(&[2])
         };
         assert_eq!(genz("3"), None);
         assert_eq!(genz("[3,4]"), None);
@@ -153,6 +161,16 @@ mod tests {
             ("integrand.a", "[3,4,5] (3 numbers)")
         );
         assert!(allowed.ends_with("the panel's study is 2D"), "{allowed}");
+        // A column in D = 3 takes the list of 3, and then a list of 2 is refused for it.
+        let mut s = IntegrationSettings {
+            integrand: Integrand::from_name("genz-gaussian").unwrap(),
+            ..Default::default()
+        };
+        s.integrand.set("a", "[3,4,5]").unwrap();
+        assert_eq!(s.check(&[3]), None);
+        s.integrand.set("a", "[3,4]").unwrap();
+        let (_, _, allowed) = s.check(&[2, 3]).unwrap();
+        assert!(allowed.ends_with("in D = 3 dimensions"), "{allowed}");
         let realizations = |r| {
             IntegrationSettings {
                 realizations: r,

@@ -30,8 +30,8 @@ pub use limits::{MAX_COLUMNS, MAX_ELEMENTARY_K, MAX_SCENE_N};
 pub use load::{MAX_SCENE_BYTES, RON_NESTING};
 pub use panels::Panels;
 pub use settings::{
-    Column, Effects, PixelSampling, ReconMode, ReconSettings, Scene, SpectrumSettings,
-    DEFAULT_GRID, DEFAULT_SPP,
+    Column, Effects, MatrixSettings, PixelSampling, ReconMode, ReconSettings, Scene,
+    SpectrumSettings, DEFAULT_DIMS, DEFAULT_GRID, DEFAULT_PROJECT, DEFAULT_SPP, MATRIX_MAX_DIMS,
 };
 
 pub use import::ImportedPoints;

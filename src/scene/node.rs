@@ -168,6 +168,19 @@ pub enum NodeError {
         column + 1
     )]
     ImportedNeedsPattern { column: usize, what: &'static str },
+    /// A node that draws fresh 2D samples in every pixel, on a column shown as a projection of
+    /// its points in D dimensions.
+    #[error(
+        "column {} shows dims = {dims}, project {project:?}: {what} draws fresh 2D samples in \
+         every pixel; use scattered reconstruction, or dims 2 with project (0, 1)",
+        column + 1
+    )]
+    ProjectedNeedsPattern {
+        column: usize,
+        dims: usize,
+        project: (usize, usize),
+        what: &'static str,
+    },
     /// The integration study on a column of imported points (they have one N).
     #[error(
         "column {} shows imported points: the integration study needs a pattern that makes \

@@ -190,6 +190,23 @@ macro_rules! panel_list {
                 ],
                 nodes: [(Integration, always)],
             }
+            /// The projection matrix: the first K dimensions of the column's points, one small
+            /// scatter plot per pair i < j tinted by a measure of that projection; a click shows
+            /// that pair in the column's panels.
+            Matrix {
+                switch: matrix,
+                label: "Projection matrix",
+                place: Column,
+                column_free: false,
+                gui: matrix::MatrixPanel,
+                figures: [
+                    /// The projection matrix: the pairs of the first K dimensions as a triangle
+                    /// of scatter plots tinted by the measure, with its colour bar (CSV: the
+                    /// pair table).
+                    Matrix { name: "matrix", when: always, composite: false, draw: matrix::Matrix },
+                ],
+                nodes: [(Matrix, always)],
+            }
         }
     };
 }
@@ -247,6 +264,9 @@ pub struct Panels {
     pub integration: bool,
     /// The points wrapped onto the sphere (the lecture's cylinder wrap and radial projection).
     pub sphere: bool,
+    /// The projection matrix: the first K dimensions' pairs as scatter plots tinted by a
+    /// measure.
+    pub matrix: bool,
 }
 
 impl Default for Panels {
@@ -277,6 +297,7 @@ impl Panels {
             theorem: false,
             integration: false,
             sphere: false,
+            matrix: false,
         }
     }
 
@@ -567,6 +588,7 @@ mod tests {
             | FigureKind::TheoremReconstructed
             | FigureKind::TheoremPair => NodeKind::Theorem,
             FigureKind::Integration => NodeKind::Integration,
+            FigureKind::Matrix => NodeKind::Matrix,
         }
     }
 
@@ -576,15 +598,17 @@ mod tests {
             columns: vec![Default::default(), Default::default()],
             ..Default::default()
         };
-        for bits in 0u32..1 << 12 {
+        // One bit per panel, then one per effect.
+        let np = PanelKind::ALL.len() as u32;
+        for bits in 0u32..1 << (np + 4) {
             let on = |i: u32| bits & (1 << i) != 0;
             for (i, p) in PanelKind::ALL.into_iter().enumerate() {
                 *(p.spec().switch)(&mut scene.panels) = on(i as u32);
             }
-            scene.effects.reconstruction = on(8);
-            scene.effects.error = on(9);
-            scene.effects.convergence = on(10);
-            scene.effects.statistics = on(11);
+            scene.effects.reconstruction = on(np);
+            scene.effects.error = on(np + 1);
+            scene.effects.convergence = on(np + 2);
+            scene.effects.statistics = on(np + 3);
             for c in 0..2 {
                 let planned: Vec<NodeKind> = super::super::graph::column_plan(&scene, c)
                     .nodes

@@ -31,6 +31,29 @@ pub struct Column {
     pub strata: bool,
     /// How supersampling gives the pixels their samples (only with `recon.mode: Supersample`).
     pub pixels: PixelSampling,
+    /// The dimension D of the column's points, in 2..=the pattern's `max_dims` (2 for the
+    /// patterns defined in 2D only); the points are `Pattern::generate_cube`'s in [0,1)^D and
+    /// every 2D panel shows their projection [`Column::project`]. Default 2 (left out when
+    /// written): the 2D pattern, bit for bit.
+    #[serde(skip_serializing_if = "is_default_dims")]
+    pub dims: usize,
+    /// The pair of dimensions (i, j), i ≠ j, both below `dims`, that the 2D panels show:
+    /// point k is drawn at (x_i, x_j). Default (0, 1) (left out when written).
+    #[serde(skip_serializing_if = "is_default_project")]
+    pub project: (usize, usize),
+}
+
+/// A column's default dimension (the 2D pattern).
+pub const DEFAULT_DIMS: usize = 2;
+/// A column's default projection (the first two dimensions).
+pub const DEFAULT_PROJECT: (usize, usize) = (0, 1);
+
+fn is_default_dims(d: &usize) -> bool {
+    *d == DEFAULT_DIMS
+}
+
+fn is_default_project(p: &(usize, usize)) -> bool {
+    *p == DEFAULT_PROJECT
 }
 
 /// How a supersampling column draws each pixel's s samples.
@@ -75,11 +98,38 @@ impl Default for Column {
             elementary_k: None,
             strata: false,
             pixels: PixelSampling::PerPixel,
+            dims: DEFAULT_DIMS,
+            project: DEFAULT_PROJECT,
         }
     }
 }
 
 impl Column {
+    /// Whether the column shows the 2D pattern itself (dims 2, projection (0, 1)): its nodes
+    /// are keyed and computed exactly as before dimensions existed.
+    pub fn is_plain_2d(&self) -> bool {
+        self.dims == DEFAULT_DIMS && self.project == DEFAULT_PROJECT
+    }
+
+    /// The 2D points the column's panels show for `n` points and `seed`: the pattern's 2D
+    /// points when [`Column::is_plain_2d`], else [`Pattern::generate_projected`] (the
+    /// projection `project` of its points in [0,1)^dims). Imported points are not generated.
+    pub fn generate_2d(
+        &self,
+        n: usize,
+        seed: u64,
+        cancel: &crate::core::cancel::Cancel,
+    ) -> Result<Vec<glam::DVec2>, crate::core::pattern::PatternError> {
+        if self.is_plain_2d() {
+            return self
+                .pattern
+                .generate_with(n, seed, cancel)?
+                .require_all(self.pattern.name());
+        }
+        self.pattern
+            .generate_projected(n, self.dims, self.project, seed, cancel)
+    }
+
     /// The label shown above the column.
     pub fn title(&self) -> String {
         if self.label.is_empty() {
@@ -184,6 +234,29 @@ declare_params! {
         exact: flag(false, "use the exact DFT instead of the NUFFT"),
         realizations: count(1, 1, 256, "number of realizations averaged (seeds derived from the column's seed)"),
         mask_dc: flag(true, "hide the DC peak P(0) = N"),
+    }
+}
+
+/// The most dimensions the projection matrix shows (120 cells).
+pub const MATRIX_MAX_DIMS: usize = 16;
+
+declare_params! {
+    /// The projection matrix's settings (used only while `panels.matrix` is on): every field
+    /// is a parameter, so `Scene::validate` and the panel's controls come from the declaration.
+    MatrixSettings = "matrix", "the projection matrix of every column" {
+        dims: count(8, 2, MATRIX_MAX_DIMS, "K: the first K dimensions of each column, one cell per pair (at most the column's dims)"),
+        measure: choice(crate::core::metrics::cube::ProjectionMeasure, "what tints each cell: t-value (base 2, N a power of two) | l2-star (discrepancy) | min-distance (toroidal)"),
+    }
+}
+
+impl MatrixSettings {
+    /// K for a column of `dims` dimensions: the setting, at most `dims`.
+    pub fn shown(&self, dims: usize) -> usize {
+        self.dims.min(dims)
+    }
+
+    fn is_default(&self) -> bool {
+        *self == MatrixSettings::default()
     }
 }
 
@@ -293,6 +366,10 @@ pub struct Scene {
     pub prefix: Option<usize>,
     /// How the scene animates (motion or prefix): frames and rate of its player and GIF.
     pub animation: AnimationSettings,
+    /// The projection matrix (used only while `panels.matrix` is on; left out when written
+    /// as the default).
+    #[serde(skip_serializing_if = "MatrixSettings::is_default")]
+    pub matrix: MatrixSettings,
 }
 
 impl Default for Scene {
@@ -313,6 +390,7 @@ impl Default for Scene {
             integration: IntegrationSettings::default(),
             prefix: None,
             animation: AnimationSettings::default(),
+            matrix: MatrixSettings::default(),
         }
     }
 }
@@ -341,5 +419,6 @@ mod tests {
         defaults_agree(&ReconSettings::default());
         defaults_agree(&crate::scene::IntegrationSettings::default());
         defaults_agree(&TheoremSettings::default());
+        defaults_agree(&MatrixSettings::default());
     }
 }

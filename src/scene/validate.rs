@@ -94,6 +94,8 @@ impl Scene {
                     .check_params()
                     .map_err(|e| param(&format!("columns[{i}].pattern"), e))?;
             }
+            check_dims(self, i, c)
+                .map_err(|(field, value, allowed)| invalid(&field, value, &allowed))?;
             if c.strata && (c.points.is_some() || c.pattern.strata(self.n).is_none()) {
                 return Err(invalid(
                     &format!("columns[{i}].strata"),
@@ -208,6 +210,7 @@ impl Scene {
             .check_params()
             .map_err(|e| param("spectrum", e))?;
         self.recon.check_params().map_err(|e| param("recon", e))?;
+        self.matrix.check_params().map_err(|e| param("matrix", e))?;
         self.recon
             .mode
             .check_params()
@@ -246,7 +249,13 @@ impl Scene {
             .integrand
             .check_params()
             .map_err(|e| param("integration.integrand", e))?;
-        if let Some((field, value, allowed)) = self.integration.check() {
+        let dims: Vec<usize> = self
+            .columns
+            .iter()
+            .filter(|c| c.points.is_none())
+            .map(|c| c.dims)
+            .collect();
+        if let Some((field, value, allowed)) = self.integration.check(&dims) {
             return Err(invalid(&format!("integration.{field}"), value, &allowed));
         }
         self.integration
@@ -338,4 +347,93 @@ impl Scene {
         }
         Ok(())
     }
+}
+
+/// A column's `dims` and `project` (field, value, allowed): D in 2..=the pattern's `max_dims`
+/// (exactly 2 for imported points and the 2D-only patterns), N·D within the coordinates a point
+/// set holds, i ≠ j both below D; and a column beyond the plain 2D pattern only where its
+/// points are what is shown (supersampling and the convergence curve draw fresh 2D samples in
+/// every pixel; the integration study of a 2D integrand is 2D).
+fn check_dims(s: &Scene, i: usize, c: &super::Column) -> Result<(), (String, String, String)> {
+    use crate::core::cube::MAX_COORDS;
+    let field = |name: &str| format!("columns[{i}].{name}");
+    let max = if c.points.is_some() {
+        2
+    } else {
+        c.pattern.max_dims()
+    };
+    if !(2..=max).contains(&c.dims) {
+        let why = if c.points.is_some() {
+            "2 (imported points are 2D)".to_string()
+        } else if max == 2 {
+            format!(
+                "2 ({} is defined in 2 dimensions only; the patterns defined in d dimensions \
+                 are {})",
+                c.pattern.name(),
+                crate::core::pattern::cube::CUBE_PATTERNS
+            )
+        } else {
+            format!("an integer in 2..={max}")
+        };
+        return Err((field("dims"), c.dims.to_string(), why));
+    }
+    if c.dims > 2 && s.n.saturating_mul(c.dims) > MAX_COORDS {
+        return Err((
+            field("dims"),
+            c.dims.to_string(),
+            format!(
+                "an integer in 2..={} for n = {} (n · dims ≤ {MAX_COORDS} coordinates)",
+                (MAX_COORDS / s.n).min(max),
+                s.n
+            ),
+        ));
+    }
+    let (a, b) = c.project;
+    if a >= c.dims || b >= c.dims || a == b {
+        return Err((
+            field("project"),
+            format!("({a}, {b})"),
+            format!(
+                "two different dimensions (i, j) in 0..={} (dims = {})",
+                c.dims - 1,
+                c.dims
+            ),
+        ));
+    }
+    if !c.is_plain_2d() {
+        let supersamples = matches!(s.recon.mode, ReconMode::Supersample { .. })
+            && super::panels::asks_for(s, i, NodeKind::Reconstruction);
+        let converges = super::panels::asks_for(s, i, NodeKind::Convergence);
+        if supersamples || converges {
+            return Err((
+                field("dims"),
+                format!("{} with project ({a}, {b})", c.dims),
+                format!(
+                    "2 with project (0, 1) while {} is on: it draws fresh 2D samples in every \
+                     pixel (a projection is shown by the scattered reconstruction)",
+                    if supersamples {
+                        "recon.mode: Supersample"
+                    } else {
+                        "effects.convergence"
+                    }
+                ),
+            ));
+        }
+        if c.dims != 2
+            && s.panels.integration
+            && c.points.is_none()
+            && s.integration.integrand.is_planar()
+        {
+            return Err((
+                field("dims"),
+                c.dims.to_string(),
+                format!(
+                    "2 while the integration panel studies {} (defined on [0,1]² only; the \
+                     genz-* integrands take any D)",
+                    s.integration.integrand.name()
+                ),
+            ));
+        }
+    }
+    Ok(())
 }

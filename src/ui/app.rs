@@ -562,6 +562,7 @@ impl SamplescopeApp {
         ui.separator();
         let ncols = self.scene.columns.len();
         let supersampling = matches!(self.scene.recon.mode, ReconMode::Supersample { .. });
+        let n = self.scene.n;
         let mut remove = None;
         let mut duplicate = None;
         for (ci, column) in self.scene.columns.iter_mut().enumerate() {
@@ -576,7 +577,7 @@ impl SamplescopeApp {
                     }
                 });
                 dropped::imported_column_ui(ui, column);
-                params::pattern_ui(ui, column);
+                params::pattern_ui(ui, column, n);
                 if supersampling {
                     params::pixel_sampling_ui(ui, column);
                 }

@@ -107,7 +107,8 @@ impl Columns {
     }
 }
 
-/// The title of column `cx.column`: its pattern, N and seed, labelled from the scene its points
+/// The title of column `cx.column`: its pattern, N, seed (and the pair of dimensions shown of a
+/// column in D > 2 dimensions), labelled from the scene its points
 /// were computed for (a recompute may be running); an imported set has its own size and no seed.
 fn column_header(cx: &PanelCx<'_>) -> String {
     let ci = cx.column;
@@ -124,7 +125,17 @@ fn column_header(cx: &PanelCx<'_>) -> String {
                 .and_then(crate::ui::results::scene_of)
                 .unwrap_or(scene);
             let c = lab.columns.get(ci).unwrap_or(column);
-            format!("{} · N = {} · seed {}", c.title(), lab.n, c.seed)
+            let projection = if c.is_plain_2d() {
+                String::new()
+            } else {
+                format!(" · x{} × x{} of D = {}", c.project.0, c.project.1, c.dims)
+            };
+            format!(
+                "{} · N = {} · seed {}{projection}",
+                c.title(),
+                lab.n,
+                c.seed
+            )
         }
     }
 }

@@ -45,7 +45,7 @@ fn every_column_gets_its_study_with_partials_as_realizations_come_in() {
         };
         let col = &scene.columns[c];
         let want = run_study(
-            &scene.integration.request(col.pattern, col.seed),
+            &scene.integration.request(col.pattern, col.seed, col.dims),
             &Cancel::never(),
             &mut no_progress,
         )
@@ -91,7 +91,7 @@ fn the_measured_slopes_are_those_the_scene_notes_state() {
         let scene = shipped(name);
         for (col, w) in scene.columns.iter().zip(want) {
             let s = run_study(
-                &scene.integration.request(col.pattern, col.seed),
+                &scene.integration.request(col.pattern, col.seed, col.dims),
                 &Cancel::never(),
                 &mut no_progress,
             )

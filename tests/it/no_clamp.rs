@@ -31,6 +31,7 @@ fn all_panels(mut s: Scene) -> Scene {
     p.theorem = true;
     p.integration = true;
     p.sphere = true;
+    p.matrix = true;
     s
 }
 
@@ -95,6 +96,13 @@ fn limit_scenes() -> Vec<(String, Scene)> {
         };
         push(format!("spectrum={spectrum:?}"), s);
     }
+    for matrix in at_limits(&base.matrix) {
+        let s = Scene {
+            matrix,
+            ..base.clone()
+        };
+        push(format!("matrix={matrix:?}"), s);
+    }
     for recon in at_limits(&base.recon) {
         let s = Scene {
             recon,
@@ -125,6 +133,22 @@ fn limit_scenes() -> Vec<(String, Scene)> {
             format!("columns={MAX_COLUMNS}, seeds at u64::MAX, elementary k 0 and 10"),
             s,
         );
+    }
+    // A column in d dimensions: D at each end of its range (the pattern's, and N·D), the
+    // projection at the last pair and swapped.
+    for (name, dims, project) in [
+        ("sobol", 1024, (1023, 0)),
+        ("halton", 3, (2, 1)),
+        ("padded", 16, (14, 15)),
+        ("rank1", 2, (1, 0)),
+    ] {
+        let mut s = base.clone();
+        s.columns[0].pattern = Pattern::from_name(name).unwrap();
+        s.columns[0].dims = dims;
+        s.columns[0].project = project;
+        s.panels.integration = false;
+        s.effects.convergence = false;
+        push(format!("{name} dims={dims} project={project:?}"), s);
     }
     for p in Pattern::all() {
         for q in at_limits(&p) {

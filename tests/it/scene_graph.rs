@@ -557,6 +557,14 @@ fn parallel_and_serial_evaluation_give_the_same_bits() {
     s.columns.push(s.columns[0].clone());
     s.columns[1].seed = 9;
     s.effects.statistics = true;
+    // A column in 8 dimensions showing a projection, and the projection matrix.
+    s.columns.push(samplescope::scene::Column {
+        pattern: samplescope::core::pattern::Pattern::from_name("sobol").unwrap(),
+        dims: 8,
+        project: (5, 2),
+        ..Default::default()
+    });
+    s.panels.matrix = true;
     let collect = |serial: bool| {
         let eval = Evaluator::default();
         let mut out: Vec<(usize, NodeKind, String)> = Vec::new();
@@ -618,6 +626,7 @@ fn bits(v: &NodeValue) -> String {
         NodeValue::Convergence(c) => format!("{:?}", c.iter().map(|p| p.rmse).collect::<Vec<_>>()),
         NodeValue::Theorem(t) => format!("{:?}", t.errors),
         NodeValue::Integration(i) => format!("{:?} {:?}", i.study.rows, i.study.slope),
+        NodeValue::Matrix(m) => format!("{:?}", m.cells),
     }
 }
 

@@ -567,14 +567,6 @@ impl Frame<'_, '_> {
         kind: FigureKind,
         spec: ImageSpec<'_>,
     ) -> Result<(), ExportError> {
-        let look = self.look;
-        let (main, bar_area) = if spec.bar.is_some() {
-            let (w, _) = body.dim_in_pixel();
-            body.split_horizontally(w - look.u(BAR_PART))
-        } else {
-            (body.clone(), body.clone())
-        };
-        let mut ch = chart(&main, spec.x.clone(), spec.y.clone(), look, kind)?;
         let rgb = Rgb {
             width: spec.image.width as u32,
             height: spec.image.height as u32,
@@ -585,6 +577,27 @@ impl Frame<'_, '_> {
                 spec.colormap,
             ),
         };
+        self.picture(body, kind, rgb, &spec)
+    }
+
+    /// A picture already in colour (`rgb`) over the axes of `spec` (whose `image` is not
+    /// read), with the colour bar of `spec.colormap` over [lo, hi] right of it when
+    /// `spec.bar` names one.
+    pub(super) fn picture(
+        &mut self,
+        body: &Area<'_>,
+        kind: FigureKind,
+        rgb: Rgb,
+        spec: &ImageSpec<'_>,
+    ) -> Result<(), ExportError> {
+        let look = self.look;
+        let (main, bar_area) = if spec.bar.is_some() {
+            let (w, _) = body.dim_in_pixel();
+            body.split_horizontally(w - look.u(BAR_PART))
+        } else {
+            (body.clone(), body.clone())
+        };
+        let mut ch = chart(&main, spec.x.clone(), spec.y.clone(), look, kind)?;
         self.paint(ch.plotting_area().get_pixel_range(), rgb, kind)?;
         axes(
             &mut ch,

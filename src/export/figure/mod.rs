@@ -65,6 +65,7 @@ mod drawing;
 mod error;
 mod integration;
 mod kernel;
+mod matrix;
 mod pattern;
 mod pdf;
 mod raps;
@@ -212,7 +213,7 @@ pub fn metadata(
 
 /// The scene, column, pattern, N, seed, signal and filter of a context as metadata.
 fn context_metadata(ctx: &FigureContext) -> Vec<(String, String)> {
-    vec![
+    let mut m = vec![
         ("scene".into(), ctx.scene_title.clone()),
         ("column".into(), ctx.column_title.clone()),
         ("pattern".into(), ctx.pattern.clone()),
@@ -222,7 +223,17 @@ fn context_metadata(ctx: &FigureContext) -> Vec<(String, String)> {
         ("signal".into(), ctx.signal.clone()),
         ("filter".into(), ctx.filter.clone()),
         ("reconstruction".into(), ctx.recon.clone()),
-    ]
+    ];
+    if let Some((i, j, d)) = ctx.projection {
+        m.insert(
+            5,
+            (
+                "projection".into(),
+                format!("x{i} × x{j} of {d} dimensions"),
+            ),
+        );
+    }
+    m
 }
 
 /// A file format of the figures.
@@ -345,6 +356,7 @@ pub fn panel_rgba(
 /// | theorem-spectrum | `series,omega,magnitude`: `F` (\|F\|), `replica_k` (\|F(ω − k f_s)\|, k = −3..3, k ≠ 0), `G` (\|G\|); line spectra: `line_k` (the lines of replica k, k = 0 the signal's) and `G` |
 /// | theorem-reconstructed | `series,omega,magnitude`: `F` and `F_r`; line spectra: `F_line` and `F_r_line` |
 /// | theorem-pair | `series,position,value`: `p` (x, p(x)), `abs_P`, `re_P`, `im_P` (ω, …); the shah: `impulse_x` (x, weight), `impulse_re`, `impulse_im` (ω, Re and Im of the weight) |
+/// | matrix | `i,j,t_value,l2_star_discrepancy,min_distance` (the pair table of the first K dimensions, pairs in order; empty where a value is missing) |
 pub fn panel_csv(
     kind: FigureKind,
     _ctx: &FigureContext,

@@ -39,6 +39,14 @@ pub(in crate::scene) fn run(ctx: &JobCtx) -> Output {
             what: "the convergence curve",
         });
     }
+    if !col.is_plain_2d() {
+        return Err(NodeError::ProjectedNeedsPattern {
+            column: c,
+            dims: col.dims,
+            project: col.project,
+            what: "the convergence curve",
+        });
+    }
     if let Some(why) = scene.filter.reconstruction_refusal() {
         return Err(NodeError::CannotReconstruct(why));
     }

@@ -9,10 +9,16 @@ pub(in crate::scene) fn inputs(s: &Scene, c: usize) -> Inputs {
     match &col.points {
         // Imported points have one N: the job reports that instead of running.
         Some(p) => Inputs::new(NodeKind::Integration, &[], ("imported", p.content_digest())),
-        None => Inputs::new(
+        // The study's D is the column's (the 2D key is unchanged).
+        None if col.dims == 2 => Inputs::new(
             NodeKind::Integration,
             &[],
             (&col.pattern, col.seed, &s.integration),
+        ),
+        None => Inputs::new(
+            NodeKind::Integration,
+            &[],
+            (&col.pattern, col.seed, &s.integration, col.dims),
         ),
     }
 }
@@ -23,7 +29,11 @@ pub(in crate::scene) fn estimate(s: &Scene, c: usize) -> Vec<Estimate> {
     let col = &s.columns[c];
     match &col.points {
         Some(_) => Vec::new(),
-        None => crate::core::integration::estimate(&s.integration.request(col.pattern, col.seed)),
+        None => crate::core::integration::estimate(&s.integration.request(
+            col.pattern,
+            col.seed,
+            col.dims,
+        )),
     }
 }
 
@@ -63,7 +73,7 @@ pub(in crate::scene) fn run(ctx: &JobCtx) -> Output {
         return Err(NodeError::ImportedNoStudy { column: ctx.column });
     }
     let settings = &scene.integration;
-    let req = settings.request(col.pattern, col.seed);
+    let req = settings.request(col.pattern, col.seed, col.dims);
     let f = settings.integrand;
     let integrand = format!("{} {}", f.name(), f.params_text());
     let thumbnail = integrand_thumbnail(&f, INTEGRAND_THUMBNAIL);

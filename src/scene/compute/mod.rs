@@ -11,6 +11,7 @@
 pub(super) mod convergence;
 pub(super) mod error;
 pub(super) mod integration;
+pub(super) mod matrix;
 pub(super) mod net_prefixes;
 pub(super) mod points;
 pub(super) mod psa;
@@ -169,6 +170,15 @@ macro_rules! node_list {
                         + i.thumbnail.values.len() * 4
                 },
                 file: integration,
+            }
+            /// The projection matrix: the pairs of the first K dimensions, each cell's scatter
+            /// plot and projection-table row.
+            Matrix(crate::model::MatrixData) {
+                name: "projection matrix",
+                version: 1,
+                disk_cached: false,
+                bytes: |m| m.cells.len() * (crate::model::MATRIX_CELL * crate::model::MATRIX_CELL + 64),
+                file: matrix,
             }
             /// PSA's radial distribution function (read by `analyze --rdf`, by no panel).
             Rdf(crate::model::Rdf) {

@@ -86,6 +86,14 @@ pub(in crate::scene) fn run(ctx: &JobCtx) -> Output {
                     what: "supersampling",
                 });
             }
+            if !col.is_plain_2d() {
+                return Err(NodeError::ProjectedNeedsPattern {
+                    column: c,
+                    dims: col.dims,
+                    project: col.project,
+                    what: "supersampling",
+                });
+            }
             let provider = |spp: usize| -> Result<Box<dyn SampleProvider>, NodeError> {
                 Ok(match col.pixels {
                     PixelSampling::PerPixel => Box::new(crate::core::recon::PatternProvider {

@@ -9,7 +9,15 @@ pub(in crate::scene) fn inputs(s: &Scene, c: usize) -> Inputs {
     let col = &s.columns[c];
     match &col.points {
         Some(p) => Inputs::new(NodeKind::Sequence, &[], ("imported", p.content_digest())),
-        None => Inputs::new(NodeKind::Sequence, &[], (&col.pattern, s.n, col.seed)),
+        None if col.is_plain_2d() => {
+            Inputs::new(NodeKind::Sequence, &[], (&col.pattern, s.n, col.seed))
+        }
+        // A column in D > 2 dimensions: the run of its projection.
+        None => Inputs::new(
+            NodeKind::Sequence,
+            &[],
+            (&col.pattern, s.n, col.seed, col.dims, col.project),
+        ),
     }
 }
 
@@ -18,7 +26,7 @@ pub(in crate::scene) fn estimate(s: &Scene, c: usize) -> Vec<Estimate> {
     let col = &s.columns[c];
     match &col.points {
         Some(_) => Vec::new(),
-        None => vec![budget::pattern(&col.pattern, s.n)],
+        None => vec![budget::pattern_cube(&col.pattern, s.n, col.dims)],
     }
 }
 

@@ -45,7 +45,7 @@ pub(in crate::scene) fn run(ctx: &JobCtx) -> Output {
     let asked_k = s.realizations;
     let req = s.request(n_points, imported);
     let first = crate::core::rng::derive_seed(col.seed, 0);
-    let (pattern, n) = (col.pattern, scene.n);
+    let n = scene.n;
     let shown = scene.prefix.unwrap_or(n);
     let mut on_progress = |p: Progress<'_, crate::core::spectrum::Spectrum>| {
         if let Some(Ok(data)) = p.interim().map(|spec| spectrum_data(spec, Vec::new())) {
@@ -67,8 +67,9 @@ pub(in crate::scene) fn run(ctx: &JobCtx) -> Output {
             if sd == first || imported {
                 Ok(points0.points.clone())
             } else {
-                // Another realization of what the column shows: its first k with a prefix.
-                pattern.generate(n, sd).map(|mut v| {
+                // Another realization of what the column shows (its projection in D > 2
+                // dimensions): its first k with a prefix.
+                col.generate_2d(n, sd, cancel).map(|mut v| {
                     v.truncate(shown);
                     v
                 })

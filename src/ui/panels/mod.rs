@@ -15,6 +15,7 @@
 pub mod cost;
 pub mod filter;
 pub mod integration;
+pub mod matrix;
 pub mod pattern;
 pub mod spectrum;
 pub mod sphere;

@@ -36,9 +36,13 @@ pub fn family_ui<F: Family>(
     }
 }
 
-/// Pattern selection and one control per parameter descriptor.
-pub fn pattern_ui(ui: &mut egui::Ui, column: &mut Column) {
+/// Pattern selection, its dimensions (for a pattern defined in d dimensions) and one control
+/// per parameter descriptor; `n` is the scene's N (N·D bounds D).
+pub fn pattern_ui(ui: &mut egui::Ui, column: &mut Column, n: usize) {
     family_ui(ui, "Pattern", "Pattern", &mut column.pattern, |_| true);
+    if column.points.is_none() {
+        dims_ui(ui, column, n);
+    }
     params_ui(ui, &mut column.pattern);
     let mut seed = column.seed;
     ui.horizontal(|ui| {
@@ -47,6 +51,77 @@ pub fn pattern_ui(ui: &mut egui::Ui, column: &mut Column) {
             .labelled_by(label.id);
     });
     column.seed = seed;
+}
+
+/// The largest D a column of `pattern` may have with N = `n` (`Scene::validate`'s range:
+/// the pattern's `max_dims`, and N·D within the coordinates a point set holds).
+pub fn max_column_dims(pattern: &crate::core::pattern::Pattern, n: usize) -> usize {
+    let max = pattern.max_dims();
+    if max == 2 {
+        return 2;
+    }
+    max.min(crate::core::cube::MAX_COORDS / n.max(1)).max(2)
+}
+
+/// A column's dimension D (a drag over exactly the range the scene allows, shown for the
+/// patterns defined in d dimensions) and, for D > 2, its dimension-pair picker: the pair
+/// (i, j) its 2D panels show. A pattern picked without a d-dimensional form takes the column
+/// back to D = 2; a smaller D that drops a shown dimension shows (0, 1).
+pub fn dims_ui(ui: &mut egui::Ui, column: &mut Column, n: usize) {
+    use crate::scene::{DEFAULT_DIMS, DEFAULT_PROJECT};
+    let max = max_column_dims(&column.pattern, n);
+    if column.dims > column.pattern.max_dims() {
+        // The user picked a 2D-only pattern (or one with fewer dimensions).
+        column.dims = DEFAULT_DIMS;
+        column.project = DEFAULT_PROJECT;
+    }
+    if max <= 2 && column.dims == 2 && column.project == DEFAULT_PROJECT {
+        return;
+    }
+    let mut dims = column.dims;
+    ui.horizontal(|ui| {
+        let label = ui.label("dims");
+        ui.add(egui::DragValue::new(&mut dims).range(2..=max.max(column.dims)))
+            .labelled_by(label.id)
+            .on_hover_text(
+                "the dimension D of the column's points; its 2D panels show the projection \
+                 onto the pair of dimensions picked beside",
+            );
+    });
+    if dims != column.dims {
+        column.dims = dims;
+        let (i, j) = column.project;
+        if i >= dims || j >= dims {
+            column.project = DEFAULT_PROJECT;
+        }
+    }
+    if column.dims <= 2 && column.project == DEFAULT_PROJECT {
+        return;
+    }
+    let d = column.dims;
+    let mut pair = [column.project.0, column.project.1];
+    ui.horizontal(|ui| {
+        ui.label("projection");
+        for (a, (salt, axis)) in [("project-i", "pair x"), ("project-j", "pair y")]
+            .into_iter()
+            .enumerate()
+        {
+            let other = pair[1 - a];
+            let mut v = pair[a];
+            egui::ComboBox::new(salt, axis)
+                .selected_text(format!("x{v}"))
+                .height(400.0)
+                .show_ui(ui, |ui| {
+                    for k in (0..d).filter(|&k| k != other) {
+                        ui.selectable_value(&mut v, k, format!("x{k}"));
+                    }
+                });
+            pair[a] = v;
+        }
+    })
+    .response
+    .on_hover_text("the pair of dimensions (i, j) the column's 2D panels show");
+    column.project = (pair[0], pair[1]);
 }
 
 /// How a supersampling column gives its pixels their samples: per pixel, one pattern over the

@@ -36,7 +36,8 @@ pub use distance::{
     min_distance_cube, min_distance_cube_naive, CubeMinDistance, MIN_DISTANCE_CUBE_NAIVE_MAX_N,
 };
 pub use projections::{
-    projection_table, projection_table_naive, sort_worst_first, ProjectionRow, PROJECTION_MAX_DIMS,
+    projection_rows, projection_table, projection_table_naive, sort_worst_first, ProjectionMeasure,
+    ProjectionRow, PROJECTION_MAX_DIMS,
 };
 pub use strata::{stratification, stratification_naive, Stratification};
 

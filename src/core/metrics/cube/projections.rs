@@ -45,8 +45,65 @@ pub struct ProjectionRow {
     pub min_distance: Option<f64>,
 }
 
+/// A measure of one projection, as the projection matrix tints its cells by it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, serde::Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum ProjectionMeasure {
+    /// The t-value in base 2 (N a power of two): 0 is a (0, m, 2)-net; larger is worse.
+    #[default]
+    TValue,
+    /// The L2-star discrepancy: larger is worse.
+    L2Star,
+    /// The toroidal minimum distance: smaller is worse.
+    MinDistance,
+}
+
+impl crate::core::params::ChoiceParam for ProjectionMeasure {
+    const OPTIONS: &'static [&'static str] = &["t-value", "l2-star", "min-distance"];
+    fn index(self) -> usize {
+        self as usize
+    }
+    fn from_index(index: usize) -> Self {
+        [
+            ProjectionMeasure::TValue,
+            ProjectionMeasure::L2Star,
+            ProjectionMeasure::MinDistance,
+        ][index]
+    }
+}
+
+impl ProjectionMeasure {
+    /// Every measure.
+    pub const ALL: [ProjectionMeasure; 3] = [
+        ProjectionMeasure::TValue,
+        ProjectionMeasure::L2Star,
+        ProjectionMeasure::MinDistance,
+    ];
+
+    /// The measure's name in text (its colour bar, its hover text).
+    pub fn label(self) -> &'static str {
+        match self {
+            ProjectionMeasure::TValue => "t-value (base 2)",
+            ProjectionMeasure::L2Star => "L2-star discrepancy",
+            ProjectionMeasure::MinDistance => "min. toroidal distance",
+        }
+    }
+}
+
+impl ProjectionRow {
+    /// The row's value of `measure` (`None`: no t-value when N is not a power of two, no
+    /// distance for one point).
+    pub fn value(&self, measure: ProjectionMeasure) -> Option<f64> {
+        match measure {
+            ProjectionMeasure::TValue => self.t_value.map(f64::from),
+            ProjectionMeasure::L2Star => Some(self.l2_star_discrepancy),
+            ProjectionMeasure::MinDistance => self.min_distance,
+        }
+    }
+}
+
 /// Every pair i < j of `dims` dimensions, in order.
-fn pairs(dims: usize) -> Vec<[usize; 2]> {
+pub fn pairs(dims: usize) -> Vec<[usize; 2]> {
     (0..dims)
         .flat_map(|i| (i + 1..dims).map(move |j| [i, j]))
         .collect()
@@ -136,17 +193,40 @@ pub fn projection_table(
 ) -> Result<Vec<ProjectionRow>, MetricsError> {
     check(points)?;
     let all = pairs(points.dims());
-    let mut rows = Vec::with_capacity(all.len());
-    for batch in all.chunks(PAIR_BATCH) {
+    let mut rows = projection_rows(points, &all, cancel, &mut |p| {
+        progress(Progress::at(p.done, p.total))
+    })?;
+    sort_worst_first(&mut rows);
+    Ok(rows)
+}
+
+/// The rows of the pairs `pairs`, in their order (not sorted): the work of
+/// [`projection_table`], whose partial result is the rows measured so far (the projection
+/// matrix shows its cells tinted as they come in). Batches of [`PAIR_BATCH`] pairs in
+/// parallel, cancel checked and progress reported between them.
+///
+/// Errors: empty or invalid points, more than [`PROJECTION_MAX_DIMS`] dimensions, a pair that
+/// is not two different dimensions of the set, cancellation.
+pub fn projection_rows(
+    points: &CubePoints,
+    pairs: &[[usize; 2]],
+    cancel: &Cancel,
+    progress: &mut OnProgress<'_, [ProjectionRow]>,
+) -> Result<Vec<ProjectionRow>, MetricsError> {
+    check(points)?;
+    let mut rows = Vec::with_capacity(pairs.len());
+    for batch in pairs.chunks(PAIR_BATCH) {
         cancel.check()?;
         let done: Result<Vec<ProjectionRow>, MetricsError> = batch
             .par_iter()
             .map(|&ij| row(points, ij, false, cancel))
             .collect();
         rows.extend(done?);
-        progress(Progress::at(rows.len(), all.len()));
+        progress(Progress::with(rows.len(), pairs.len(), &rows));
     }
-    sort_worst_first(&mut rows);
+    if pairs.is_empty() {
+        progress(Progress::with(0, 0, &rows));
+    }
     Ok(rows)
 }
 

@@ -131,6 +131,34 @@ impl Pattern {
         CubePoints::new(dims, coords).map_err(|e| cube_error(self.name(), e))
     }
 
+    /// The 2D projection `(x_i, x_j)` of [`Pattern::generate_cube`]'s `n` points in `dims`
+    /// dimensions (what `points --dims D --project i,j` writes, and what a scene's column with
+    /// `dims` and `project` shows). Errors: as [`Pattern::generate_cube`], and a pair that is
+    /// not two different dimensions below `dims` ([`PatternError::InvalidParam`] naming
+    /// `project`).
+    pub fn generate_projected(
+        &self,
+        n: usize,
+        dims: usize,
+        (i, j): (usize, usize),
+        seed: u64,
+        cancel: &Cancel,
+    ) -> Result<Vec<DVec2>, PatternError> {
+        if i >= dims || j >= dims || i == j {
+            return Err(PatternError::InvalidParam {
+                pattern: self.name(),
+                field: "project",
+                value: format!("({i}, {j})"),
+                allowed: format!(
+                    "two different dimensions in 0..={} (dims = {dims})",
+                    dims.saturating_sub(1)
+                ),
+            });
+        }
+        let points = self.generate_cube(n, dims, seed, cancel)?;
+        points.project(i, j).map_err(|e| cube_error(self.name(), e))
+    }
+
     /// The d-dimensional construction itself, for any dims the pattern takes (also 2: the
     /// tests compare it with the 2D path). Row-major coordinates.
     pub fn cube_coords(
