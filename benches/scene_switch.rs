@@ -5,7 +5,8 @@
 //!
 //! Targets on 2 cores: first complete picture ≤ 300 ms, final ≤ 1.5 s, for every scene.
 //! Prints a table (median of 3 runs per scene) and the worst ratios; criterion then times the
-//! default scene and `zone-plate-128-to-512` both ways.
+//! default scene and `zone-plate-128-to-512` both ways. `SCENE_SWITCH_ONLY=a.ron,b.ron` limits
+//! the table to those scenes (and skips the criterion part).
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use samplescope::core::cancel::Cancel;
@@ -24,15 +25,18 @@ fn switch(scene: &Scene) -> (Duration, Duration) {
     let mut engine = Engine::with_evaluator(Evaluator::default(), Arc::new(|| {}));
     // "Every visible panel has a result": the node that draws each visible panel (pattern:
     // points; periodogram: spectrum; zone plate: reconstruction; filter: response; cost view:
-    // convergence; sampling theorem: theorem), a coarse result counts. The zone plate's RMSE
-    // line (the error node) follows with the final reference.
-    const PANEL_NODES: [NodeKind; 6] = [
+    // convergence; sampling theorem: theorem; integration: its study; projection matrix: its
+    // cells), a coarse result counts. The zone plate's RMSE line (the error node) follows with
+    // the final reference.
+    const PANEL_NODES: [NodeKind; 8] = [
         NodeKind::Points,
         NodeKind::Spectrum,
         NodeKind::Reconstruction,
         NodeKind::Response,
         NodeKind::Convergence,
         NodeKind::Theorem,
+        NodeKind::Integration,
+        NodeKind::Matrix,
     ];
     let mut want: HashSet<(usize, NodeKind)> = HashSet::new();
     for (c, p) in graph::plan(scene).iter().enumerate() {
@@ -81,7 +85,12 @@ fn scene_switch(c: &mut Criterion) {
         "scene", "first", "final", "serial", "ratio"
     );
     let (mut worst_first, mut worst_final) = (0.0f64, 0.0f64);
-    for (name, text) in BUILTIN {
+    let only = std::env::var("SCENE_SWITCH_ONLY").ok();
+    let picked = |name: &str| {
+        only.as_ref()
+            .is_none_or(|o| o.split(',').any(|n| n == name))
+    };
+    for (name, text) in BUILTIN.iter().filter(|(n, _)| picked(n)) {
         let scene = Scene::from_ron(text, name).expect("shipped scene");
         let runs: Vec<(Duration, Duration)> = (0..3).map(|_| switch(&scene)).collect();
         let first = median(runs.iter().map(|r| r.0).collect());
@@ -100,6 +109,9 @@ fn scene_switch(c: &mut Criterion) {
         worst_final / FINAL_TARGET_MS
     );
 
+    if only.is_some() {
+        return;
+    }
     for name in ["default.ron", "zone-plate-128-to-512.ron"] {
         let text = BUILTIN.iter().find(|(n, _)| *n == name).unwrap().1;
         let scene = Scene::from_ron(text, name).unwrap();

@@ -37,6 +37,14 @@ pub const BUILTIN: &[(&str, &str)] = &[
         include_str!("../../assets/scenes/integration-error-gaussian.ron"),
     ),
     (
+        "integration-error-dims.ron",
+        include_str!("../../assets/scenes/integration-error-dims.ron"),
+    ),
+    (
+        "high-dimensional-projections.ron",
+        include_str!("../../assets/scenes/high-dimensional-projections.ron"),
+    ),
+    (
         "sampling-theorem.ron",
         include_str!("../../assets/scenes/sampling-theorem.ron"),
     ),
