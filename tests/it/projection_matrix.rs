@@ -159,7 +159,9 @@ fn render_writes_the_matrix_figure_and_its_table() {
         .collect();
     for ext in ["png", "svg", "pdf", "csv"] {
         assert!(
-            files.iter().any(|f| f.ends_with(&format!("_matrix.{ext}"))),
+            files
+                .iter()
+                .any(|f| f.contains("_matrix") && f.ends_with(&format!(".{ext}"))),
             "{ext}: {files:?}"
         );
     }
@@ -171,7 +173,10 @@ fn render_writes_the_matrix_figure_and_its_table() {
         Some("i,j,t_value,l2_star_discrepancy,min_distance")
     );
     assert_eq!(lines.count(), 28);
-    let svg_name = files.iter().find(|f| f.ends_with("_matrix.svg")).unwrap();
+    let svg_name = files
+        .iter()
+        .find(|f| f.ends_with("_matrix@1x.svg"))
+        .unwrap();
     let svg = std::fs::read_to_string(dir.join("out").join(svg_name)).unwrap();
     assert!(
         svg.contains("L2-star discrepancy") || svg.contains("x6 × x7"),
@@ -200,10 +205,14 @@ fn clicking_a_matrix_cell_shows_that_pair() {
             )
     };
     let pos = at(1.0, 1.0);
-    // Hovering shows the cell's values (once the tooltip's delay has passed).
+    // Hovering shows the cell's values (tooltips at once, the pointer held still).
+    h.ctx.all_styles_mut(|s| {
+        s.interaction.tooltip_delay = 0.0;
+        s.interaction.show_tooltips_only_when_still = false;
+    });
+    h.hover_at(pos);
     let mut shown = false;
     for _ in 0..120 {
-        h.hover_at(pos);
         h.step();
         if h.query_by_label_contains("x1 × x6:").is_some() {
             shown = true;
