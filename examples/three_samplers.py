@@ -1,5 +1,6 @@
 """Three samplers side by side: white noise, jittered and Owen-scrambled Sobol' points, their
-minimum distance and (with matplotlib installed) a figure of the three point sets.
+discrepancies and minimum distance, and (with matplotlib installed) a figure of the three
+point sets over their periodograms (averaged over 16 realizations) and radial power spectra.
 
     python examples/three_samplers.py [OUT.png]
 
@@ -11,23 +12,23 @@ import numpy as np
 
 import samplescope
 
-N = 1024
+N, SIZE, REALIZATIONS = 1024, 128, 16
 SAMPLERS = [("random", {}), ("jitter", {}), ("sobol", {"scramble": "owen"})]
 
 
-def min_distance(p):
-    """The smallest toroidal distance between two points (O(N^2), fine for N = 1024)."""
-    d = np.abs(p[:, None, :] - p[None, :, :])
-    d = np.minimum(d, 1.0 - d)
-    r2 = (d**2).sum(axis=-1)
-    np.fill_diagonal(r2, np.inf)
-    return float(np.sqrt(r2.min()))
-
-
 def main(out=None):
-    sets = {name: samplescope.points(name, N, seed=1, **params) for name, params in SAMPLERS}
-    for name, p in sets.items():
-        print(f"{name:8s} {p.shape}  min distance {min_distance(p):.5f}")
+    sets, spectra = {}, {}
+    for name, params in SAMPLERS:
+        p = samplescope.points(name, N, seed=1, **params)
+        sets[name] = p
+        spectra[name] = samplescope.periodogram(
+            name, n=N, size=SIZE, realizations=REALIZATIONS, seed=1, **params
+        )
+        stats = samplescope.analyze(p, size=32)
+        print(
+            f"{name:8s} {p.shape}  L2-star {samplescope.discrepancy(p):.3e}  "
+            f"CD² {samplescope.discrepancy(p, 'CD'):.3e}  min distance {stats['min_distance']:.5f}"
+        )
     try:
         import matplotlib
 
@@ -36,11 +37,23 @@ def main(out=None):
     except ImportError:
         print("matplotlib is not installed: no figure")
         return sets
-    fig, axes = plt.subplots(1, len(sets), figsize=(4 * len(sets), 4))
-    for ax, (name, p) in zip(axes, sets.items()):
-        ax.scatter(p[:, 0], p[:, 1], s=1)
-        ax.set(title=name, xlim=(0, 1), ylim=(0, 1), aspect="equal")
-    fig.savefig(out or "three_samplers.png", dpi=100)
+    fig, axes = plt.subplots(3, len(sets), figsize=(4 * len(sets), 12))
+    half = SIZE // 2
+    for col, (name, p) in enumerate(sets.items()):
+        power, raps = spectra[name]
+        axes[0, col].scatter(p[:, 0], p[:, 1], s=1)
+        axes[0, col].set(title=name, xlim=(0, 1), ylim=(0, 1), aspect="equal")
+        shown = power.copy()
+        shown[half, half] = np.nan  # DC (= N) off the colour scale
+        axes[1, col].imshow(
+            np.log10(np.maximum(shown, 1e-10)), origin="lower", cmap="viridis",
+            extent=(-half, half, -half, half), vmin=-2, vmax=1,
+        )
+        axes[1, col].set(title=f"log10 P, {REALIZATIONS} realizations", xlabel="kx", ylabel="ky")
+        axes[2, col].plot(raps[:, 0], raps[:, 1])
+        axes[2, col].set(title="radially averaged power", xlabel="|k|", ylim=(0, 3))
+    fig.tight_layout()
+    fig.savefig(out or "three_samplers.png", dpi=80)
     print(f"wrote {out or 'three_samplers.png'}")
     return sets
 

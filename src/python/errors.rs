@@ -30,3 +30,16 @@ pub fn checked_int<T: TryFrom<i128>>(
         .flatten()
         .ok_or_else(|| int_range(name, value, min, max))
 }
+
+/// A subcommand's error as Python's: cancellation as `KeyboardInterrupt`, the environment's
+/// failures (the CLI's exit status 1: a file that cannot be read or written) as `OSError`,
+/// bad input (status 2, the budget included) as `ValueError`, each with the CLI's message.
+pub fn cli(e: crate::cli::CliError) -> PyErr {
+    match e {
+        crate::cli::CliError::Cancelled => {
+            pyo3::exceptions::PyKeyboardInterrupt::new_err("interrupted")
+        }
+        e if e.exit_code() == 1 => pyo3::exceptions::PyOSError::new_err(e.to_string()),
+        e => bad_input(e),
+    }
+}

@@ -71,15 +71,18 @@ fn points<'py>(
         ));
     }
     member.validate_cube(n, dims).map_err(bad_input)?;
-    let generated = interruptible(py, |cancel| -> Result<(usize, Vec<f64>), PatternError> {
-        if allow_fewer {
-            let placed = member.generate_with(n, seed, cancel)?.points;
-            let coords = placed.iter().flat_map(|p| [p.x, p.y]).collect();
-            return Ok((placed.len(), coords));
-        }
-        let cube = member.generate_cube(n, dims, seed, cancel)?;
-        Ok((cube.n(), cube.into_coords()))
-    })?;
+    let generated = interruptible(
+        py,
+        move |cancel| -> Result<(usize, Vec<f64>), PatternError> {
+            if allow_fewer {
+                let placed = member.generate_with(n, seed, cancel)?.points;
+                let coords = placed.iter().flat_map(|p| [p.x, p.y]).collect();
+                return Ok((placed.len(), coords));
+            }
+            let cube = member.generate_cube(n, dims, seed, cancel)?;
+            Ok((cube.n(), cube.into_coords()))
+        },
+    )?;
     let (rows, coords) = generated.map_err(|e| match e {
         e @ PatternError::TooFew { .. } => bad_input(format!(
             "{e}; or pass allow_fewer=True to keep the points placed"
