@@ -28,10 +28,13 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
 /// than 2 takes the patterns with a d-dimensional form. With `allow_fewer=True` a Poisson-disk
 /// pattern that stops short returns the points it placed (fewer than n rows).
 ///
-/// Bad input raises `ValueError` with the CLI's one-line message; Ctrl-C stops the work and
-/// raises `KeyboardInterrupt`.
+/// `budget` (seconds) and `budget_memory` (GiB) are the CLI's `--budget` and `--budget-memory`
+/// (defaults 60 s and 4 GiB): a generation estimated beyond them raises `ValueError` naming the
+/// budget, before any work. Bad input raises `ValueError` with the CLI's one-line message;
+/// Ctrl-C stops the work and raises `KeyboardInterrupt`.
 #[pyfunction]
-#[pyo3(signature = (pattern, n, *, dims = 2, seed = None, allow_fewer = false, **params))]
+#[pyo3(signature = (pattern, n, *, dims = 2, seed = None, allow_fewer = false, budget = None, budget_memory = None, **params))]
+#[allow(clippy::too_many_arguments)]
 fn points<'py>(
     py: Python<'py>,
     pattern: &str,
@@ -39,6 +42,8 @@ fn points<'py>(
     dims: i128,
     seed: Option<i128>,
     allow_fewer: bool,
+    budget: Option<f64>,
+    budget_memory: Option<f64>,
     params: Option<&Bound<'py, PyDict>>,
 ) -> PyResult<Bound<'py, PyArray2<f64>>> {
     let member: Pattern = member_from_kwargs(pattern, params)?;
@@ -71,6 +76,14 @@ fn points<'py>(
         ));
     }
     member.validate_cube(n, dims).map_err(bad_input)?;
+    // The CLI's budget, checked before any work with `points`' estimate of the generation.
+    let session = super::run::session(budget, budget_memory)?;
+    let plan = vec![if dims == 2 {
+        crate::core::budget::pattern(&member, n)
+    } else {
+        crate::core::budget::pattern_cube(&member, n, dims)
+    }];
+    let _progress = session.admit(plan).map_err(super::errors::cli)?;
     let generated = interruptible(
         py,
         move |cancel| -> Result<(usize, Vec<f64>), PatternError> {

@@ -14,7 +14,7 @@ CHILD = textwrap.dedent(
     import sys, time, samplescope
     print("start", flush=True)
     try:
-        samplescope.points("best-candidate", 1000000, seed=1, m=10)
+        samplescope.points("best-candidate", 1000000, seed=1, m=10, budget=1e9)
         print("finished", flush=True)
     except KeyboardInterrupt:
         print("interrupted %.6f" % time.time(), flush=True)

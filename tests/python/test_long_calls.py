@@ -110,3 +110,8 @@ def test_interrupted_render_leaves_no_partial_file(tmp_path):
     assert raised - sent["at"] < 0.5, raised - sent["at"]
     left = sorted(p.name for p in out.rglob("*")) if out.exists() else []
     assert not [name for name in left if "partial" in name], left
+
+
+def test_points_over_the_budget_is_refused_naming_it():
+    with pytest.raises(ValueError, match="budget"):
+        samplescope.points("lloyd", 100000, iterations=100, budget=0.5)

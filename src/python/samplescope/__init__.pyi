@@ -19,6 +19,8 @@ def points(
     dims: int = 2,
     seed: Optional[int] = None,
     allow_fewer: bool = False,
+    budget: Optional[float] = None,
+    budget_memory: Optional[float] = None,
     **params: ParamValue,
 ) -> npt.NDArray[np.float64]:
     """The first n points of a pattern in [0,1)^dims, shape (n, dims), float64: the numbers
