@@ -8,6 +8,12 @@
 //! belong to column 0 only (the view does not depend on the column). The periodograms of all columns
 //! share one colour range (the union of their automatic ranges), as locked scales do in
 //! the GUI. Same scene → byte-identical files.
+//!
+//! `--format gif` writes the comparison of an animated scene (motion, or a prefix of columns
+//! that play in order: `scene::animation`) as one looping GIF, `--frames` frames at `--fps`
+//! (default: the scene's `animation`), through `engine::animation`; a scene that does not
+//! animate is refused, and frames × width × height is checked against the GIF budget before
+//! any work.
 
 use super::outln;
 use super::session::{write_output, Session};
@@ -36,7 +42,7 @@ pub struct RenderArgs {
     #[arg(long)]
     pub scale: Option<u32>,
     /// Formats to write, comma-separated: png, svg, pdf, csv (the composites in each of png,
-    /// svg and pdf asked for).
+    /// svg and pdf asked for), gif (the comparison of an animated scene as a looping GIF).
     #[arg(long, value_delimiter = ',', default_value = "png,svg,csv", value_enum)]
     pub format: Vec<Format>,
     /// Shape of the frame the composites are laid out to fill, W:H with W and H positive
@@ -48,6 +54,15 @@ pub struct RenderArgs {
     /// Compute reference images even if the disk cache has them (and store nothing there).
     #[arg(long)]
     pub no_cache: bool,
+    /// Frames of the GIF, 2..=1000 [default: the scene's animation.frames, 48]: a moving
+    /// scene's frame i is t = i / motion.frame_rate; a prefix reaches all N points in the last.
+    /// Only with `--format gif`.
+    #[arg(long)]
+    pub frames: Option<usize>,
+    /// Frames per second the GIF plays at, 1..=50 [default: the scene's animation.fps, 24].
+    /// Only with `--format gif`.
+    #[arg(long)]
+    pub fps: Option<f64>,
 }
 
 fn parse_aspect(text: &str) -> Result<Aspect, String> {
@@ -66,18 +81,46 @@ pub enum Format {
     Pdf,
     /// The figures' data.
     Csv,
+    /// The comparison of an animated scene, as a looping animated GIF.
+    Gif,
 }
 
 impl Format {
-    /// The format published.
-    fn publish(self) -> PublishFormat {
+    /// The still format published (`None`: the animated GIF, made by `engine::animation`).
+    fn publish(self) -> Option<PublishFormat> {
         match self {
-            Format::Png => PublishFormat::Picture(FileFormat::Png),
-            Format::Svg => PublishFormat::Picture(FileFormat::Svg),
-            Format::Pdf => PublishFormat::Picture(FileFormat::Pdf),
-            Format::Csv => PublishFormat::Csv,
+            Format::Png => Some(PublishFormat::Picture(FileFormat::Png)),
+            Format::Svg => Some(PublishFormat::Picture(FileFormat::Svg)),
+            Format::Pdf => Some(PublishFormat::Picture(FileFormat::Pdf)),
+            Format::Csv => Some(PublishFormat::Csv),
+            Format::Gif => None,
         }
     }
+}
+
+/// `--frames` and `--fps` into the scene's animation, each checked against its descriptor (the
+/// error names the flag and the range).
+fn animation_flags(args: &RenderArgs, scene: &mut Scene) -> Result<(), CliError> {
+    use samplescope::core::params::{ParamKind, ParamValue, Params};
+    let mut set = |flag: &str, key: &str, value: ParamValue, shown: String| {
+        let spec = scene.animation.specs().into_iter().find(|s| s.name == key);
+        scene.animation.set_value(key, &value).map_err(|_| {
+            let allowed = match spec.map(|s| s.kind) {
+                Some(ParamKind::Int { min, max, .. }) => format!("an integer in {min}..={max}"),
+                Some(ParamKind::Float { min, max, .. }) => format!("a number in {min}..={max}"),
+                _ => "a value the scene's animation allows".into(),
+            };
+            CliError::Usage(format!("{flag} = {shown}: must be {allowed}"))
+        })
+    };
+    if let Some(f) = args.frames {
+        let v = ParamValue::Int(i64::try_from(f).unwrap_or(i64::MAX));
+        set("--frames", "frames", v, f.to_string())?;
+    }
+    if let Some(r) = args.fps {
+        set("--fps", "fps", ParamValue::Float(r), r.to_string())?;
+    }
+    Ok(())
 }
 
 /// The formats asked for, each once, in the order given.
@@ -99,6 +142,17 @@ fn export_err(e: ExportError) -> CliError {
     }
 }
 
+/// The evaluator of a render: the memory cache's default budget, the disk cache of reference
+/// images unless `no_cache`.
+fn evaluator(no_cache: bool) -> Evaluator {
+    let disk = if no_cache {
+        None
+    } else {
+        samplescope::engine::default_disk_cache()
+    };
+    Evaluator::new(samplescope::engine::cache::DEFAULT_BUDGET, disk)
+}
+
 /// Evaluates every node the scene needs; the first failed node (in evaluation order) of any
 /// column is an error naming the column and the node.
 fn evaluate(
@@ -110,12 +164,7 @@ fn evaluate(
 ) -> Result<Vec<HashMap<NodeKind, Arc<NodeResult>>>, CliError> {
     let mut results: Vec<HashMap<NodeKind, Arc<NodeResult>>> =
         vec![HashMap::new(); scene.columns.len()];
-    let disk = if no_cache {
-        None
-    } else {
-        samplescope::engine::default_disk_cache()
-    };
-    let eval = Evaluator::new(samplescope::engine::cache::DEFAULT_BUDGET, disk);
+    let eval = evaluator(no_cache);
     eval.evaluate_planned(scene, plan, cancel, &mut |c, kind, r| {
         if let Some(col) = results.get_mut(c) {
             col.insert(kind, r);
@@ -165,6 +214,16 @@ pub fn render(
         )));
     }
     let formats = formats(&args.format);
+    let gif = formats.contains(&Format::Gif);
+    if !gif {
+        let given = [args.frames.map(|_| "--frames"), args.fps.map(|_| "--fps")];
+        if let Some(flag) = given.into_iter().flatten().next() {
+            return Err(CliError::Usage(format!(
+                "{flag} is only for --format gif (the frames of an animated GIF); add gif to \
+                 --format or leave {flag} out"
+            )));
+        }
+    }
     if formats.iter().all(|f| *f == Format::Csv) {
         // CSV only: nothing is drawn, so the drawing's size and shape have no effect.
         let given = [
@@ -189,11 +248,12 @@ pub fn render(
     }
     samplescope::core::output::check_output_dir("--out", &args.out)?;
     let source = args.scene.display().to_string();
-    let scene = match text {
+    let mut scene = match text {
         Some(text) => Scene::from_ron(text, &source),
         None => Scene::load(&args.scene),
     }
     .map_err(super::scene_error)?;
+    animation_flags(args, &mut scene)?;
     // What a column's points node would refuse is refused before the estimate and the budget,
     // with the words of that node's failure.
     for (c, col) in scene.columns.iter().enumerate() {
@@ -213,10 +273,32 @@ pub fn render(
         .file_stem()
         .map(|s| s.to_string_lossy().into_owned())
         .unwrap_or_default();
+    let stills: Vec<PublishFormat> = formats.iter().filter_map(|f| f.publish()).collect();
+    // The animation is checked (the scene animates, its frames fit the GIF budget) and
+    // planned before any work.
+    let animation = if gif {
+        let field = if args.frames.is_some() {
+            "--frames"
+        } else {
+            "animation.frames"
+        };
+        let prepared = samplescope::engine::animation::prepare(&scene, &stem, scale, aspect, field)
+            .map_err(|e| CliError::Usage(format!("{source}: --format gif: {e}")))?;
+        Some(prepared)
+    } else {
+        None
+    };
     // The scene is planned once: its nodes are estimated and checked before any is evaluated,
     // and the engine runs that plan.
     let planned = Arc::new(samplescope::scene::graph::plan(&scene));
-    let plan = samplescope::scene::cost::estimate_plan(&scene, &planned);
+    let mut plan = if stills.is_empty() {
+        Vec::new()
+    } else {
+        samplescope::scene::cost::estimate_plan(&scene, &planned)
+    };
+    if let Some(a) = &animation {
+        plan.extend(a.estimates.iter().cloned());
+    }
     let Some(progress) = session.admit(plan).map_err(|e| match e {
         CliError::Budget(m) => CliError::Budget(format!("{source}: {m}")),
         other => other,
@@ -226,29 +308,40 @@ pub fn render(
     };
     progress.stage(0);
     let cancel = &session.cancel;
-    let results = evaluate(&scene, planned, &source, args.no_cache, cancel)?;
+    let mut made = samplescope::export::publish::Published::default();
+    if !stills.is_empty() {
+        let results = evaluate(&scene, planned, &source, args.no_cache, cancel)?;
+        let columns = figure::figure_columns(&scene, &results, &stem)
+            .map_err(|e| CliError::Usage(e.to_string()))?;
+        let count = columns.len();
+        let publication = figure::publication(&scene, columns, &stem);
+
+        if panels::available(&scene).is_empty() {
+            eprintln!(
+                "warning: {source} shows none of the panels render draws (pattern, spectrum, \
+                 zone plate, filter, cost view with convergence, sampling theorem); nothing \
+                 written"
+            );
+        }
+        made = publish(&publication, Target::All, &stills, scale, aspect, cancel)
+            .map_err(export_err)?;
+        if let Some((cw, ch)) = made.comparison_too_large {
+            eprintln!(
+                "warning: comparison skipped: {count} columns at --scale {scale} would be \
+                 {cw}×{ch} pixels, more than {MAX_COMPOSITE_PIXELS}; use a smaller --scale"
+            );
+        }
+    }
+    if let Some(a) = &animation {
+        use samplescope::engine::animation::{render_gif, AnimationError};
+        let eval = evaluator(args.no_cache);
+        let bytes = render_gif(a, &eval, cancel, &mut |_, _| {}).map_err(|e| match e {
+            AnimationError::Cancelled => CliError::Cancelled,
+            other => CliError::Usage(format!("{source}: --format gif: {other}")),
+        })?;
+        made.files.push((a.name.clone(), bytes));
+    }
     drop(progress);
-
-    let columns = figure::figure_columns(&scene, &results, &stem)
-        .map_err(|e| CliError::Usage(e.to_string()))?;
-    let count = columns.len();
-    let publication = figure::publication(&scene, columns, &stem);
-
-    if panels::available(&scene).is_empty() {
-        eprintln!(
-            "warning: {source} shows none of the panels render draws (pattern, spectrum, zone \
-             plate, filter, cost view with convergence, sampling theorem); nothing written"
-        );
-    }
-    let formats: Vec<PublishFormat> = formats.iter().map(|f| f.publish()).collect();
-    let made =
-        publish(&publication, Target::All, &formats, scale, aspect, cancel).map_err(export_err)?;
-    if let Some((cw, ch)) = made.comparison_too_large {
-        eprintln!(
-            "warning: comparison skipped: {count} columns at --scale {scale} would be {cw}×{ch} \
-             pixels, more than {MAX_COMPOSITE_PIXELS}; use a smaller --scale"
-        );
-    }
     std::fs::create_dir_all(&args.out).map_err(|source_err| CliError::Io {
         path: args.out.display().to_string(),
         source: source_err,

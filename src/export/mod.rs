@@ -4,6 +4,7 @@
 
 pub mod encode;
 pub mod figure;
+pub mod gif;
 pub mod publish;
 
 /// Why a figure could not be written.
@@ -51,6 +52,9 @@ pub enum ExportError {
     /// The work was cancelled.
     #[error("cancelled")]
     Cancelled,
+    /// An animated figure could not be encoded (its frames, its size or its rate).
+    #[error("{0}")]
+    Encode(String),
     /// A composite would exceed the pixel limit.
     #[error("composite of {width}×{height} pixels exceeds {max_pixels} pixels: use a smaller scale or fewer columns")]
     TooLarge {

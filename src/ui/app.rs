@@ -379,7 +379,7 @@ impl SamplescopeApp {
         if !self.scene.notes.is_empty() {
             ui.label(&self.scene.notes);
         }
-        self.playback.transport_ui(ui, &self.scene);
+        self.playback.transport_ui(ui, &mut self.scene);
         if let Err(e) = self.import.failure_ui(ui, &mut self.scene) {
             self.scene_error = Some(e);
         }
@@ -676,7 +676,7 @@ impl eframe::App for SamplescopeApp {
                 });
         }
         self.playback
-            .advance(&ctx, &self.scene, self.engine.is_idle());
+            .advance(&ctx, &mut self.scene, self.engine.is_idle());
         let central = ui.available_rect_before_wrap();
         let drops = self
             .import

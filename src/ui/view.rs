@@ -45,8 +45,6 @@ pub struct ViewState {
     pub show_star_box: bool,
     /// Elementary intervals b^k × b^(m−k) in base 2: `Some(k)`.
     pub elementary_k: Option<u32>,
-    /// Draw only the first i points (progressive sequences).
-    pub prefix: Option<usize>,
     /// Show wall times next to the panels (off for reproducible figures and snapshots).
     pub show_timings: bool,
     /// Lecture mode: light projector theme, large fonts, content letterboxed to 16:9.
@@ -75,7 +73,6 @@ impl Default for ViewState {
             show_min_disc: false,
             show_star_box: false,
             elementary_k: None,
-            prefix: None,
             show_timings: true,
             lecture: false,
             lecture_scale: LECTURE_SCALE_DEFAULT,

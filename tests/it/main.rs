@@ -8,6 +8,7 @@ use std::time::{Duration, Instant};
 
 mod analyze_cube;
 mod analyze_scene;
+mod animated_gif;
 mod bad_input;
 mod budget_cli;
 mod budget_memory;

@@ -150,6 +150,33 @@ fn limit_scenes() -> Vec<(String, Scene)> {
         s.effects.convergence = false;
         push(format!("{name} dims={dims} project={project:?}"), s);
     }
+    // The player of a prefix (a sequence's column): k at each end, the animation's frames
+    // and rate at each end of their ranges (drawn by the player of a prefix and of motion).
+    {
+        let mut s = base.clone();
+        s.columns = vec![Column {
+            pattern: Pattern::from_name("sobol").unwrap(),
+            ..Column::default()
+        }];
+        s.n = 256;
+        for prefix in [None, Some(1), Some(255), Some(256)] {
+            push(
+                format!("prefix={prefix:?}"),
+                Scene {
+                    prefix,
+                    ..s.clone()
+                },
+            );
+        }
+        for animation in at_limits(&s.animation) {
+            let t = Scene {
+                animation,
+                prefix: Some(100),
+                ..s.clone()
+            };
+            push(format!("animation={animation:?}"), t);
+        }
+    }
     for p in Pattern::all() {
         for q in at_limits(&p) {
             let mut s = base.clone();

@@ -207,3 +207,97 @@ fn which_shipped_scenes_animate() {
     );
     assert!(prefix.contains(&"sobol-net.ron"), "{prefix:?}");
 }
+
+/// The player of a prefix in the GUI: the slider sets k (the pattern panel's data holds k
+/// points), play advances k frame by frame, a still scene shows no player.
+mod gui {
+    use eframe::egui::accesskit::Role;
+    use egui_kittest::kittest::Queryable;
+    use egui_kittest::Harness;
+    use samplescope::model::{PointsData, Slot};
+    use samplescope::scene::{Scene, BUILTIN};
+    use samplescope::ui::SamplescopeApp;
+    use std::time::{Duration, Instant};
+
+    fn harness(name: &str) -> Harness<'static, SamplescopeApp> {
+        let text = BUILTIN.iter().find(|(n, _)| *n == name).unwrap().1;
+        let mut scene = Scene::from_ron(text, name).unwrap();
+        scene.spectrum.size = scene.spectrum.size.min(32);
+        let mut h = Harness::builder()
+            .with_size(eframe::egui::Vec2::new(1400.0, 1000.0))
+            .build_eframe(move |cc| {
+                let mut app = crate::hermetic_app(cc);
+                app.view.show_timings = false;
+                app.set_scene(scene.clone(), name.to_string());
+                app
+            });
+        crate::settle(&mut h, 1);
+        h
+    }
+
+    fn shown(h: &Harness<'static, SamplescopeApp>) -> usize {
+        match h.state().data[0].get::<PointsData>() {
+            Slot::Ready { data, .. } => data.points.len(),
+            _ => 0,
+        }
+    }
+
+    #[test]
+    fn the_prefix_slider_sets_the_points_shown() {
+        let mut h = harness("dart-throwing-step-by-step.ron");
+        assert_eq!(shown(&h), 256);
+        h.get_by_label_contains("first 256 = 2^8 of 256 points");
+        h.get_by_role_and_label(Role::Slider, "first k points")
+            .set_value_accesskit(10.0);
+        h.step();
+        crate::settle(&mut h, 1);
+        assert_eq!(h.state().scene.prefix, Some(10));
+        assert_eq!(shown(&h), 10);
+        h.get_by_label_contains("first 10 of 256 points");
+        // One point more, one fewer.
+        h.get_by_label("Step forward").click();
+        h.step();
+        crate::settle(&mut h, 1);
+        assert_eq!(shown(&h), 11);
+        h.get_by_label("Step back").click();
+        h.get_by_label("Step back").click();
+        h.step();
+        crate::settle(&mut h, 1);
+        assert_eq!(shown(&h), 9);
+    }
+
+    #[test]
+    fn play_advances_the_prefix_to_all_points() {
+        let mut h = harness("dart-throwing-step-by-step.ron");
+        h.state_mut().scene.animation.frames = 8;
+        h.state_mut().scene.animation.fps = 50.0;
+        h.get_by_label("Play").click();
+        let deadline = Instant::now() + Duration::from_secs(60);
+        let mut seen = vec![];
+        while h.state().scene.prefix.is_some() || seen.is_empty() {
+            h.step();
+            if let Some(k) = h.state().scene.prefix {
+                if seen.last() != Some(&k) {
+                    seen.push(k);
+                }
+            }
+            std::thread::sleep(Duration::from_millis(5));
+            assert!(
+                Instant::now() < deadline,
+                "playback did not advance: {seen:?}"
+            );
+        }
+        // Frames 0..7 of 8: ⌈256 (i + 1) / 8⌉ points, then all 256 (no prefix); stopped.
+        assert_eq!(seen, [32, 64, 96, 128, 160, 192, 224]);
+        crate::settle(&mut h, 1);
+        assert_eq!(shown(&h), 256);
+        h.get_by_label("Play");
+    }
+
+    #[test]
+    fn a_still_scene_has_no_player() {
+        let h = harness("default.ron");
+        assert!(h.query_by_label("Play").is_none());
+        assert!(h.query_by_label_contains("first k points").is_none());
+    }
+}

@@ -42,7 +42,8 @@ impl Panel for PatternPanel {
                 return;
             }
         };
-        let count = cx.view.prefix.unwrap_or(usize::MAX).min(data.points.len());
+        // A prefix is the scene's: the data holds exactly the points shown.
+        let count = data.points.len();
         let radius = marks::marker_radius(f64::from(side), data.points.len())
             .clamp(marks::MIN_RADIUS_PX, marks::MAX_RADIUS_PX) as f32;
         // Overlays under the points.
@@ -154,16 +155,6 @@ impl Panel for PatternPanel {
                     .labelled_by(label.id);
             }
         });
-        if cx.scene.columns[ci].pattern.is_progressive() {
-            let n = data.points.len();
-            let mut p = cx.view.prefix.unwrap_or(n).min(n);
-            if ui
-                .add(egui::Slider::new(&mut p, 1..=n.max(1)).text("first i points"))
-                .changed()
-            {
-                cx.view.prefix = (p < n).then_some(p);
-            }
-        }
     }
 }
 

@@ -70,7 +70,7 @@ impl Panel for SpherePanel {
                 return;
             }
         };
-        let shown = cx.view.prefix.unwrap_or(usize::MAX).min(data.points.len());
+        let shown = data.points.len();
         let count = shown.min(MAX_SPLATS);
         let rad = marks::disc_radius(f64::from(r), count)
             .clamp(marks::MIN_RADIUS_PX, marks::MAX_RADIUS_PX) as f32;
