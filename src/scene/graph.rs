@@ -8,6 +8,7 @@
 //!                                             Reference(signal, size) ─────────────────> Error
 //! Filter ─> Response         Convergence(pattern, seed, signal, filter)    Theorem(settings)
 //! Integration(pattern, seed, integration settings)
+//! With a prefix k: Sequence(pattern, n, seed) ─> Points(sequence; k), the first k of the run.
 //! ```
 //!
 //! Every node kind has **one entry** in [`NODES`], expanded from the node list
