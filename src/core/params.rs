@@ -3,7 +3,7 @@
 //!
 //! Every parameter struct declares its fields once, with [`declare_params!`]: name, doc,
 //! default, range and kind (integer, float, signed scale, enum, bool, list, per-dimension
-//! value). The declaration gives the
+//! value, list of integers). The declaration gives the
 //! struct, its `Default`, its serde form (RON in scene files) and an implementation of
 //! [`Params`]: descriptors ([`ParamSpec`]), getters, checked setters and a whole-set check;
 //! `declare_params! { impl T = "owner" { … } }` describes the scalar fields of an existing
@@ -54,6 +54,11 @@ pub enum ParamKind {
     /// dimension, or a list of 1 to [`MAX_DIMS`] of them, one per dimension (whose length the
     /// user of the set checks against its dimension).
     PerDim { default: f64, min: f64, max: f64 },
+    /// A list of 0 to [`MAX_DIMS`] integers ([`IntList`]), each in `min..=max`; empty (the
+    /// default) means "not given", and the owner's own rule applies. Its length and any bound
+    /// that depends on the point count are checked by the user of the set (a rank-1 lattice's
+    /// generating vector: one entry per dimension, each below N).
+    IntList { min: i64, max: i64 },
 }
 
 /// One parameter: its key, a one-line doc and its kind.
@@ -218,6 +223,10 @@ impl ParamSpec {
                 fmt_num(*min),
                 fmt_num(*max)
             ),
+            ParamKind::IntList { min, max } => format!(
+                "a list [a,b,…] of up to {MAX_DIMS} integers, one per dimension, each an integer \
+                 in {min}..={max} ([] = not given)"
+            ),
         }
     }
 
@@ -232,7 +241,14 @@ impl ParamSpec {
             ParamKind::Bool { default } => ParamValue::Bool(*default),
             ParamKind::List { default, .. } => ParamValue::List(default.to_vec()),
             ParamKind::PerDim { default, .. } => ParamValue::Float(*default),
+            ParamKind::IntList { .. } => ParamValue::List(Vec::new()),
         }
+    }
+
+    /// Whether `value` is this parameter's "not given" (an empty [`ParamKind::IntList`]):
+    /// such a value is left out of [`Params::params_text`] and [`params_json`].
+    pub fn is_unset(&self, value: &ParamValue) -> bool {
+        matches!((&self.kind, value), (ParamKind::IntList { .. }, ParamValue::List(v)) if v.is_empty())
     }
 
     /// The default value as text.
@@ -313,6 +329,17 @@ impl ParamSpec {
                     _ => ParamValue::List(v.clone()),
                 })
             }
+            // Integers (as f64, exact below 2⁵³) in range; one integer is a list of one.
+            (&ParamKind::IntList { min, max }, ParamValue::List(v)) => {
+                let ok = v.len() <= MAX_DIMS
+                    && v.iter().all(|x| {
+                        x.is_finite() && x.fract() == 0.0 && *x >= min as f64 && *x <= max as f64
+                    });
+                ok.then(|| ParamValue::List(v.clone()))
+            }
+            (&ParamKind::IntList { min, max }, ParamValue::Int(v)) => (min..=max)
+                .contains(v)
+                .then(|| ParamValue::List(vec![*v as f64])),
             _ => None,
         }
     }
@@ -339,6 +366,20 @@ impl ParamSpec {
                 let items: Result<Vec<f64>, _> =
                     inner.split(',').map(|s| s.trim().parse::<f64>()).collect();
                 ParamValue::List(items.ok()?)
+            }
+            // Integers only (`1.5` and `1e3` are refused); `[]` or nothing is the empty list.
+            ParamKind::IntList { .. } => {
+                let inner = t.strip_prefix('[').unwrap_or(t);
+                let inner = inner.strip_suffix(']').unwrap_or(inner).trim();
+                if inner.is_empty() {
+                    ParamValue::List(Vec::new())
+                } else {
+                    let items: Result<Vec<f64>, _> = inner
+                        .split(',')
+                        .map(|s| s.trim().parse::<i64>().map(|i| i as f64))
+                        .collect();
+                    ParamValue::List(items.ok()?)
+                }
             }
         };
         self.accept(&value)
@@ -507,6 +548,111 @@ impl<'de> serde::Deserialize<'de> for PerDim {
     }
 }
 
+/// A list of integers (the `int_list` kind): 0 to [`MAX_DIMS`] entries, each below 2³²; empty
+/// is "not given". Its serde form is a list (a scene file's `z: [1, 433, 229]`); it is `Copy`
+/// like every parameter set, so it holds its entries inline.
+#[derive(Clone, Copy)]
+pub struct IntList {
+    len: u16,
+    values: [u32; MAX_DIMS],
+}
+
+impl IntList {
+    /// The empty list ("not given").
+    pub const EMPTY: IntList = IntList {
+        len: 0,
+        values: [0; MAX_DIMS],
+    };
+
+    /// The list `v`; `None` when it is longer than [`MAX_DIMS`].
+    pub fn list(v: &[u32]) -> Option<Self> {
+        if v.len() > MAX_DIMS {
+            return None;
+        }
+        let mut values = [0; MAX_DIMS];
+        values[..v.len()].copy_from_slice(v);
+        Some(IntList {
+            len: v.len() as u16,
+            values,
+        })
+    }
+
+    /// The entries.
+    pub fn as_slice(&self) -> &[u32] {
+        &self.values[..self.len as usize]
+    }
+
+    /// Whether the list is empty ("not given").
+    pub fn is_empty(&self) -> bool {
+        self.len == 0
+    }
+
+    /// The value as a parameter value: a list of numbers (integers exactly).
+    pub fn value(&self) -> ParamValue {
+        ParamValue::List(self.as_slice().iter().map(|&v| f64::from(v)).collect())
+    }
+
+    /// Stores an accepted value (a list of at most [`MAX_DIMS`] integers in `0..2³²`).
+    pub fn put(&mut self, value: ParamValue) {
+        if let ParamValue::List(v) = value {
+            let ints: Vec<u32> = v.iter().map(|&x| x as u32).collect();
+            if let Some(next) = IntList::list(&ints) {
+                *self = next;
+            }
+        }
+    }
+}
+
+impl Default for IntList {
+    fn default() -> Self {
+        IntList::EMPTY
+    }
+}
+
+impl PartialEq for IntList {
+    fn eq(&self, other: &Self) -> bool {
+        self.as_slice() == other.as_slice()
+    }
+}
+
+impl std::fmt::Debug for IntList {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_list().entries(self.as_slice()).finish()
+    }
+}
+
+impl serde::Serialize for IntList {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        serde::Serialize::serialize(self.as_slice(), s)
+    }
+}
+
+impl<'de> serde::Deserialize<'de> for IntList {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        struct Visit;
+        impl<'de> serde::de::Visitor<'de> for Visit {
+            type Value = IntList;
+            fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+                write!(f, "a list of up to {MAX_DIMS} integers in 0..2^32")
+            }
+            fn visit_seq<A: serde::de::SeqAccess<'de>>(
+                self,
+                mut seq: A,
+            ) -> Result<IntList, A::Error> {
+                let mut v = Vec::new();
+                while let Some(x) = seq.next_element::<u32>()? {
+                    if v.len() == MAX_DIMS {
+                        return Err(serde::de::Error::invalid_length(v.len() + 1, &self));
+                    }
+                    v.push(x);
+                }
+                IntList::list(&v).ok_or_else(|| serde::de::Error::invalid_length(v.len(), &self))
+            }
+        }
+        d.deserialize_seq(Visit)
+    }
+}
+
 /// A set of named parameters with descriptors: a pattern, a filter, a signal.
 pub trait Params: Clone {
     /// The name errors start with (`jitter`, `gaussian`, `zone-plate`).
@@ -535,11 +681,13 @@ pub trait Params: Clone {
     }
 
     /// Every parameter that applies now as `key=value`, separated by spaces (titles and
-    /// metadata).
+    /// metadata); a list that is not given ([`ParamSpec::is_unset`]) is left out.
     fn params_text(&self) -> String {
         self.specs()
             .iter()
-            .filter_map(|s| self.get(s.name).map(|v| format!("{}={v}", s.name)))
+            .filter_map(|s| self.get(s.name).map(|v| (s, v)))
+            .filter(|(s, v)| !s.is_unset(v))
+            .map(|(s, v)| format!("{}={v}", s.name))
             .collect::<Vec<_>>()
             .join(" ")
     }
@@ -653,7 +801,8 @@ pub trait Params: Clone {
 
 /// A parameter set as a JSON object `{key: value}` of every parameter that applies now:
 /// numbers as numbers (a non-finite one as `null`), choices as their names, booleans as
-/// booleans, lists as arrays. The `--json` outputs of every command use it.
+/// booleans, lists as arrays; a list that is not given ([`ParamSpec::is_unset`]) is left out.
+/// The `--json` outputs of every command use it.
 pub fn params_json(p: &impl Params) -> serde_json::Value {
     let num = |x: f64| {
         if x.is_finite() {
@@ -666,7 +815,16 @@ pub fn params_json(p: &impl Params) -> serde_json::Value {
         .specs()
         .iter()
         .filter_map(|s| {
-            let v = match p.get(s.name)? {
+            let v = p.get(s.name)?;
+            if s.is_unset(&v) {
+                return None;
+            }
+            let v = match v {
+                // A list of integers as integers.
+                ParamValue::List(v) if matches!(s.kind, ParamKind::IntList { .. }) => v
+                    .into_iter()
+                    .map(|x| serde_json::Value::from(x as i64))
+                    .collect(),
                 ParamValue::Int(i) => serde_json::Value::from(i),
                 ParamValue::Float(x) => num(x),
                 ParamValue::Bool(b) => serde_json::Value::from(b),
@@ -700,6 +858,9 @@ pub fn params_json(p: &impl Params) -> serde_json::Value {
 /// - `list(N, [defaults], min, max, "doc")`, stored as `[f64; N]`;
 /// - `per_dim(default, min, max, "doc")`, stored as [`PerDim`]: one number for every
 ///   dimension or a list of one per dimension, each in `[min, max]`.
+/// - `int_list(min, max, "doc")`, stored as [`IntList`]: up to [`MAX_DIMS`] integers, each in
+///   `min..=max`, empty by default ("not given"; mark the field
+///   `#[serde(skip_serializing_if = "IntList::is_empty")]` so that scene files stay as before).
 ///
 /// An optional `check(p) { … }` block adds joint constraints (`Result<(), ParamError>`).
 macro_rules! declare_params {
@@ -798,6 +959,7 @@ macro_rules! declare_params {
     (@ty flag ($($a:tt)*)) => { bool };
     (@ty list ($n:literal, $($a:tt)*)) => { [f64; $n] };
     (@ty per_dim ($($a:tt)*)) => { $crate::core::params::PerDim };
+    (@ty int_list ($($a:tt)*)) => { $crate::core::params::IntList };
     (@default int ($d:expr, $min:expr, $max:expr, $doc:literal)) => { $d };
     (@default count ($d:expr, $min:expr, $max:expr, $doc:literal)) => { $d };
     (@default float ($d:expr, $min:expr, $max:expr, $doc:literal)) => { $d };
@@ -808,6 +970,7 @@ macro_rules! declare_params {
     (@default flag ($d:expr, $doc:literal)) => { $d };
     (@default list ($n:literal, [$($d:expr),*], $min:expr, $max:expr, $doc:literal)) => { [$($d),*] };
     (@default per_dim ($d:expr, $min:expr, $max:expr, $doc:literal)) => { $crate::core::params::PerDim::all($d) };
+    (@default int_list ($min:expr, $max:expr, $doc:literal)) => { $crate::core::params::IntList::EMPTY };
     (@doc $kind:ident ($($a:tt)*)) => { $crate::core::params::declare_params!(@last $($a)*) };
     (@last $doc:literal) => { $doc };
     (@last $x:tt $($rest:tt)+) => { $crate::core::params::declare_params!(@last $($rest)+) };
@@ -844,6 +1007,9 @@ macro_rules! declare_params {
     (@spec per_dim ($d:expr, $min:expr, $max:expr, $doc:literal)) => {
         $crate::core::params::ParamKind::PerDim { default: $d, min: $min, max: $max }
     };
+    (@spec int_list ($min:expr, $max:expr, $doc:literal)) => {
+        $crate::core::params::ParamKind::IntList { min: $min as i64, max: $max as i64 }
+    };
     (@get int $e:expr) => { $crate::core::params::ParamValue::Int($e as i64) };
     (@get count $e:expr) => { $crate::core::params::ParamValue::Int($e as i64) };
     (@get float $e:expr) => { $crate::core::params::ParamValue::Float($e) };
@@ -856,6 +1022,7 @@ macro_rules! declare_params {
     (@get flag $e:expr) => { $crate::core::params::ParamValue::Bool($e) };
     (@get list $e:expr) => { $crate::core::params::ParamValue::List($e.to_vec()) };
     (@get per_dim $e:expr) => { $e.value() };
+    (@get int_list $e:expr) => { $e.value() };
     (@put int $e:expr, $v:expr) => {
         if let $crate::core::params::ParamValue::Int(x) = $v { $e = x as u32; }
     };
@@ -888,6 +1055,7 @@ macro_rules! declare_params {
         }
     };
     (@put per_dim $e:expr, $v:expr) => { $e.put($v) };
+    (@put int_list $e:expr, $v:expr) => { $e.put($v) };
     (@check $s:ident) => { Ok(()) };
     (@check $s:ident $p:ident $body:block) => { { let $p = $s; $body } };
 }
@@ -953,6 +1121,8 @@ mod tests {
             on: flag(true, "a flag"),
             amps: list(3, [0.5, 0.25, 0.0], -1.0, 1.0, "a list"),
             gains: per_dim(1.0, 0.0, 2.0, "a value per dimension"),
+            #[serde(skip_serializing_if = "IntList::is_empty")]
+            ids: int_list(1, 100, "a list of integers"),
         }
         check(p) {
             if p.amps.iter().map(|a| a.abs()).sum::<f64>() > 1.0 {
@@ -1007,6 +1177,7 @@ mod tests {
                 on: false,
                 amps: [0.1, -0.2, 0.0],
                 gains: PerDim::all(1.0),
+                ids: IntList::EMPTY,
             }
         );
         // Unquoted and quoted enum values, list without brackets.
@@ -1065,6 +1236,58 @@ mod tests {
     }
 
     #[test]
+    fn a_list_of_integers_parses_round_trips_and_is_left_out_when_not_given() {
+        let mut e = Every::default();
+        assert!(e.ids.is_empty());
+        assert_eq!(e.get("ids"), Some(ParamValue::List(vec![])));
+        // Not given: left out of the parameter text, JSON and the serde form.
+        assert!(!e.params_text().contains("ids"));
+        assert!(params_json(&e).get("ids").is_none());
+        assert!(!ron::to_string(&e).unwrap().contains("ids"));
+        for text in ["1,2,100", "[1, 2, 100]", " [1,2,100] "] {
+            e.set("ids", text).unwrap();
+            assert_eq!(e.ids.as_slice(), &[1, 2, 100], "{text}");
+        }
+        assert_eq!(e.get("ids"), Some(ParamValue::List(vec![1.0, 2.0, 100.0])));
+        assert!(e.params_text().ends_with(" ids=[1,2,100]"));
+        assert_eq!(params_json(&e)["ids"], serde_json::json!([1, 2, 100]));
+        assert!(params_json(&e)["ids"][0].is_i64());
+        let text = ron::to_string(&e).unwrap();
+        assert!(text.contains("ids:[1,2,100]"), "{text}");
+        assert_eq!(ron::from_str::<Every>(&text).unwrap(), e);
+        let json = serde_json::to_string(&e).unwrap();
+        assert_eq!(serde_json::from_str::<Every>(&json).unwrap(), e);
+        // The text form parses back to the same list; `[]` clears it.
+        let mut again = Every::default();
+        again
+            .set("ids", &e.get("ids").unwrap().to_string())
+            .unwrap();
+        assert_eq!(again, e);
+        e.set("ids", "[]").unwrap();
+        assert!(e.ids.is_empty());
+        // One integer is a list of one; the longest list is MAX_DIMS entries.
+        let spec = e.spec("ids").unwrap();
+        assert_eq!(
+            spec.accept(&ParamValue::Int(7)),
+            Some(ParamValue::List(vec![7.0]))
+        );
+        let long = vec!["1"; MAX_DIMS].join(",");
+        e.set("ids", &long).unwrap();
+        assert_eq!(e.ids.as_slice().len(), MAX_DIMS);
+        assert!(e.set("ids", &format!("{long},1")).is_err());
+        assert_eq!(e.ids.as_slice().len(), MAX_DIMS);
+        assert!(ron::from_str::<Every>(&format!("(ids: [{long},1])")).is_err());
+        assert!(ron::from_str::<Every>("(ids: [1, -2])").is_err());
+        assert!(ron::from_str::<Every>("(ids: 3)").is_err());
+        // A value written directly out of range is found by the whole-set check.
+        let bad = Every {
+            ids: IntList::list(&[1, 200]).unwrap(),
+            ..Every::default()
+        };
+        assert_eq!(bad.check_params().unwrap_err().field(), Some("ids"));
+    }
+
+    #[test]
     fn bad_values_name_the_field_and_leave_the_set_unchanged() {
         let mut e = Every::default();
         let before = e;
@@ -1085,6 +1308,11 @@ mod tests {
             ("gains", "3", "every.gains = 3: must be one finite number in [0, 2] (every dimension) or a list [a,b,…] of one per dimension (at most 1024)"),
             ("gains", "[1,-1]", "every.gains = [1,-1]: must be one finite number"),
             ("gains", "[]", "every.gains = []: must be one finite number"),
+            ("ids", "[1,0]", "every.ids = [1,0]: must be a list [a,b,…] of up to 1024 integers, one per dimension, each an integer in 1..=100 ([] = not given)"),
+            ("ids", "1,101", "every.ids = 1,101: must be a list"),
+            ("ids", "1.5", "every.ids = 1.5: must be a list"),
+            ("ids", "1e2", "every.ids = 1e2: must be a list"),
+            ("ids", "[1,,2]", "every.ids = [1,,2]: must be a list"),
         ];
         for (key, text, want) in cases {
             let err = e.set(key, text).unwrap_err().to_string();
@@ -1094,7 +1322,7 @@ mod tests {
         let err = e.set("size", "1").unwrap_err().to_string();
         assert_eq!(
             err,
-            "every: unknown parameter 'size': allowed parameters are [count, scale, width, gain, shape, on, amps, gains]"
+            "every: unknown parameter 'size': allowed parameters are [count, scale, width, gain, shape, on, amps, gains, ids]"
         );
     }
 

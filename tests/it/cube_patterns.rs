@@ -692,3 +692,223 @@ fn points_list_says_every_pattern_s_dimensions() {
         assert!(line.ends_with(&want), "{line}");
     }
 }
+
+#[test]
+fn rank1_takes_its_generating_vector_as_a_list() {
+    use samplescope::core::pattern::cube::lattice::generating_vector;
+    let never = Cancel::never();
+    let (n, d) = (4999usize, 8usize);
+    // The CBC vector given as a list is the CBC lattice bit for bit (shifted or not).
+    let cbc = generating_vector(
+        &match pattern("rank1", &[]) {
+            Pattern::Rank1(r) => r,
+            _ => unreachable!(),
+        },
+        n,
+        d,
+        &never,
+    )
+    .unwrap();
+    let list = cbc.iter().map(u64::to_string).collect::<Vec<_>>().join(",");
+    for shift in ["false", "true"] {
+        let given = cube(
+            &pattern("rank1", &[("z", &list), ("shift", shift)]),
+            n,
+            d,
+            7,
+        );
+        let auto = cube(&pattern("rank1", &[("shift", shift)]), n, d, 7);
+        let bits = |c: &CubePoints| c.coords().iter().map(|v| v.to_bits()).collect::<Vec<_>>();
+        assert_eq!(bits(&given), bits(&auto), "shift = {shift}");
+    }
+    // At D = 2 the list (1, g) is the 2D Korobov lattice with generator g, bit for bit.
+    for shift in ["false", "true"] {
+        let given = pattern("rank1", &[("z", "[1, 377]"), ("shift", shift)])
+            .generate(987, 5)
+            .unwrap();
+        let korobov = pattern("rank1", &[("g", "377"), ("shift", shift)])
+            .generate(987, 5)
+            .unwrap();
+        let bits = |v: &[glam::DVec2]| {
+            v.iter()
+                .map(|p| (p.x.to_bits(), p.y.to_bits()))
+                .collect::<Vec<_>>()
+        };
+        assert_eq!(bits(&given), bits(&korobov), "shift = {shift}");
+    }
+    // The list round-trips through the parameter text, JSON and the scene file (RON); one
+    // not given is left out of all three, so scenes and outputs without it are unchanged.
+    let p = pattern("rank1", &[("z", &list)]);
+    assert!(
+        p.params_text().ends_with(&format!("z=[{list}]")),
+        "{}",
+        p.params_text()
+    );
+    let mut again = pattern("rank1", &[]);
+    again.set("z", &p.get("z").unwrap().to_string()).unwrap();
+    assert_eq!(again, p);
+    let json = serde_json::to_string(&p).unwrap();
+    assert_eq!(serde_json::from_str::<Pattern>(&json).unwrap(), p, "{json}");
+    let json_params = samplescope::core::params::params_json(&p);
+    assert_eq!(json_params["z"], serde_json::json!(cbc));
+    let ron_text = ron::to_string(&p).unwrap();
+    assert_eq!(
+        ron::from_str::<Pattern>(&ron_text).unwrap(),
+        p,
+        "{ron_text}"
+    );
+    let scene_text = std::fs::read_to_string(format!(
+        "{}/assets/scenes/lattices-and-sequences.ron",
+        env!("CARGO_MANIFEST_DIR")
+    ))
+    .unwrap()
+    .replace(
+        "(kind: \"rank1\", g: 0, shift: false)",
+        "(kind: \"rank1\", g: 0, shift: false, z: [1, 610])",
+    );
+    let scene = samplescope::scene::Scene::from_ron(&scene_text, "z.ron").unwrap();
+    assert_eq!(
+        scene.columns[1].pattern,
+        pattern("rank1", &[("z", "1,610")])
+    );
+    let saved = samplescope::scene::Scene::from_ron(&scene.to_ron(), "saved.ron").unwrap();
+    assert_eq!(saved.columns[1].pattern, scene.columns[1].pattern);
+    let plain = pattern("rank1", &[]);
+    assert_eq!(plain.params_text(), "g=0 shift=false");
+    assert!(!ron::to_string(&plain).unwrap().contains("z"));
+    assert!(samplescope::core::params::params_json(&plain)
+        .get("z")
+        .is_none());
+    // The CLI: `--set z=…` writes the CBC lattice's file.
+    let args = |z: Option<&str>| {
+        let mut a = vec!["points", "rank1", "-n", "4999", "--dims", "8"];
+        if let Some(z) = z {
+            a.extend(["--set", z]);
+        }
+        a.iter().map(|s| s.to_string()).collect::<Vec<_>>()
+    };
+    let zset = format!("z={list}");
+    let run = |a: Vec<String>| {
+        let refs: Vec<&str> = a.iter().map(String::as_str).collect();
+        let o = samplescope(&refs);
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        o.stdout
+    };
+    assert_eq!(run(args(Some(&zset))), run(args(None)));
+}
+
+#[test]
+fn rank1_refuses_a_bad_generating_vector_with_one_line() {
+    let cases: [(&[&str], &str); 7] = [
+        (
+            &["--dims", "3", "--set", "z=1,2"],
+            "rank1.z = [1,2]: must be a list of exactly 3 integers (one per dimension, dims = 3), each in 1..=100 (below n = 101); it has 2",
+        ),
+        (
+            &["--dims", "3", "--set", "z=1,2,101"],
+            "rank1.z = [1,2,101]: must be a list of integers in 1..=100 (below n = 101); entry 2 is 101",
+        ),
+        (
+            &["--set", "z=[1,7,3]"],
+            "rank1.z = [1,7,3]: must be a list of exactly 2 integers",
+        ),
+        (
+            &["--dims", "3", "--set", "z=0,2,3"],
+            "rank1.z = 0,2,3: must be a list [a,b,…] of up to 1024 integers, one per dimension, each an integer in 1..=16777215 ([] = not given)",
+        ),
+        (
+            &["--dims", "2", "--set", "z=1,2.5"],
+            "rank1.z = 1,2.5: must be a list [a,b,…] of up to 1024 integers",
+        ),
+        (
+            &["--dims", "2", "--set", "z=1,x"],
+            "rank1.z = 1,x: must be a list",
+        ),
+        (
+            &["--dims", "2", "--set", "z=1,5", "--set", "g=3"],
+            "rank1.z = [1,5]: must be left out when g ≠ 0 (g = 3 sets the Korobov vector (1, g, g², …)); set g = 0 to give z",
+        ),
+    ];
+    for (extra, want) in cases {
+        let mut args = vec!["points", "rank1", "-n", "101"];
+        args.extend(extra);
+        let o = samplescope(&args);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {err}");
+        assert_eq!(err.trim().lines().count(), 1, "{args:?}: {err}");
+        assert!(err.contains(want), "{args:?}: {err}");
+    }
+}
+
+/// The real root > 1 of x^(D+1) = x + 1 in 62-bit fixed point (x = X / 2^62), found by
+/// bisection on the sign of x^(D+1) − x − 1 with integer arithmetic only: an independent
+/// reference for `phi` (which uses Newton's method in f64). Each power is a truncated product,
+/// so x^(D+1) is low by at most D units of 2^−62; the slope of x^(D+1) − x − 1 at the root is
+/// (D+1)φ^D − 1 > D, so the root is within 2 units of 2^−62 (5·10⁻¹⁹).
+fn phi_bisection(dims: usize) -> u64 {
+    const ONE: u128 = 1 << 62;
+    let above = |x: u64| {
+        let mut p = x as u128;
+        for _ in 0..dims {
+            p = (p * x as u128) >> 62;
+            if p >= 4 * ONE {
+                return true; // x^(D+1) ≥ 4 > x + 1 for x < 2
+            }
+        }
+        p >= x as u128 + ONE
+    };
+    let (mut lo, mut hi) = (ONE as u64, 2 * ONE as u64); // f(1) = −1 < 0 ≤ f(2)
+    while hi - lo > 1 {
+        let mid = lo + (hi - lo) / 2;
+        if above(mid) {
+            hi = mid;
+        } else {
+            lo = mid;
+        }
+    }
+    hi
+}
+
+#[test]
+fn phi_d_and_alpha_match_an_independent_bisection_and_the_published_values() {
+    use samplescope::core::pattern::cube::lattice::{alpha_fixed, phi};
+    let ulp = |x: f64| f64::from_bits(x.to_bits() + 1) - x;
+    // Published values, to more digits than an f64 holds: φ_1 the golden ratio, φ_2 the
+    // plastic number, φ_3 (Roberts 2018).
+    let published = [
+        (1usize, "1.6180339887498948482045868343656381177"),
+        (2, "1.3247179572447460259609088544780973407344"),
+        (3, "1.2207440846057594753616853491088319144324"),
+    ];
+    for (d, text) in published {
+        // phi in f64 within 2 ulps (Newton in f64 ends within one or two roundings of the root).
+        let want: f64 = text.parse().unwrap();
+        let f = phi(d);
+        assert!((f - want).abs() <= 2.0 * ulp(want), "φ_{d} = {f:e}, published {text}");
+        // The bisection within 3 units of 2^−62 of the published digits (19 of them: 10⁻¹⁹).
+        let frac: u128 = text[2..21].parse().unwrap();
+        let fixed = (1u128 << 62) + (frac << 62) / 10u128.pow(19);
+        let b = phi_bisection(d) as u128;
+        assert!(b.abs_diff(fixed) <= 3, "bisection φ_{d}: {b} vs {fixed} (2^-62 units)");
+    }
+    for d in DIMS.into_iter().chain([4, 16, 100, 1024]) {
+        let reference = phi_bisection(d);
+        let r = reference as f64 / 2f64.powi(62);
+        let f = phi(d);
+        assert!(
+            (f - r).abs() <= 2.0 * ulp(r),
+            "dims {d}: φ {f:e} vs bisection {r:e}"
+        );
+        // a = 1/φ_d (2^−128 fixed point, refined beyond f64): a·φ = 1 within 8 units of
+        // 2^−62 (a truncated to 62 bits: 1 unit; the bisection's root: 2 units times a < 1;
+        // the product's truncation: 1 unit), i.e. a is 1/φ_d to 2·10⁻¹⁸.
+        let a62 = (alpha_fixed(d)[0] >> 66) as u128;
+        let product = (a62 * reference as u128) >> 62;
+        let one = 1u128 << 62;
+        assert!(
+            product.abs_diff(one) <= 8,
+            "dims {d}: a·φ = 1 + {} units of 2^-62",
+            product as i128 - one as i128
+        );
+    }
+}

@@ -63,6 +63,13 @@ fn at_limits<P: Params>(params: &P) -> Vec<P> {
                 ParamValue::Float(*max),
                 ParamValue::List(vec![*min, *max]),
             ],
+            // A list of integers: its smallest entry per dimension of the 2D scene (its largest
+            // allowed entry depends on N, below the descriptor's bound; the patterns' own
+            // checks refuse an entry ≥ N), and not given.
+            ParamKind::IntList { min, .. } => vec![
+                ParamValue::List(vec![*min as f64; 2]),
+                ParamValue::List(Vec::new()),
+            ],
         };
         for v in values {
             let mut p = params.clone();

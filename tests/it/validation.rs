@@ -125,6 +125,31 @@ fn check_message_bounds<P: Params>(p: &P, failures: &mut Vec<String>) -> usize {
                 checked += 1;
                 continue;
             }
+            ParamKind::IntList { min, max } => {
+                // Each entry of a list of integers: the printed bounds in and one step out.
+                let printed = allowed
+                    .find("an integer in ")
+                    .and_then(|at| printed_bounds(allowed[at..].split(" (").next()?));
+                if printed != Some((min.to_string(), max.to_string(), true, true)) {
+                    failures.push(format!(
+                        "{}.{}: bounds {min}..={max} not in {allowed:?}",
+                        p.owner(),
+                        spec.name
+                    ));
+                }
+                for (v, want) in [
+                    (*min, true),
+                    (*max, true),
+                    (min - 1, false),
+                    (max + 1, false),
+                ] {
+                    if accepts(&format!("[{v}]")) != want {
+                        failures.push(format!("{}.{} = [{v}]: {allowed}", p.owner(), spec.name));
+                    }
+                }
+                checked += 1;
+                continue;
+            }
             _ => continue,
         };
         checked += 1;

@@ -109,7 +109,7 @@ pub(crate) fn pattern_cost(p: &Pattern, n: usize) -> (f64, Unit, f64, f64) {
             let secs = nf * cpu(PMJ02_POINT_NS) + c * cpu(PMJ02BN_CANDIDATE_NS) + call;
             (c, Unit::Candidates, secs + touch(bytes), bytes)
         }
-        Pattern::Rank1(r) if r.g == 0 => {
+        Pattern::Rank1(r) if r.g == 0 && r.z.is_empty() => {
             let generators = (nf / 2.0).max(1.0);
             let secs = generators * nf.max(2.0).log2() * cpu(RANK1_GENERATOR_NS)
                 + nf * cpu(POINT_NS)
@@ -213,7 +213,9 @@ pub(crate) fn pattern_label(p: &Pattern, n: usize) -> String {
             b.k
         ),
         Pattern::Pmj02bn(p) => format!("pmj02bn n = {n}, candidates = {}", p.candidates),
-        Pattern::Rank1(r) if r.g == 0 => format!("rank1 n = {n}, g = 0 (generator search)"),
+        Pattern::Rank1(r) if r.g == 0 && r.z.is_empty() => {
+            format!("rank1 n = {n}, g = 0 (generator search)")
+        }
         Pattern::Lloyd(l) => format!("lloyd n = {n}, iterations = {}", l.iterations),
         Pattern::Sot(s) => format!(
             "sot n = {n}, iterations = {}, directions = {}",
@@ -262,7 +264,7 @@ pub fn pattern_cube(p: &Pattern, n: usize, dims: usize) -> Estimate {
     }
     let (amount, unit, mut secs, bytes) = pattern_cost(p, n);
     if let Pattern::Rank1(r) = p {
-        if r.g == 0 {
+        if r.g == 0 && r.z.is_empty() {
             // The CBC vector: per dimension an FFT of length N (prime N), or N² terms.
             let nf = n as f64;
             let per_dim = if pattern::radical_inverse::is_prime(n as u64) {

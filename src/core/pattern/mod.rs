@@ -409,6 +409,24 @@ declare_params! {
     Rank1 = "rank1", "Korobov lattice x_i = (i/N, frac(i·g/N)); g = 0 picks the generator with the largest minimum distance" {
         g: int(0, 0, MAX_N, "generator g in 1..N−1 (g coprime to N gives N distinct rows); 0 = the best coprime g (largest toroidal minimum distance, each g ≤ N/2 by 2D lattice reduction: O(N log N), 0.1 s at N = 2^20)"),
         shift: flag(false, "Cranley–Patterson rotation by a seeded uniform shift (mod 1)"),
+        /// The generating vector given as a list (empty: from `g`).
+        #[serde(skip_serializing_if = "crate::core::params::IntList::is_empty")]
+        z: int_list(1, MAX_N - 1, "the generating vector z given as a list, one integer in 1..N per dimension (x_i = frac(i·z/N)); empty = from g (set g = 0 with a list)"),
+    }
+    check(p) {
+        // A list and a Korobov generator would both name the vector.
+        if p.g != 0 && !p.z.is_empty() {
+            return Err(ParamError::Invalid {
+                owner: Rank1::NAME,
+                field: "z",
+                value: p.z.value().short(),
+                allowed: format!(
+                    "left out when g ≠ 0 (g = {} sets the Korobov vector (1, g, g², …)); set g = 0 to give z",
+                    p.g
+                ),
+            });
+        }
+        Ok(())
     }
 }
 declare_params! {
@@ -543,6 +561,9 @@ fn param_error(owner: &'static str, e: PatternError) -> ParamError {
 family! {
     /// Every sample pattern, as a small parameter struct per variant. In scene files the
     /// `kind` is the pattern's one name, the same as on the command line and in the GUI.
+    /// `Rank1` holds its generating vector inline (`IntList`, 4 KiB, so that every parameter
+    /// set stays `Copy`): a pattern is copied per column and per scene, never in a hot loop.
+    #[allow(clippy::large_enum_variant)]
     Pattern = "pattern", "patterns" {
         Grid(Grid) = "grid",
         Random(Random) = "random",
@@ -712,7 +733,10 @@ impl Pattern {
             Pattern::Sobol(p) => lowdisc::check_sobol(p, n),
             Pattern::Pmj02bn(p) => pmj::check_candidates(p.candidates),
             Pattern::Fibonacci(_) => lattice::check_fibonacci(n),
-            Pattern::Rank1(p) => lattice::check_rank1(n, p.g),
+            Pattern::Rank1(p) => {
+                lattice::check_rank1(n, p.g)?;
+                cube::lattice::check_z(p, n, 2)
+            }
             Pattern::Kronecker(p) => {
                 lattice::check_kronecker(n, DVec2::new(p.offset_x, p.offset_y))
             }
@@ -768,6 +792,12 @@ impl Pattern {
             Pattern::Pmj02(_) => pmj::pmj02(n, seed, cancel)?,
             Pattern::Pmj02bn(p) => pmj::pmj02bn(n, seed, p.candidates, cancel)?,
             Pattern::Fibonacci(p) => lattice::fibonacci(n, p.shift, seed)?,
+            Pattern::Rank1(p) if !p.z.is_empty() => {
+                cube::lattice::check_z(p, n, 2)?;
+                let z: Vec<u64> = p.z.as_slice().iter().map(|&v| u64::from(v)).collect();
+                let xy = cube::lattice::lattice_points(n, &z, p.shift, seed);
+                xy.chunks_exact(2).map(|c| DVec2::new(c[0], c[1])).collect()
+            }
             Pattern::Rank1(p) => lattice::rank1_with(n, p.g, p.shift, seed, cancel)?,
             Pattern::Kronecker(p) => lattice::kronecker(n, DVec2::new(p.offset_x, p.offset_y))?,
             Pattern::Lloyd(p) => optimize::lloyd(n, p.iterations, seed, cancel, progress)?,

@@ -401,6 +401,30 @@ pub fn param_ui(
         (&ParamKind::PerDim { min, max, .. }, ParamValue::List(items)) => {
             list_ui(ui, label, spec.doc, items, min, max).map(ParamValue::List)
         }
+        // A list of integers: one integer drag value per entry; one not given says so (it is
+        // given on the command line or in the scene file, its length is the dimension).
+        (ParamKind::IntList { .. }, ParamValue::List(items)) if items.is_empty() => {
+            ui.label(format!("{label}: not given"))
+                .on_hover_text(spec.doc);
+            None
+        }
+        (&ParamKind::IntList { min, max }, ParamValue::List(items)) => {
+            let mut ints: Vec<i64> = items.iter().map(|&x| x as i64).collect();
+            let changed = ui
+                .horizontal(|ui| {
+                    let label = ui.label(label).on_hover_text(spec.doc);
+                    let mut changed = false;
+                    for x in ints.iter_mut() {
+                        changed |= ui
+                            .add(egui::DragValue::new(x).range(min..=max).speed(1.0))
+                            .labelled_by(label.id)
+                            .changed();
+                    }
+                    changed
+                })
+                .inner;
+            changed.then(|| ParamValue::List(ints.iter().map(|&x| x as f64).collect()))
+        }
         _ => None,
     }
 }

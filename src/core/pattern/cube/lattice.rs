@@ -34,6 +34,8 @@
 //!   reference of the tests.
 //! - `g = 0` and D = 2: the 2D `rank1` (the generator with the largest minimum distance), so
 //!   that dims = 2 stays the 2D pattern; the CBC vector is a different lattice there.
+//! - `z` given (a list of D integers in 1..N, `--set z=1,433,229`): that vector, for every D
+//!   (also D = 2, where the 2D pattern takes it too); `g` must then be 0.
 //! - `shift`: Δ uniform from `Rng::new(seed)`, dimension 0 first (the 2D rotation at D = 2);
 //!   else Δ = 0.
 use crate::core::pattern::lattice::{mul_hi_u128, to_fixed, TWO_POW_M128};
@@ -328,7 +330,12 @@ fn nearest_primes(n: usize) -> (u64, u64) {
 /// dims ≠ 2) a prime n or N²·D within [`NAIVE_CBC_WORK`].
 pub(super) fn check_rank1(p: &Rank1, n: usize, dims: usize) -> Result<(), PatternError> {
     crate::core::pattern::lattice::check_rank1(n, p.g)?;
-    if p.g == 0 && !is_prime(n as u64) && (n as u128).pow(2) * dims as u128 > NAIVE_CBC_WORK {
+    check_z(p, n, dims)?;
+    if p.g == 0
+        && p.z.is_empty()
+        && !is_prime(n as u64)
+        && (n as u128).pow(2) * dims as u128 > NAIVE_CBC_WORK
+    {
         let (below, above) = nearest_primes(n);
         return Err(PatternError::UnsupportedN {
             pattern: RANK1,
@@ -344,7 +351,48 @@ pub(super) fn check_rank1(p: &Rank1, n: usize, dims: usize) -> Result<(), Patter
     Ok(())
 }
 
-/// The generating vector of [`rank1`] for `dims` ≠ 2 (module docs).
+/// The checks of a generating vector given as a list (`rank1.z`; none when it is empty):
+/// exactly `dims` entries, each in 1..n. The descriptor checks each entry against the largest
+/// N only; this is the check against the N and D being generated.
+pub(crate) fn check_z(p: &Rank1, n: usize, dims: usize) -> Result<(), PatternError> {
+    let z = p.z.as_slice();
+    if z.is_empty() {
+        return Ok(());
+    }
+    let invalid = |value: String, allowed: String| PatternError::InvalidParam {
+        pattern: RANK1,
+        field: "z",
+        value,
+        allowed,
+    };
+    if z.len() != dims {
+        return Err(invalid(
+            p.z.value().short(),
+            format!(
+                "a list of exactly {dims} integers (one per dimension, dims = {dims}), each in \
+                 1..={} (below n = {n}); it has {}",
+                n.saturating_sub(1),
+                z.len()
+            ),
+        ));
+    }
+    if let Some((j, &v)) = z
+        .iter()
+        .enumerate()
+        .find(|(_, &v)| v == 0 || v as usize >= n)
+    {
+        return Err(invalid(
+            p.z.value().short(),
+            format!(
+                "a list of integers in 1..={} (below n = {n}); entry {j} is {v}",
+                n.saturating_sub(1)
+            ),
+        ));
+    }
+    Ok(())
+}
+
+/// The generating vector of [`rank1`] for `dims` ≠ 2 (module docs); the list `z` when given.
 pub fn generating_vector(
     p: &Rank1,
     n: usize,
@@ -352,6 +400,10 @@ pub fn generating_vector(
     cancel: &Cancel,
 ) -> Result<Vec<u64>, PatternError> {
     let nn = n as u64;
+    if !p.z.is_empty() {
+        check_z(p, n, dims)?;
+        return Ok(p.z.as_slice().iter().map(|&v| u64::from(v)).collect());
+    }
     if p.g != 0 {
         let g = u64::from(p.g);
         let mut z = Vec::with_capacity(dims);
