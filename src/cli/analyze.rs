@@ -84,11 +84,16 @@ pub struct AnalyzeArgs {
     /// Map the points' bounding box onto [0,1)² instead of rejecting points outside (with --points).
     #[arg(long, conflicts_with = "pattern")]
     pub normalize: bool,
-    /// With --points: analyse the 2D projection onto columns i and j (0-based) of files of
-    /// any number of columns, e.g. `--project 3,7`. Without it, a file of other than two
-    /// columns gets the d-dimensional measures (see the README).
-    #[arg(long, value_name = "I,J", requires = "points")]
+    /// Analyse the 2D projection onto dimensions i and j (0-based), e.g. `--project 3,7`: of
+    /// the files of --points (any number of columns), or of the pattern's points in --dims
+    /// dimensions. Without it, a file of other than two columns gets the d-dimensional
+    /// measures (see the README).
+    #[arg(long, value_name = "I,J")]
     pub project: Option<String>,
+    /// With a pattern: generate its points in D dimensions [default: 2] and analyse the
+    /// projection --project i,j (each pattern's limit is in `points --list`).
+    #[arg(long, value_name = "D", conflicts_with = "points")]
+    pub dims: Option<usize>,
     /// Spectrum size M (M×M integer frequencies).
     #[arg(long, default_value_t = 256)]
     pub size: usize,
@@ -372,6 +377,22 @@ pub enum Input {
     },
     /// N points of a pattern (its realizations from seeds derived from `--seed`).
     Pattern { pattern: Pattern, n: usize },
+    /// The 2D projection onto dimensions `pair` of N points of a pattern in `dims` dimensions
+    /// (`--dims D --project i,j`): generated once the budget admits it, then analysed as the
+    /// points of a file of that projection would be.
+    Projection {
+        pattern: Pattern,
+        n: usize,
+        dims: usize,
+        pair: (usize, usize),
+    },
+}
+
+impl Input {
+    /// The name the points of a projection are shown under (figure label and metadata).
+    fn projection_label(pattern: &Pattern, dims: usize, pair: (usize, usize)) -> String {
+        format!("{} dims {},{} of {dims}", pattern.name(), pair.0, pair.1)
+    }
 }
 
 /// Runs `samplescope analyze`: checks the outputs, reads the input ([`read_input`]) and
@@ -438,6 +459,38 @@ pub fn read_input(args: &AnalyzeArgs) -> Result<Input, CliError> {
     let pattern = super::pattern_from_args(name, &args.set)?;
     super::check_seed(&pattern, args.seed, "--seed")?;
     super::check_allow_fewer(&pattern, args.allow_fewer)?;
+    if let (Some(dims), None) = (args.dims, &args.project) {
+        return Err(CliError::Usage(format!(
+            "--dims {dims}: analyze takes a pattern's 2D projection: add --project i,j (i ≠ j \
+             in 0..={}); for the d-dimensional measures write the points with `points --dims \
+             {dims} --out F.csv` and give F.csv to --points",
+            dims.saturating_sub(1)
+        )));
+    }
+    if let Some(text) = &args.project {
+        let dims = args.dims.unwrap_or(2);
+        pattern.validate_cube(n, dims)?;
+        let pair = super::points::parse_project(text, dims)?;
+        if args.allow_fewer {
+            return Err(CliError::Usage(
+                "--allow-fewer: applies to 2D patterns only (no --project)".into(),
+            ));
+        }
+        if args.realizations != 1 {
+            return Err(CliError::Usage(format!(
+                "--realizations = {}: must be 1 with --project (the projection is one point \
+                 set; to average several, write them with `points --dims {dims} --project \
+                 {text} --seed S` and give the files to --points)",
+                args.realizations
+            )));
+        }
+        return Ok(Input::Projection {
+            pattern,
+            n,
+            dims,
+            pair,
+        });
+    }
     if args.realizations > 1 && !pattern.is_random() {
         return Err(CliError::Usage(format!(
             "--realizations {}: {} with these parameters is deterministic, so every \
@@ -481,6 +534,25 @@ pub fn analysis_scene(
             vec![Column {
                 pattern: *pattern,
                 seed,
+                ..Column::default()
+            }],
+            *n,
+        ),
+        // Imported points standing for the projection (filled once generated, `analyze_2d`).
+        Input::Projection {
+            pattern,
+            n,
+            dims,
+            pair,
+        } => (
+            vec![Column {
+                pattern: *pattern,
+                seed,
+                points: Some(ImportedPoints {
+                    points: vec![[0.0, 0.0]; *n],
+                    source: Input::projection_label(pattern, *dims, *pair),
+                    ..Default::default()
+                }),
                 ..Column::default()
             }],
             *n,
@@ -644,6 +716,7 @@ fn spectrum_figure(
     results: &Results,
     spectrum: &Arc<SpectrumData>,
     averaged: bool,
+    input: &Input,
     cancel: &Cancel,
 ) -> Result<Vec<u8>, CliError> {
     let usage = |e: &dyn std::fmt::Display| CliError::Usage(e.to_string());
@@ -666,7 +739,27 @@ fn spectrum_figure(
         ctx.spectrum_range = samplescope::model::shared_spectrum_range(&[spectrum.auto_range]);
         (one, columns)
     } else {
-        let columns = figure::figure_columns(scene, results, "analyze").map_err(|e| usage(&e))?;
+        let mut columns =
+            figure::figure_columns(scene, results, "analyze").map_err(|e| usage(&e))?;
+        // A projection's metadata names the pattern, its parameters and the pair.
+        if let Input::Projection {
+            pattern,
+            dims,
+            pair,
+            ..
+        } = input
+        {
+            let ctx = &mut columns[0].0;
+            ctx.pattern = pattern.name().to_string();
+            ctx.pattern_params = format!(
+                "{} dims={dims} project={},{}",
+                samplescope::core::params::Params::params_text(pattern),
+                pair.0,
+                pair.1
+            )
+            .trim_start()
+            .to_string();
+        }
         (scene.clone(), columns)
     };
     super::figure_png(&one, columns, "analyze", FigureKind::Spectrum, cancel)
@@ -686,6 +779,7 @@ pub fn spectrum_settings(args: &AnalyzeArgs, input: &Input) -> Result<SpectrumSe
     let (k, n) = match input {
         Input::Files { sets, .. } => (sets.len(), sets[0].len()),
         Input::Pattern { n, .. } => (args.realizations, *n),
+        Input::Projection { n, .. } => (1, *n),
     };
     SpectrumSettings {
         realizations: k,
@@ -714,24 +808,33 @@ pub fn analyze_2d(
     let seed = args.seed.unwrap_or(0);
     let files: Vec<String> = match &input {
         Input::Files { files, .. } => files.clone(),
-        Input::Pattern { .. } => Vec::new(),
+        Input::Pattern { .. } | Input::Projection { .. } => Vec::new(),
     };
     let is_files = !files.is_empty();
+    // A projection is analysed as a file of it would be (the prefixes' net check included).
+    let is_points = is_files || matches!(input, Input::Projection { .. });
     // Files averaged (K ≥ 2) or one set.
     let sets_k = match &input {
         Input::Files { sets, .. } => sets.len(),
-        Input::Pattern { .. } => 1,
+        Input::Pattern { .. } | Input::Projection { .. } => 1,
     };
     let averaged = sets_k > 1;
     let settings = spectrum_settings(args, &input)?;
     let n = match &input {
         Input::Files { sets, .. } => sets[0].len(),
-        Input::Pattern { n, .. } => *n,
+        Input::Pattern { n, .. } | Input::Projection { n, .. } => *n,
     };
     let mut scene = analysis_scene(&input, settings, seed, args.normalize);
-    let asked = asked_nodes(args, is_files, matches!(sink, Sink::Keep(_)));
+    let asked = asked_nodes(args, is_points, matches!(sink, Sink::Keep(_)));
     let mut plan = graph::plan_asking(&scene, &asked);
     let mut estimates = cost::estimate_plan(&scene, &plan);
+    if let Input::Projection {
+        pattern, n, dims, ..
+    } = &input
+    {
+        // The d-dimensional points the projection is taken from.
+        estimates.insert(0, budget::pattern_cube(pattern, *n, *dims));
+    }
     let m = args.size;
     if args.spectrum.is_some() {
         // The spectrum figure's PNG, at its base size.
@@ -772,6 +875,24 @@ pub fn analyze_2d(
             });
             plan = graph::plan_asking(&scene, &asked);
         }
+    }
+    if let Input::Projection {
+        pattern,
+        n,
+        dims,
+        pair,
+    } = &input
+    {
+        let cube = pattern.generate_cube(*n, *dims, seed, cancel)?;
+        let points = cube
+            .project(pair.0, pair.1)
+            .map_err(|e| CliError::Usage(format!("--project {e}")))?;
+        scene.columns[0].points = Some(ImportedPoints {
+            points: points.iter().map(|p| [p.x, p.y]).collect(),
+            source: Input::projection_label(pattern, *dims, *pair),
+            ..Default::default()
+        });
+        plan = graph::plan_asking(&scene, &asked);
     }
     let generated_ms = t0.elapsed().as_secs_f64() * 1e3;
     let results = evaluate(&scene, plan, cancel)?;
@@ -834,7 +955,7 @@ pub fn analyze_2d(
     if let Some(path) = &args.spectrum {
         outputs.push((
             path,
-            spectrum_figure(&scene, &results, &spectrum, averaged, cancel)?,
+            spectrum_figure(&scene, &results, &spectrum, averaged, &input, cancel)?,
         ));
     }
     if let Some(path) = &args.spectrum_data {
@@ -892,8 +1013,8 @@ pub fn analyze_2d(
             kept.rdf = Some(rows);
         }
     }
-    // For point files: the (0,k,2)-net check of every power-of-two prefix.
-    let nets: Vec<metrics::NetPrefixes> = if is_files {
+    // For point files and projections: the (0,k,2)-net check of every power-of-two prefix.
+    let nets: Vec<metrics::NetPrefixes> = if is_points {
         timings.push((
             "net prefixes".into(),
             wall_ms(&results, NodeKind::NetPrefixes),

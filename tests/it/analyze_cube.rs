@@ -113,3 +113,149 @@ fn bad_input_is_refused_with_one_line_naming_the_field() {
     assert_eq!(code, 2);
     assert!(err.contains("--raps"), "{err}");
 }
+
+/// `v` without its timings (the only numbers that differ between two runs).
+fn without_timings(mut v: serde_json::Value) -> serde_json::Value {
+    v.as_object_mut().unwrap().remove("timings_ms");
+    v
+}
+
+#[test]
+fn a_pattern_s_projection_is_the_2d_point_set_its_file_is() {
+    let dir = std::env::temp_dir().join(format!("samplescope-project-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = |name: &str| dir.join(name).to_string_lossy().into_owned();
+    for (settings, seed) in [(vec![], None), (vec!["--set", "scramble=owen"], Some("3"))] {
+        let mut common: Vec<&str> = vec!["-n", "1024", "--dims", "8", "--project", "3,5"];
+        common.extend(&settings);
+        if let Some(s) = seed {
+            common.extend(["--seed", s]);
+        }
+        // The projection written by `points`, then analysed as a file.
+        let csv = file("proj.csv");
+        let mut points_args = vec!["points", "sobol"];
+        points_args.extend(&common);
+        points_args.extend(["--out", &csv]);
+        let o = Command::new(env!("CARGO_BIN_EXE_samplescope"))
+            .args(&points_args)
+            .output()
+            .unwrap();
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        let (raps_p, rdf_p, raps_f, rdf_f) = (
+            file("raps-p.csv"),
+            file("rdf-p.csv"),
+            file("raps-f.csv"),
+            file("rdf-f.csv"),
+        );
+        let mut from_pattern = vec!["sobol"];
+        from_pattern.extend(&common);
+        from_pattern.extend(["--json", "--raps", &raps_p, "--rdf", &rdf_p]);
+        let (code, out_p, err) = analyze(&from_pattern);
+        assert_eq!(code, 0, "{err}");
+        let (code, out_f, err) = analyze(&[
+            "--points", &csv, "--json", "--raps", &raps_f, "--rdf", &rdf_f,
+        ]);
+        assert_eq!(code, 0, "{err}");
+        let p: serde_json::Value = serde_json::from_str(&out_p).unwrap();
+        let f: serde_json::Value = serde_json::from_str(&out_f).unwrap();
+        // Every statistic (discrepancies, t-value, distances, PSA's, the prefixes' nets, the
+        // spectrum's accuracy) is the file's, bit for bit; so are the RAPS and the RDF.
+        assert_eq!(
+            without_timings(p.clone()),
+            without_timings(f),
+            "{settings:?}"
+        );
+        for key in [
+            "t_value",
+            "l2_star_discrepancy",
+            "effective_nyquist",
+            "net_prefixes",
+        ] {
+            assert!(!p[key].is_null(), "{key}: {out_p}");
+        }
+        assert_eq!(
+            std::fs::read(&raps_p).unwrap(),
+            std::fs::read(&raps_f).unwrap()
+        );
+        assert_eq!(
+            std::fs::read(&rdf_p).unwrap(),
+            std::fs::read(&rdf_f).unwrap()
+        );
+    }
+    // The text form and the spectrum figure (its metadata names the pattern and the pair).
+    let png = file("spectrum.png");
+    let (code, out, err) = analyze(&[
+        "halton",
+        "-n",
+        "256",
+        "--dims",
+        "5",
+        "--project",
+        "4,1",
+        "--size",
+        "64",
+        "--spectrum",
+        &png,
+    ]);
+    assert_eq!(code, 0, "{err}");
+    assert!(out.contains("t-value (base 2)"), "{out}");
+    let bytes = std::fs::read(&png).unwrap();
+    assert_eq!(&bytes[1..4], b"PNG");
+    let text = String::from_utf8_lossy(&bytes);
+    assert!(
+        text.contains("dims=5 project=4,1"),
+        "the figure's metadata names the pair"
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn a_pattern_s_bad_projection_is_refused_with_one_line() {
+    let cases: [(&[&str], &str); 7] = [
+        (
+            &["sobol", "-n", "64", "--dims", "8", "--project", "3,3"],
+            "--project 3,3: must be two different dimensions i,j in 0..=7 (dims = 8)",
+        ),
+        (
+            &["sobol", "-n", "64", "--dims", "8", "--project", "0,8"],
+            "--project 0,8: must be two different dimensions i,j in 0..=7 (dims = 8)",
+        ),
+        (
+            &["sobol", "-n", "64", "--project", "0,2"],
+            "--project 0,2: must be two different dimensions i,j in 0..=1 (dims = 2)",
+        ),
+        (
+            &["sobol", "-n", "64", "--dims", "8"],
+            "--dims 8: analyze takes a pattern's 2D projection: add --project i,j",
+        ),
+        (
+            &["jitter", "-n", "64", "--dims", "3", "--project", "0,1"],
+            "jitter is defined in 2 dimensions only",
+        ),
+        (
+            &["sobol", "-n", "64", "--dims", "2000", "--project", "0,1"],
+            "must be an integer in 1..=1024",
+        ),
+        (
+            &[
+                "random",
+                "-n",
+                "64",
+                "--dims",
+                "3",
+                "--project",
+                "0,1",
+                "--realizations",
+                "2",
+            ],
+            "--realizations = 2: must be 1 with --project",
+        ),
+    ];
+    for (args, want) in cases {
+        let (code, out, err) = analyze(args);
+        assert_eq!(code, 2, "{args:?}: {err}");
+        assert!(out.is_empty(), "{args:?}");
+        assert_eq!(err.trim().lines().count(), 1, "{args:?}: {err}");
+        assert!(err.contains(want), "{args:?}: {err}");
+    }
+}
