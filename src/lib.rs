@@ -19,7 +19,11 @@
 //!
 //! - **Domain.** Points live in the unit square [0,1)², stored as `f64` ([`glam::DVec2`]).
 //!   Distances and spectra are toroidal (periodic) unless a function says otherwise. `f32` is
-//!   used only for display textures.
+//!   used only for display textures. Point sets in d dimensions are [`core::cube::CubePoints`]
+//!   (row-major coordinates in [0,1)^d, D ≤ 1024) from `Pattern::generate_cube` or a point file
+//!   of D columns ([`core::pointset::read_cube_named`]), measured by [`core::metrics::cube`];
+//!   any two dimensions project to a 2D point set that every 2D analysis takes. D = 2 is always
+//!   the 2D path, bit for bit.
 //! - **Clamping.** Every value meant to lie in [0,1) is clamped to at most `1 − 2⁻⁵³`
 //!   ([`core::pattern::ONE_MINUS_EPSILON`]), so it can never round to 1.0.
 //! - **Determinism.** Every randomized generator takes an explicit `seed: u64`; the same
