@@ -884,12 +884,18 @@ fn phi_d_and_alpha_match_an_independent_bisection_and_the_published_values() {
         // phi in f64 within 2 ulps (Newton in f64 ends within one or two roundings of the root).
         let want: f64 = text.parse().unwrap();
         let f = phi(d);
-        assert!((f - want).abs() <= 2.0 * ulp(want), "φ_{d} = {f:e}, published {text}");
+        assert!(
+            (f - want).abs() <= 2.0 * ulp(want),
+            "φ_{d} = {f:e}, published {text}"
+        );
         // The bisection within 3 units of 2^−62 of the published digits (19 of them: 10⁻¹⁹).
         let frac: u128 = text[2..21].parse().unwrap();
         let fixed = (1u128 << 62) + (frac << 62) / 10u128.pow(19);
         let b = phi_bisection(d) as u128;
-        assert!(b.abs_diff(fixed) <= 3, "bisection φ_{d}: {b} vs {fixed} (2^-62 units)");
+        assert!(
+            b.abs_diff(fixed) <= 3,
+            "bisection φ_{d}: {b} vs {fixed} (2^-62 units)"
+        );
     }
     for d in DIMS.into_iter().chain([4, 16, 100, 1024]) {
         let reference = phi_bisection(d);
