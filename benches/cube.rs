@@ -2,15 +2,24 @@
 //! - Sobol' 2²⁰ points × 32 dimensions: Gray-code stepping (one XOR per coordinate, parallel
 //!   chunks) vs every point from its index through the 32 columns of the generator matrices;
 //! - Halton 2¹⁶ points × 32 dimensions: the incremental exact radical inverses (parallel
-//!   chunks) vs one `radical_inverse` per coordinate (digit extraction by division).
+//!   chunks) vs one `radical_inverse` per coordinate (digit extraction by division);
+//! - the projection table of 4096 points × 32 dimensions (496 pairs: t-value, L2-star,
+//!   minimum distance each): `projection_table` (pairs in parallel, the fast 2D statistics) vs
+//!   `projection_table_naive` (pairs in turn, the O(N²) 2D references), the rows checked equal;
+//! - the rates of `metrics::cube::cost`: each d-dimensional measure timed on one thread at
+//!   N = 4096 and D = 4 and 32, the rates solved from the two and printed beside the constants.
 //!
 //! The fast paths are timed on one thread and on all threads (rayon), the references on one.
 //!
 //! Run: `cargo bench --bench cube -- --warm-up-time 1 --measurement-time 3`.
-use criterion::{black_box, criterion_group, criterion_main, Criterion};
+use criterion::{black_box, Criterion};
+use samplescope::core::budget;
 use samplescope::core::cancel::Cancel;
+use samplescope::core::cube::CubePoints;
+use samplescope::core::metrics::cube::{self as measures, CubeMeasure};
 use samplescope::core::pattern::cube::{halton, sobol};
 use samplescope::core::pattern::Pattern;
+use samplescope::core::progress::no_progress;
 use std::time::Instant;
 
 const SOBOL_N: usize = 1 << 20;
@@ -32,7 +41,7 @@ fn one_thread<T: Send>(f: impl FnOnce() -> T + Send) -> T {
 }
 
 /// Median wall time of `reps` runs, in milliseconds.
-fn median_ms(reps: usize, f: impl Fn() -> Vec<f64>) -> f64 {
+fn median_ms<T>(reps: usize, f: impl Fn() -> T) -> f64 {
     let mut t: Vec<f64> = (0..reps)
         .map(|_| {
             let start = Instant::now();
@@ -73,6 +82,7 @@ fn bench(c: &mut Criterion) {
             median_ms(9, || fast("halton", HALTON_N)),
             median_ms(5, || halton::halton_naive(0, HALTON_N, DIMS)),
         ),
+        pair_table(c),
     ];
     println!(
         "\n{:<20} {:>12} {:>12} {:>12} {:>10} {:>10}",
@@ -87,5 +97,111 @@ fn bench(c: &mut Criterion) {
     }
 }
 
-criterion_group!(benches, bench);
-criterion_main!(benches);
+/// Points of the pair table and the rates: unscrambled Sobol' (t-values defined, N = 2^12).
+fn sobol_points(n: usize, dims: usize) -> CubePoints {
+    Pattern::from_name("sobol")
+        .expect("sobol")
+        .generate_cube(n, dims, 0, &Cancel::never())
+        .expect("valid")
+}
+
+const TABLE_N: usize = 4096;
+
+/// The pair table at N = 4096, D = 32: fast on one and all threads, the naive reference once
+/// (it takes tens of seconds), the rows checked equal.
+fn pair_table(c: &mut Criterion) -> (&'static str, f64, f64, f64) {
+    let pts = sobol_points(TABLE_N, DIMS);
+    let never = Cancel::never();
+    let fast = || measures::projection_table(&pts, &never, &mut no_progress).expect("table");
+    let mut g = c.benchmark_group("pair_table_4096x32");
+    g.sample_size(10);
+    g.bench_function("fast", |b| b.iter(|| black_box(fast())));
+    g.finish();
+    let one = median_ms(5, || one_thread(fast));
+    let all = median_ms(5, fast);
+    let start = Instant::now();
+    let naive = measures::projection_table_naive(&pts, &never).expect("naive table");
+    let naive_ms = start.elapsed().as_secs_f64() * 1e3;
+    assert_eq!(fast(), naive, "the fast table is the naive one");
+    let est = budget::cube_measure(CubeMeasure::Projections, TABLE_N, DIMS);
+    println!(
+        "pair table 4096 x 32: {} pairs, estimate {:.3} s (2 cores), fast {all:.0} ms, naive {naive_ms:.0} ms",
+        DIMS * (DIMS - 1) / 2,
+        est.seconds
+    );
+    ("pair table 4096x32", one, all, naive_ms)
+}
+
+/// The CPU ns per unit of each measure of `metrics::cube::cost`, timed on one thread (so wall
+/// time is CPU time): the discrepancies and the minimum distance at D = 4 and D = 32 (their
+/// per-pair and per-dimension parts solved from the two), the stratification per coordinate,
+/// the projection table against its estimate from the 2D rates.
+fn rates() {
+    let never = Cancel::never();
+    let n = TABLE_N;
+    let nf = n as f64;
+    let (d1, d2) = (4usize, 32usize);
+    let (p1, p2) = (sobol_points(n, d1), sobol_points(n, d2));
+    // Median ns of one thread.
+    let time = |f: &(dyn Fn() + Sync)| one_thread(|| median_ms(5, f)) * 1e6;
+    // Discrepancies: 5 · N(N+1)/2 pairs · (d · factor + pair).
+    let pairs = 5.0 * nf * (nf + 1.0) / 2.0;
+    let disc = |p: &CubePoints| {
+        time(&|| {
+            black_box(measures::discrepancies(p, &never, &mut no_progress).expect("ok"));
+        }) / pairs
+    };
+    let (y1, y2) = (disc(&p1), disc(&p2));
+    let factor = (y2 - y1) / (d2 - d1) as f64;
+    let pair = y1 - d1 as f64 * factor;
+    println!(
+        "discrepancies: {y1:.2} ns per pair at D = {d1}, {y2:.2} at D = {d2}: factor {factor:.3} ns, pair {pair:.3} ns"
+    );
+    // Minimum distance: N(N−1)/2 pairs · (pair + d · dim).
+    let pairs = nf * (nf - 1.0) / 2.0;
+    let dist = |p: &CubePoints| {
+        time(&|| {
+            black_box(measures::min_distance_cube(p, &never, &mut no_progress).expect("ok"));
+        }) / pairs
+    };
+    let (y1, y2) = (dist(&p1), dist(&p2));
+    let dim = (y2 - y1) / (d2 - d1) as f64;
+    let pair = y1 - d1 as f64 * dim;
+    println!(
+        "min distance: {y1:.2} ns per pair at D = {d1}, {y2:.2} at D = {d2}: pair {pair:.3} ns, dim {dim:.3} ns"
+    );
+    // Stratification: N · d coordinates.
+    let per = time(&|| {
+        black_box(measures::stratification(&p2, &never).expect("ok"));
+    }) / (nf * d2 as f64);
+    println!("stratification: {per:.2} ns per coordinate (D = {d2})");
+    // Projections: measured against the estimate's CPU time (2 cores × its seconds).
+    let measured = time(&|| {
+        black_box(measures::projection_table(&p2, &never, &mut no_progress).expect("ok"));
+    }) * 1e-9;
+    for (what, m) in [
+        (CubeMeasure::Discrepancies, None),
+        (CubeMeasure::MinDistance, None),
+        (CubeMeasure::Stratification, None),
+        (CubeMeasure::Projections, Some(measured)),
+    ] {
+        let e = budget::cube_measure(what, n, d2);
+        match m {
+            Some(m) => println!(
+                "{}: estimate {:.3} s on {} cores, measured {m:.3} s on one thread ({:.2}× the estimate's CPU)",
+                e.operation,
+                e.seconds,
+                budget::REFERENCE_CORES,
+                m / (e.seconds * budget::REFERENCE_CORES)
+            ),
+            None => println!("{}: estimate {:.3} s", e.operation, e.seconds),
+        }
+    }
+}
+
+fn main() {
+    let mut c = Criterion::default().configure_from_args();
+    bench(&mut c);
+    rates();
+    c.final_summary();
+}
