@@ -20,6 +20,10 @@ struct Cli {
     /// rejecting points outside.
     #[arg(long, global = false, requires = "points")]
     normalize: bool,
+    /// Start the GUI in lecture mode (light theme, large text, pictures filling the window)
+    /// with the controls hidden (F9 shows them), full screen where the window system allows.
+    #[arg(long, global = false)]
+    lecture: bool,
     #[command(flatten)]
     budget: cli::session::BudgetArgs,
     #[command(subcommand)]
@@ -84,18 +88,19 @@ fn main() -> ExitCode {
             };
         }
     };
-    // --scene and --points open the GUI: with a subcommand they would have no effect.
+    // --scene, --points and --lecture open the GUI: with a subcommand they would have no effect.
     if let (Some(_), Some(flag)) = (
         &cli.command,
         [
             (cli.scene.is_some(), "--scene"),
             (cli.points.is_some(), "--points"),
+            (cli.lecture, "--lecture"),
         ]
         .into_iter()
         .find_map(|(given, flag)| given.then_some(flag)),
     ) {
         eprintln!(
-            "error: {flag} before a subcommand opens the GUI's column, so with a subcommand it \
+            "error: {flag} is an option of the GUI (no subcommand), so with a subcommand it \
              would have no effect (give `render SCENE.ron` or `analyze --points FILE` instead)"
         );
         return ExitCode::from(2);
@@ -111,7 +116,7 @@ fn main() -> ExitCode {
         Some(Command::Recon(args)) => cli::recon::run(&args, &session),
         Some(Command::Render(args)) => cli::render::run(&args, &session),
         Some(Command::Converge(args)) => cli::converge::run(&args, &session),
-        None => cli::gui::run(cli.scene, cli.points, cli.normalize),
+        None => cli::gui::run(cli.scene, cli.points, cli.normalize, cli.lecture),
     };
     // Results are line-buffered: a failure of the last flush is a failed write too.
     let result = result.and_then(|()| {

@@ -7,16 +7,21 @@ use super::CliError;
 use std::path::PathBuf;
 
 /// Opens the window on `scene` (or the default scene) with `points` (and `--normalize`) in
-/// column 1, after checking them.
+/// column 1, after checking them; `lecture`: in lecture mode with the controls hidden.
 #[cfg(feature = "gui")]
 pub fn run(
     scene: Option<PathBuf>,
     points: Option<PathBuf>,
     normalize: bool,
+    lecture: bool,
 ) -> Result<(), CliError> {
     check_inputs(scene.as_deref(), points.as_deref(), normalize)?;
-    samplescope::ui::run_gui_with_points(scene, points.map(|p| (p, normalize)))
-        .map_err(CliError::Gui)
+    samplescope::ui::run(samplescope::ui::Start {
+        scene,
+        points: points.map(|p| (p, normalize)),
+        lecture,
+    })
+    .map_err(CliError::Gui)
 }
 
 /// Without the `gui` feature there is no window: one line, bad input (status 2).
@@ -25,8 +30,9 @@ pub fn run(
     scene: Option<PathBuf>,
     points: Option<PathBuf>,
     normalize: bool,
+    lecture: bool,
 ) -> Result<(), CliError> {
-    let _ = (scene, points, normalize);
+    let _ = (scene, points, normalize, lecture);
     Err(CliError::Usage(
         "this build of samplescope has no GUI (built without the cargo feature `gui`): give a \
          subcommand (see --help)"

@@ -6,7 +6,7 @@ use super::dropped::{self, PointImport};
 use super::figures::{self, FigureRequests};
 use super::gpu;
 use super::lecture;
-use super::panels::{Panel, PanelCx};
+use super::panels::{Cell, Panel, PanelCx, Picture};
 use super::playback::Playback;
 use super::results::{ColumnResults, CompleteResults, Shown};
 use super::view::{ViewState, LECTURE_SCALE_RANGE};
@@ -68,7 +68,61 @@ pub struct SamplescopeApp {
     figures: FigureRequests,
     /// Renders and writes requested figures off the UI thread.
     pub saver: figures::Saver,
+    /// The pictures the column panels drew in the last frame.
+    pictures: Vec<Picture>,
+    /// What the window still has to do once shown: fit the monitor, go full screen.
+    window_start: WindowStart,
 }
+
+/// The window's first moves, made once it is shown (window systems ignore them for a hidden
+/// window) and the monitor is known.
+#[derive(Debug, Clone, Copy, Default)]
+struct WindowStart {
+    /// A first run (no window state stored): where the window system has not maximized the
+    /// window, give it the monitor's size.
+    fit_monitor: bool,
+    /// `--lecture`: full screen.
+    fullscreen: bool,
+    /// When the app was made.
+    since: Option<Instant>,
+}
+
+impl WindowStart {
+    /// How long after start the window's state is read (a window manager maximizes it once
+    /// it is mapped).
+    const SETTLE: Duration = Duration::from_millis(300);
+
+    /// Sends the pending moves once the window has settled and the monitor is known.
+    fn apply(&mut self, ctx: &egui::Context) {
+        if !self.fit_monitor && !self.fullscreen {
+            return;
+        }
+        let since = *self.since.get_or_insert_with(Instant::now);
+        let (monitor, maximized, fullscreen) = ctx.input(|i| {
+            let v = i.viewport();
+            (v.monitor_size, v.maximized, v.fullscreen)
+        });
+        if since.elapsed() < Self::SETTLE {
+            ctx.request_repaint_after(Self::SETTLE);
+            return;
+        }
+        if self.fullscreen {
+            ctx.send_viewport_cmd(egui::ViewportCommand::Fullscreen(true));
+            self.fullscreen = false;
+        }
+        if self.fit_monitor {
+            if let Some(size) = monitor.filter(|s| s.x > 0.0 && s.y > 0.0) {
+                if maximized != Some(true) && fullscreen != Some(true) {
+                    ctx.send_viewport_cmd(egui::ViewportCommand::InnerSize(size));
+                }
+                self.fit_monitor = false;
+            }
+        }
+    }
+}
+
+/// The controls' first width on screen, in pixels at one pixel per point.
+const CONTROLS_WIDTH: f32 = 300.0;
 
 /// Keys under which eframe persists the window's state.
 const STORAGE_SCENE: &str = "samplescope.scene";
@@ -125,6 +179,12 @@ impl SamplescopeApp {
             applied_style: None,
             figures: FigureRequests::default(),
             saver: figures::Saver::default(),
+            pictures: Vec::new(),
+            window_start: WindowStart {
+                // eframe stores the window's size and state under "window" (persist_window).
+                fit_monitor: cc.storage.is_some_and(|s| s.get_string("window").is_none()),
+                ..WindowStart::default()
+            },
         };
         if let Some(storage) = cc.storage {
             if scene_path.is_none() {
@@ -168,6 +228,14 @@ impl SamplescopeApp {
         self.playback.reset();
     }
 
+    /// Lecture mode with the controls hidden, and the window full screen once shown
+    /// (`samplescope --lecture`).
+    pub fn start_lecture(&mut self) {
+        self.view.lecture = true;
+        self.view.controls_hidden = true;
+        self.window_start.fullscreen = true;
+    }
+
     /// Adds a column (a copy of the last one with the next seed).
     pub fn add_column(&mut self) {
         columns::add_column(&mut self.scene);
@@ -190,6 +258,12 @@ impl SamplescopeApp {
     /// Each column's screen rectangle in the last frame, in column order.
     pub fn column_rects(&self) -> &[egui::Rect] {
         self.columns.rects()
+    }
+
+    /// Each column panel's cell in the last frame (the width the grid gave it, the rectangle
+    /// it took).
+    pub fn panel_cells(&self) -> &[columns::DrawnCell] {
+        self.columns.cells()
     }
 
     /// The frame of a scene with motion that is shown (0 for a still scene).
@@ -312,8 +386,43 @@ impl SamplescopeApp {
         }
     }
 
+    /// The tool bar, the scene's title and notes, the playback and the messages; with the
+    /// controls hidden only the title line (with "Show controls") and what follows it, so that
+    /// the pictures get the height.
     fn top_bar(&mut self, ui: &mut egui::Ui) {
-        ui.horizontal_wrapped(|ui| {
+        if self.view.controls_hidden {
+            ui.horizontal_wrapped(|ui| {
+                ui.label(egui::RichText::new(&self.scene.title).strong());
+                if ui.button("Show controls").on_hover_text("F9").clicked() {
+                    self.view.controls_hidden = false;
+                }
+                if !self.engine.is_idle() {
+                    ui.spinner();
+                }
+            });
+        } else {
+            self.tool_bar(ui);
+            ui.label(egui::RichText::new(&self.scene.title).strong());
+        }
+        self.top_messages(ui);
+    }
+
+    /// The tool bar: scenes, columns, lecture mode, figures and the frame time. In lecture
+    /// mode one row that scrolls sideways, so that its larger text costs the pictures no more
+    /// than one row's height; else rows wrapped to the window.
+    fn tool_bar(&mut self, ui: &mut egui::Ui) {
+        if self.view.lecture {
+            egui::ScrollArea::horizontal()
+                .id_salt("samplescope-tool-bar")
+                .show(ui, |ui| ui.horizontal(|ui| self.tool_bar_items(ui)));
+        } else {
+            ui.horizontal_wrapped(|ui| self.tool_bar_items(ui));
+        }
+    }
+
+    /// The tool bar's widgets, in order.
+    fn tool_bar_items(&mut self, ui: &mut egui::Ui) {
+        {
             ui.heading("samplescope");
             ui.separator();
             let mut chosen = None;
@@ -374,8 +483,11 @@ impl SamplescopeApp {
             if !self.engine.is_idle() {
                 ui.spinner();
             }
-        });
-        ui.label(egui::RichText::new(&self.scene.title).strong());
+        }
+    }
+
+    /// The scene's notes, the playback and the messages under the title.
+    fn top_messages(&mut self, ui: &mut egui::Ui) {
         if !self.scene.notes.is_empty() {
             ui.label(&self.scene.notes);
         }
@@ -410,7 +522,7 @@ impl SamplescopeApp {
     }
 
     /// The panels: the docked ones (cost, integration, theorem) below, the columns in the middle
-    /// (letterboxed to 16:9 in lecture mode), each drawn from one context lent for the frame.
+    /// taking the rest of the window, each drawn from one context lent for the frame.
     fn panels_ui(&mut self, ui: &mut egui::Ui) {
         let SamplescopeApp {
             scene,
@@ -421,6 +533,7 @@ impl SamplescopeApp {
             columns,
             docks,
             figures,
+            pictures,
             ..
         } = self;
         let mut cx = PanelCx {
@@ -431,7 +544,7 @@ impl SamplescopeApp {
             images,
             figures,
             evaluator: engine.evaluator(),
-            side: 0.0,
+            cell: Cell::default(),
         };
         for dock in docks {
             if dock.is_shown(&cx.scene.panels) {
@@ -442,16 +555,19 @@ impl SamplescopeApp {
                     .show(ui, |ui| dock.ui(ui, &mut cx));
             }
         }
-        egui::CentralPanel::default().show(ui, |ui| {
-            if cx.view.lecture {
-                // Panels sized for a 16:9 projector frame, centred.
-                let frame = lecture::letterbox_16_9(ui.available_rect_before_wrap());
-                let mut child = ui.new_child(egui::UiBuilder::new().max_rect(frame));
-                columns.ui(&mut child, &mut cx);
-            } else {
-                columns.ui(ui, &mut cx);
-            }
-        });
+        // The margin keeps its size on screen in lecture mode (the zoom enlarges text, not
+        // the space around the pictures).
+        let margin = lecture::unzoomed_margin(ui.ctx(), 8);
+        egui::CentralPanel::default()
+            .frame(egui::Frame::central_panel(ui.style()).inner_margin(margin))
+            .show(ui, |ui| columns.ui(ui, &mut cx));
+        *pictures = std::mem::take(&mut cx.cell.pictures);
+    }
+
+    /// The pictures (images and plots) the column panels drew in the last frame, with their
+    /// screen rectangles in points: what the layout rule's tests measure.
+    pub fn pictures(&self) -> &[Picture] {
+        &self.pictures
     }
 
     /// What the figure writer needs: the scene, its name, every column's data and the
@@ -507,7 +623,7 @@ impl SamplescopeApp {
     /// Lecture mode, its scale, and the controls and full-screen toggles.
     fn presentation_ui(&mut self, ui: &mut egui::Ui) {
         ui.checkbox(&mut self.view.lecture, "Lecture mode")
-            .on_hover_text("Light projector theme, large fonts, panels sized for 16:9 (F5)");
+            .on_hover_text("Light projector theme, large text, pictures never smaller (F5)");
         if self.view.lecture {
             let mut scale = lecture::clamp_scale(self.view.lecture_scale);
             // Applied when the drag ends: changing the zoom mid-drag would move the slider
@@ -664,15 +780,27 @@ impl eframe::App for SamplescopeApp {
         }
         self.last_frame = Some(now);
         let ctx = ui.ctx().clone();
+        self.window_start.apply(&ctx);
         self.shortcuts(&ctx);
         lecture::apply_style(&ctx, &self.view, &mut self.applied_style);
         egui::Panel::top("samplescope-top").show(ui, |ui| self.top_bar(ui));
         if !self.view.controls_hidden {
-            egui::Panel::left("samplescope-controls")
+            // The controls keep their width on screen in lecture mode (their larger text wraps
+            // or scrolls), so that the pictures keep theirs: a panel of its own, sized in the
+            // zoomed points.
+            let (id, zoom) = if self.view.lecture {
+                (
+                    "samplescope-controls-lecture",
+                    lecture::clamp_scale(self.view.lecture_scale),
+                )
+            } else {
+                ("samplescope-controls", 1.0)
+            };
+            egui::Panel::left(id)
                 .resizable(true)
-                .default_size(300.0)
+                .default_size(CONTROLS_WIDTH / zoom)
                 .show(ui, |ui| {
-                    egui::ScrollArea::vertical().show(ui, |ui| self.controls(ui));
+                    egui::ScrollArea::both().show(ui, |ui| self.controls(ui));
                 });
         }
         self.playback

@@ -2,14 +2,17 @@
 //!
 //! - a light theme with strong contrast (black text, thick strokes, no faint greys), because
 //!   projectors wash out dark themes and thin lines;
-//! - everything zoomed by one factor (fonts, widgets, plots), set by a slider;
-//! - the content letterboxed to 16:9 so the panels fill a projector frame;
-//! - the controls can be hidden (F9) and the window made full screen (F11).
+//! - the text zoomed by one factor (fonts, widgets, plot labels), set by a slider, while the
+//!   pictures keep at least the size they have in normal mode: the margins and gaps around
+//!   them keep their size on screen, the controls their width, and the column grid never
+//!   makes an image smaller than normal-sized text would (`ui::columns`);
+//! - the controls can be hidden (F9) and the window made full screen (F11);
+//!   `samplescope --lecture` starts that way.
 //!
 //! Only presentation changes: the scene, and so the compute graph, is the same in both modes.
 
 use super::view::{ViewState, LECTURE_SCALE_DEFAULT, LECTURE_SCALE_RANGE};
-use eframe::egui::{self, Color32, Rect, Stroke, Theme, Vec2};
+use eframe::egui::{self, Color32, Stroke, Theme};
 
 /// The style last applied to the context, so that it is set only when it changes.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -75,48 +78,15 @@ pub fn clamp_scale(scale: f32) -> f32 {
     scale.clamp(*LECTURE_SCALE_RANGE.start(), *LECTURE_SCALE_RANGE.end())
 }
 
-/// The largest rectangle of aspect 16:9 in `rect`, centred horizontally and at the top (so the
-/// panels stay under the top bar rather than floating mid-screen).
-pub fn letterbox_16_9(rect: Rect) -> Rect {
-    const ASPECT: f32 = 16.0 / 9.0;
-    let (w, h) = (rect.width().max(0.0), rect.height().max(0.0));
-    let size = if w > h * ASPECT {
-        Vec2::new(h * ASPECT, h)
-    } else {
-        Vec2::new(w, w / ASPECT)
-    };
-    Rect::from_min_size(
-        egui::Pos2::new(rect.center().x - size.x / 2.0, rect.top()),
-        size,
-    )
+/// `px` screen pixels (at one pixel per point) in points at the context's zoom, rounded down:
+/// a margin that keeps its size on screen when lecture mode zooms the text.
+pub fn unzoomed_margin(ctx: &egui::Context, px: i8) -> i8 {
+    (f32::from(px) / ctx.zoom_factor().max(1.0)).floor() as i8
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use eframe::egui::Pos2;
-
-    #[test]
-    fn letterbox_keeps_16_9_and_stays_inside() {
-        for (w, h) in [
-            (1600.0, 1000.0),
-            (1000.0, 1600.0),
-            (1920.0, 1080.0),
-            (0.0, 10.0),
-        ] {
-            let outer = Rect::from_min_size(Pos2::new(10.0, 20.0), Vec2::new(w, h));
-            let r = letterbox_16_9(outer);
-            assert!(outer.expand(1e-3).contains_rect(r), "{r:?} in {outer:?}");
-            if r.height() > 0.0 {
-                assert!((r.width() / r.height() - 16.0 / 9.0).abs() < 1e-4);
-            }
-            // One side touches the outer rectangle: it is the largest such box.
-            assert!(
-                (r.width() - outer.width()).abs() < 1e-3
-                    || (r.height() - outer.height()).abs() < 1e-3
-            );
-        }
-    }
 
     #[test]
     fn scale_is_limited_to_its_range() {

@@ -12,7 +12,7 @@
 //! dropped, playback    components owning their state: point import, motion playback
 //! columns              the panel of each row of the panel table (make), the column grid
 //!                      (the column panels, each column's rectangle), add_column
-//! lecture              lecture-mode style and letterbox
+//! lecture              lecture-mode style
 //! panels/<name>        one panel each: a struct implementing panels::Panel, reading a PanelCx
 //! panels (mod.rs)      the Panel trait and PanelCx
 //! widgets/             image view (texture cache), parameter editors, status labels
@@ -43,17 +43,41 @@ pub use app::SamplescopeApp;
 /// Window title.
 pub const APP_NAME: &str = "samplescope";
 
-/// Opens the GUI window (blocking until it closes).
-pub fn run_gui(scene_path: Option<std::path::PathBuf>) -> Result<(), String> {
-    run_gui_with_points(scene_path, None)
+/// The window's size on a first run where the monitor's is not known (later runs open at the
+/// size and state of the last, which eframe stores with the app's state).
+pub const FIRST_WINDOW_SIZE: [f32; 2] = [1600.0, 1000.0];
+
+/// How the window starts: the scene, a point file for column 1, lecture mode.
+#[derive(Debug, Clone, Default)]
+pub struct Start {
+    /// The scene file to open (else the last scene, else the default one).
+    pub scene: Option<std::path::PathBuf>,
+    /// A point file shown in column 1: (file, normalise to the bounding box).
+    pub points: Option<(std::path::PathBuf, bool)>,
+    /// Start in lecture mode with the controls hidden, full screen where the window system
+    /// allows (`--lecture`).
+    pub lecture: bool,
 }
 
-/// Opens the GUI window with column 1 showing the points of a file: `points` = (file,
-/// normalise to the bounding box). A file that cannot be used is reported in the window.
-pub fn run_gui_with_points(
-    scene_path: Option<std::path::PathBuf>,
-    points: Option<(std::path::PathBuf, bool)>,
-) -> Result<(), String> {
+/// Opens the GUI window (blocking until it closes).
+pub fn run_gui(scene_path: Option<std::path::PathBuf>) -> Result<(), String> {
+    run(Start {
+        scene: scene_path,
+        ..Start::default()
+    })
+}
+
+/// Opens the GUI window as `start` says. A point file that cannot be used is reported in the
+/// window. The window opens maximized on a first run (and at the monitor's size where the
+/// window system does not maximize, [`SamplescopeApp::new`]); later runs restore the last
+/// size and state, stored by eframe with the app's state (on Linux
+/// `$XDG_DATA_HOME/samplescope/app.ron`, by default `~/.local/share/samplescope/app.ron`).
+pub fn run(start: Start) -> Result<(), String> {
+    let Start {
+        scene: scene_path,
+        points,
+        lecture,
+    } = start;
     if cfg!(target_os = "linux")
         && ["DISPLAY", "WAYLAND_DISPLAY", "WAYLAND_SOCKET"]
             .iter()
@@ -63,7 +87,9 @@ pub fn run_gui_with_points(
     }
     let options = eframe::NativeOptions {
         viewport: eframe::egui::ViewportBuilder::default()
-            .with_inner_size([1500.0, 950.0])
+            .with_inner_size(FIRST_WINDOW_SIZE)
+            .with_maximized(true)
+            .with_fullscreen(lecture)
             .with_title(APP_NAME)
             .with_drag_and_drop(true),
         renderer: eframe::Renderer::Wgpu,
@@ -74,6 +100,9 @@ pub fn run_gui_with_points(
         options,
         Box::new(move |cc| {
             let mut app = SamplescopeApp::new(cc, scene_path.as_deref());
+            if lecture {
+                app.start_lecture();
+            }
             if let Some((path, normalize)) = &points {
                 app.import_points(0, path, *normalize);
             }

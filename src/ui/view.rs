@@ -47,7 +47,7 @@ pub struct ViewState {
     pub elementary_k: Option<u32>,
     /// Show wall times next to the panels (off for reproducible figures and snapshots).
     pub show_timings: bool,
-    /// Lecture mode: light projector theme, large fonts, content letterboxed to 16:9.
+    /// Lecture mode: light projector theme, large text, pictures never smaller.
     pub lecture: bool,
     /// Zoom factor of everything in lecture mode (fonts, widgets, plots).
     pub lecture_scale: f32,

@@ -518,6 +518,10 @@ fn the_gui_reports_a_bad_scene_or_point_file_before_the_missing_display() {
     );
     let (code, err) = gui(&["--points", "bad.csv"]);
     assert_eq!(code, Some(2), "{err}");
+    // A bad scene is reported the same with --lecture.
+    let (code, err) = gui(&["--lecture", "--scene", "bad.ron"]);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(err.contains("bad.ron:2:"), "{err}");
     assert!(err.contains("bad.csv") && !err.contains("display"), "{err}");
     // A file that is not there is bad input (2), as for every command.
     let (code, err) = gui(&["--scene", "missing.ron"]);
@@ -526,7 +530,14 @@ fn the_gui_reports_a_bad_scene_or_point_file_before_the_missing_display() {
         err.contains("missing.ron") && !err.contains("display"),
         "{err}"
     );
-    for args in [&["--scene", "good.ron"][..], &["--points", "good.csv"], &[]] {
+    // `--lecture` parses with or without a scene; it then needs the display like any window.
+    for args in [
+        &["--scene", "good.ron"][..],
+        &["--points", "good.csv"],
+        &[],
+        &["--lecture"],
+        &["--lecture", "--scene", "good.ron"],
+    ] {
         let (code, err) = gui(args);
         assert_eq!(code, Some(1), "{args:?}: {err}");
         assert!(err.contains("no display"), "{args:?}: {err}");

@@ -26,6 +26,7 @@ mod fuzz;
 mod import;
 mod integration_study;
 mod interop;
+mod layout;
 mod metrics_common;
 mod metrics_l2;
 mod metrics_min_distance;

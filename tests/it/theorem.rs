@@ -816,7 +816,7 @@ fn panel_controls_edit_the_settings_and_show_both_errors() {
                     images: &mut s.images,
                     figures: &mut s.figures,
                     evaluator: &s.evaluator,
-                    side: 0.0,
+                    cell: Default::default(),
                 };
                 s.panel.ui(ui, &mut cx);
             },

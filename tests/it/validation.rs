@@ -686,6 +686,10 @@ fn options_that_would_have_no_effect_are_refused_naming_the_conflict() {
             vec!["--points", csv, "analyze", "jitter", "-n", "4"],
             vec!["--points"],
         ),
+        (
+            vec!["--lecture", "render", scene, "--out", out],
+            vec!["--lecture", "GUI"],
+        ),
     ];
     for (args, words) in cases {
         refused(&args, &words);

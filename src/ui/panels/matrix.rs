@@ -48,7 +48,7 @@ impl Panel for MatrixPanel {
     }
 
     fn ui(&mut self, ui: &mut egui::Ui, cx: &mut PanelCx<'_>) {
-        let (ci, side) = (cx.column, cx.side);
+        let (ci, side) = (cx.column, cx.cell.side);
         ui.horizontal_wrapped(|ui| {
             ui.label("Projection matrix");
             cx.figures.panel_menu_ui(ui, ci, PanelKind::Matrix);

@@ -73,6 +73,16 @@ pub trait Panel {
         220.0
     }
 
+    /// What a column panel holds, by which the grid sizes it ([`crate::ui::columns`]): by
+    /// default one square image under a heading, with three lines of captions.
+    fn extent(&self) -> Extent {
+        Extent {
+            images: 1.0,
+            lines: 4.0,
+            plots: 0.0,
+        }
+    }
+
     /// Draws the panel.
     fn ui(&mut self, ui: &mut egui::Ui, cx: &mut PanelCx<'_>);
 }
@@ -95,11 +105,62 @@ pub struct PanelCx<'a> {
     pub figures: &'a mut FigureRequests,
     /// The evaluator's counters (the cost view shows them).
     pub evaluator: &'a Evaluator,
-    /// Side of a column panel's square image, in points.
+    /// Where the grid put the column panel drawn: its image side and plot height, and the
+    /// pictures it drew.
+    pub cell: Cell,
+}
+
+/// What a column panel holds, stacked top to bottom: square images, rows of text (its heading,
+/// captions, checkboxes) and plots. The grid gives the images the largest side the row allows
+/// and the plots the height left ([`crate::ui::columns::grid`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Extent {
+    /// The height of its images, in image sides (a pattern 1, the filter's 2D response 0.6).
+    pub images: f32,
+    /// Rows of text, each one line of the style's body text high.
+    pub lines: f32,
+    /// Plots sharing the height left, each at least [`crate::ui::columns::MIN_PLOT`] lines.
+    pub plots: f32,
+}
+
+/// The place the grid gives a column panel for one frame, and the pictures (images and plots)
+/// the panel drew there: where the layout rule's tests and measurements find them.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Cell {
+    /// Side of the panel's square images, in points.
     pub side: f32,
+    /// Height of each of its plots, in points.
+    pub plot_height: f32,
+    /// The pictures drawn this frame (every column's), in drawing order.
+    pub pictures: Vec<Picture>,
+}
+
+/// A picture a panel drew: an image or a plot, its column and its screen rectangle.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Picture {
+    /// The panel's row of the panel table.
+    pub kind: PanelKind,
+    /// The column it belongs to.
+    pub column: usize,
+    /// A square image (else a plot).
+    pub image: bool,
+    /// Where it was drawn, in points.
+    pub rect: egui::Rect,
 }
 
 impl<'a> PanelCx<'a> {
+    /// Records a picture panel `kind` drew in the current column (an image when `image`, else
+    /// a plot).
+    pub fn picture(&mut self, kind: PanelKind, image: bool, rect: egui::Rect) {
+        let column = self.column;
+        self.cell.pictures.push(Picture {
+            kind,
+            column,
+            image,
+            rect,
+        });
+    }
+
     /// The drawn column's latest `T` with its status.
     pub fn get<T: InColumn>(&self) -> Slot<T> {
         self.get_in(self.column)

@@ -22,13 +22,23 @@ impl Panel for PatternPanel {
         PanelKind::Pattern
     }
 
+    /// The square, under its heading; the time, the statistics, the overlays' checkboxes and, for progressive patterns, the prefix slider under it.
+    fn extent(&self) -> super::Extent {
+        super::Extent {
+            images: 1.0,
+            lines: 4.5,
+            plots: 0.0,
+        }
+    }
+
     fn ui(&mut self, ui: &mut egui::Ui, cx: &mut PanelCx<'_>) {
-        let (ci, side) = (cx.column, cx.side);
+        let (ci, side) = (cx.column, cx.cell.side);
         ui.horizontal_wrapped(|ui| {
             ui.label("Sample pattern");
             cx.figures.panel_menu_ui(ui, ci, PanelKind::Pattern);
         });
         let (rect, _) = ui.allocate_exact_size(Vec2::splat(side), egui::Sense::hover());
+        cx.picture(PanelKind::Pattern, true, rect);
         let painter = ui.painter_at(rect);
         painter.rect_filled(rect, 0.0, Color32::WHITE);
         let (r, data) = match cx.get::<PointsData>() {

@@ -20,8 +20,17 @@ impl Panel for SpectrumPanel {
         PanelKind::Spectrum
     }
 
+    /// The periodogram under its heading, its time and stages, then the RAPS and anisotropy plots sharing the height left.
+    fn extent(&self) -> super::Extent {
+        super::Extent {
+            images: 1.0,
+            lines: 3.0,
+            plots: 2.0,
+        }
+    }
+
     fn ui(&mut self, ui: &mut egui::Ui, cx: &mut PanelCx<'_>) {
-        let (ci, side) = (cx.column, cx.side);
+        let (ci, side, plot_height) = (cx.column, cx.cell.side, cx.cell.plot_height);
         ui.horizontal_wrapped(|ui| {
             let slot = cx.get::<SpectrumData>();
             let size = slot
@@ -52,7 +61,7 @@ impl Panel for SpectrumPanel {
             hi,
             colormap: cx.view.colormap,
         };
-        cx.images.ui(
+        let rect = cx.images.ui(
             ui,
             egui::Id::NULL.with(("spectrum", ci)),
             &d.image,
@@ -60,6 +69,7 @@ impl Panel for SpectrumPanel {
             [0.0, 0.0, 1.0, 1.0],
             side,
         );
+        cx.picture(PanelKind::Spectrum, true, rect);
         time_label(ui, &r, cx.view.show_timings);
         if cx.view.show_timings {
             ui.small(
@@ -70,29 +80,39 @@ impl Panel for SpectrumPanel {
                     .join(" · "),
             );
         }
-        let h = (side * 0.3).max(80.0);
-        Plot::new(("raps", ci))
-            .height(h)
-            .width(side)
-            .allow_drag(false)
-            .allow_zoom(false)
-            .allow_scroll(false)
-            .x_axis_label("|k|")
-            .y_axis_label("RAPS")
-            .show(ui, |p| {
-                p.line(Line::new("RAPS", d.raps.clone()));
-                p.hline(egui_plot::HLine::new("white noise", 1.0).color(Color32::GRAY));
-            });
-        Plot::new(("aniso", ci))
-            .height((h * 0.7).max(70.0))
-            .width(side)
-            .allow_drag(false)
-            .allow_zoom(false)
-            .allow_scroll(false)
-            .x_axis_label("|k|")
-            .y_axis_label("aniso. dB")
-            .show(ui, |p| {
-                p.line(Line::new("anisotropy", d.anisotropy.clone()));
-            });
+        // RAPS the larger share: its peaks are the lecture's point.
+        let raps = ui
+            .scope(|ui| {
+                Plot::new(("raps", ci))
+                    .height(plot_height * 1.2)
+                    .width(side)
+                    .allow_drag(false)
+                    .allow_zoom(false)
+                    .allow_scroll(false)
+                    .x_axis_label("|k|")
+                    .y_axis_label("RAPS")
+                    .show(ui, |p| {
+                        p.line(Line::new("RAPS", d.raps.clone()));
+                        p.hline(egui_plot::HLine::new("white noise", 1.0).color(Color32::GRAY));
+                    })
+            })
+            .response;
+        cx.picture(PanelKind::Spectrum, false, raps.rect);
+        let aniso = ui
+            .scope(|ui| {
+                Plot::new(("aniso", ci))
+                    .height(plot_height * 0.8)
+                    .width(side)
+                    .allow_drag(false)
+                    .allow_zoom(false)
+                    .allow_scroll(false)
+                    .x_axis_label("|k|")
+                    .y_axis_label("aniso. dB")
+                    .show(ui, |p| {
+                        p.line(Line::new("anisotropy", d.anisotropy.clone()));
+                    })
+            })
+            .response;
+        cx.picture(PanelKind::Spectrum, false, aniso.rect);
     }
 }

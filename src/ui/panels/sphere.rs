@@ -36,13 +36,23 @@ impl Panel for SpherePanel {
         PanelKind::Sphere
     }
 
+    /// The view, under its heading; the time and the view's angles under it.
+    fn extent(&self) -> super::Extent {
+        super::Extent {
+            images: 1.0,
+            lines: 3.0,
+            plots: 0.0,
+        }
+    }
+
     fn ui(&mut self, ui: &mut egui::Ui, cx: &mut PanelCx<'_>) {
-        let (ci, side) = (cx.column, cx.side);
+        let (ci, side) = (cx.column, cx.cell.side);
         ui.horizontal_wrapped(|ui| {
             ui.label("Sphere (cylinder wrap)");
             cx.figures.panel_menu_ui(ui, ci, PanelKind::Sphere);
         });
         let (rect, response) = ui.allocate_exact_size(Vec2::splat(side), Sense::click_and_drag());
+        cx.picture(PanelKind::Sphere, true, rect);
         response.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Image, true, "sphere view"));
         if response.dragged() {
             let d = response.drag_delta();

@@ -21,6 +21,15 @@ impl Panel for ZonePlatePanel {
         PanelKind::ZonePlate
     }
 
+    /// The image under its heading (two lines when narrow); the time, the normaliser (two lines), the error and the reference's method under it.
+    fn extent(&self) -> super::Extent {
+        super::Extent {
+            images: 1.0,
+            lines: 5.0,
+            plots: 0.0,
+        }
+    }
+
     fn figure(&self, view: &ViewState) -> FigureKind {
         match view.zone_image {
             ZoneImage::Reconstruction => FigureKind::Reconstruction,
@@ -30,7 +39,7 @@ impl Panel for ZonePlatePanel {
     }
 
     fn ui(&mut self, ui: &mut egui::Ui, cx: &mut PanelCx<'_>) {
-        let (ci, side) = (cx.column, cx.side);
+        let (ci, side) = (cx.column, cx.cell.side);
         ui.horizontal_wrapped(|ui| {
             let slot = cx.get::<ReconData>();
             let lab = slot.status().and_then(scene_of).unwrap_or(&*cx.scene);
@@ -102,7 +111,7 @@ impl Panel for ZonePlatePanel {
         let z = cx.view.zoom.max(1) as f32;
         let s = 1.0 / z;
         let window = [0.5 - s / 2.0, 0.5 - s / 2.0, s, s];
-        cx.images.ui(
+        let rect = cx.images.ui(
             ui,
             egui::Id::NULL.with(("zone", ci, name)),
             &image,
@@ -110,6 +119,7 @@ impl Panel for ZonePlatePanel {
             window,
             side,
         );
+        cx.picture(PanelKind::ZonePlate, true, rect);
         time_label(ui, &r, cx.view.show_timings);
         if let Some(d) = cx.get::<ReconData>().data() {
             if d.zero_weight > 0 {
