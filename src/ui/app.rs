@@ -423,6 +423,11 @@ impl SamplescopeApp {
     /// The tool bar's widgets, in order.
     fn tool_bar_items(&mut self, ui: &mut egui::Ui) {
         {
+            if self.view.lecture {
+                // In the one sideways-scrolling row, the presentation switches first.
+                self.presentation_ui(ui);
+                ui.separator();
+            }
             ui.heading("samplescope");
             ui.separator();
             let mut chosen = None;
@@ -465,8 +470,10 @@ impl SamplescopeApp {
             ui.checkbox(&mut self.view.lock_scales, "Lock scales")
                 .on_hover_text("Same display range in every column (Ctrl+L)");
             ui.separator();
-            self.presentation_ui(ui);
-            ui.separator();
+            if !self.view.lecture {
+                self.presentation_ui(ui);
+                ui.separator();
+            }
             self.figures_ui(ui);
             ui.separator();
             if self.view.show_timings {

@@ -518,11 +518,11 @@ fn the_gui_reports_a_bad_scene_or_point_file_before_the_missing_display() {
     );
     let (code, err) = gui(&["--points", "bad.csv"]);
     assert_eq!(code, Some(2), "{err}");
+    assert!(err.contains("bad.csv") && !err.contains("display"), "{err}");
     // A bad scene is reported the same with --lecture.
     let (code, err) = gui(&["--lecture", "--scene", "bad.ron"]);
     assert_eq!(code, Some(2), "{err}");
     assert!(err.contains("bad.ron:2:"), "{err}");
-    assert!(err.contains("bad.csv") && !err.contains("display"), "{err}");
     // A file that is not there is bad input (2), as for every command.
     let (code, err) = gui(&["--scene", "missing.ron"]);
     assert_eq!(code, Some(2), "{err}");
