@@ -25,6 +25,7 @@ fn args(size: usize, tolerance: Option<f64>, exact: bool) -> AnalyzeArgs {
         points: vec!["points".into()],
         normalize: false,
         project: None,
+        dims: None,
         size,
         realizations: 1,
         tolerance,

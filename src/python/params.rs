@@ -75,7 +75,7 @@ pub fn value_object<'py>(py: Python<'py>, value: &ParamValue) -> PyResult<Bound<
 }
 
 /// One descriptor as a dict: `name`, `doc`, `kind` (`int`, `float`, `scale`, `choice`, `bool`,
-/// `list`, `per_dim`), `default`, `allowed` (the range in the CLI's words) and, by kind, `min`
+/// `list`, `per_dim`, `int_list`), `default`, `allowed` (the range in the CLI's words) and, by kind, `min`
 /// and `max` (with `min_exclusive`/`max_exclusive` for floats), `options` or `length`.
 pub fn spec_dict<'py>(py: Python<'py>, spec: &ParamSpec) -> PyResult<Bound<'py, PyDict>> {
     let d = PyDict::new(py);
@@ -122,6 +122,11 @@ pub fn spec_dict<'py>(py: Python<'py>, spec: &ParamSpec) -> PyResult<Bound<'py, 
             d.set_item("min", min)?;
             d.set_item("max", max)?;
             "per_dim"
+        }
+        ParamKind::IntList { min, max } => {
+            d.set_item("min", min)?;
+            d.set_item("max", max)?;
+            "int_list"
         }
     };
     d.set_item("kind", kind)?;

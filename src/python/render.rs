@@ -85,6 +85,8 @@ fn render(
         format,
         aspect,
         no_cache,
+        frames: None,
+        fps: None,
     };
     let session = run::session(budget, budget_memory)?;
     run::run(py, session, move |session| {

@@ -175,7 +175,7 @@ def test_patterns_is_the_catalogue_of_points_list(cli):
         assert isinstance(p["random"], bool)
         for s in p["params"]:
             assert {"name", "doc", "kind", "default", "allowed"} <= set(s)
-            assert s["kind"] in {"int", "float", "scale", "choice", "bool", "list", "per_dim"}
+            assert s["kind"] in {"int", "float", "scale", "choice", "bool", "list", "per_dim", "int_list"}
             assert f"--set {s['name']}=…  " in listed and s["doc"] in listed and s["allowed"] in listed
             if s["kind"] == "choice":
                 assert s["default"] in s["options"]
