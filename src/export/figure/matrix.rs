@@ -19,7 +19,7 @@ impl Figure for Matrix {
     }
 
     fn base_size(&self) -> (u32, u32) {
-        (640, 560)
+        (590, 510)
     }
 
     fn title(&self, ctx: &FigureContext, data: &ColumnData) -> String {
