@@ -28,7 +28,7 @@ const SCENE: &str = r#"(
     filter: (filter: (kind: "gaussian", sigma: 0.5, radius: 2.0, subtract_edge: true), mode: separable),
     recon: (mode: scattered, size: 64),
     spectrum: (size: 64, tolerance: 1e-6, exact: false, realizations: 1, mask_dc: true),
-    panels: (pattern: true, spectrum: true, zoneplate: true, filter: true, cost: true, integration: true),
+    panels: (pattern: true, spectrum: true, zoneplate: true, filter: true, cost: true, integration: true, matrix: true),
     effects: (reconstruction: true, error: true, convergence: true, statistics: false),
     integration: (ns: [16, 64, 256], realizations: 8),
 )"#;
