@@ -1,5 +1,6 @@
 //! The `samplescope points` command: output format, exit codes, and no panic on any input.
 
+use samplescope::core::cancel::Cancel;
 use samplescope::core::params::Params;
 use samplescope::core::pattern::{Pattern, PatternError};
 use samplescope::core::rng::Rng;
@@ -212,4 +213,50 @@ fn random_parameters_never_panic() {
             }
         }
     }
+}
+
+#[test]
+fn scrambled_halton_takes_a_seed_and_plain_halton_refuses_one() {
+    for scramble in ["permute", "owen"] {
+        let mut p = Pattern::from_name("halton").unwrap();
+        p.set("scramble", scramble).unwrap();
+        assert!(
+            p.is_random(),
+            "{scramble}: the scramble is drawn from the seed"
+        );
+        let set = format!("scramble={scramble}");
+        for dims in ["2", "5"] {
+            let run = |seed: &str| {
+                let args = [
+                    "points", "halton", "-n", "64", "--dims", dims, "--set", &set, "--seed", seed,
+                ];
+                crate::points_csv(&args).1
+            };
+            let (a, b) = (run("3"), run("4"));
+            assert_ne!(
+                a, b,
+                "{scramble}, dims {dims}: another seed, another scramble"
+            );
+            let want = p
+                .generate_cube(64, dims.parse().unwrap(), 3, &Cancel::never())
+                .unwrap();
+            let got: Vec<f64> = a.concat();
+            assert_eq!(
+                got,
+                want.coords(),
+                "{scramble}, dims {dims}: the library's seed"
+            );
+        }
+    }
+    // Unscrambled, Halton draws nothing at random: a seed is refused as for any deterministic pattern.
+    let plain = Pattern::from_name("halton").unwrap();
+    assert!(!plain.is_random());
+    let out = samplescope(&["points", "halton", "-n", "64", "--seed", "3"]);
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8(out.stderr).unwrap();
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert!(
+        err.contains("--seed 3") && err.contains("halton") && err.contains("deterministic"),
+        "{err}"
+    );
 }

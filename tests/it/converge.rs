@@ -371,3 +371,90 @@ fn genz_integrands_in_d_dimensions() {
         "{text}"
     );
 }
+
+#[test]
+fn scrambled_halton_draws_a_new_scramble_per_realization() {
+    for (scramble, integrand, dims) in [
+        ("permute", "gaussian", 2),
+        ("owen", "gaussian", 2),
+        ("owen", "genz-gaussian", 8),
+    ] {
+        let mut pattern = Pattern::from_name("halton").unwrap();
+        samplescope::core::params::Params::set(&mut pattern, "scramble", scramble).unwrap();
+        let req = StudyRequest {
+            pattern,
+            integrand: Integrand::from_name(integrand).unwrap(),
+            ns: vec![64, 256],
+            realizations: 16,
+            seed: 1,
+            shift: false,
+            randomize: false,
+            dims,
+        };
+        assert!(
+            !req.applies_shift(),
+            "{scramble}: a random pattern is not shifted"
+        );
+        let study = run_study(&req, &Cancel::never(), &mut no_progress).unwrap();
+        // One scramble reused would make every realization the same estimate (variance 0, the
+        // error all bias); independent scrambles are unbiased, so the error is all variance.
+        for row in &study.rows {
+            assert!(
+                row.variance > 0.5 * row.mse,
+                "{scramble} D = {dims} N = {}: variance {} of mse {}",
+                row.n,
+                row.variance,
+                row.mse
+            );
+        }
+    }
+    // The command line says so, and takes the seed; --no-shift has nothing to leave out.
+    let out = samplescope(&[
+        "converge",
+        "--pattern",
+        "halton",
+        "--set",
+        "scramble=owen",
+        "--integrand",
+        "gaussian",
+        "--n",
+        "16,64",
+        "--realizations",
+        "4",
+        "--seed",
+        "3",
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert!(
+        text.lines()
+            .next()
+            .unwrap()
+            .contains("shift: none (random pattern)"),
+        "{text}"
+    );
+    let out = samplescope(&[
+        "converge",
+        "--pattern",
+        "halton",
+        "--set",
+        "scramble=owen",
+        "--integrand",
+        "gaussian",
+        "--n",
+        "16,64",
+        "--realizations",
+        "4",
+        "--no-shift",
+    ]);
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("--no-shift") && err.contains("random pattern"),
+        "{err}"
+    );
+}

@@ -106,3 +106,24 @@ pub fn png_text(info: &png::Info<'_>) -> Vec<(String, String)> {
         )
         .collect()
 }
+
+/// Runs `samplescope ARGS` (a `points` command), which must succeed, and parses the CSV it
+/// writes: the header line and one row of numbers per point.
+pub fn points_csv(args: &[&str]) -> (String, Vec<Vec<f64>>) {
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_samplescope"))
+        .args(args)
+        .output()
+        .expect("the binary runs");
+    assert!(
+        out.status.success(),
+        "{args:?}: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = String::from_utf8(out.stdout).expect("UTF-8 CSV");
+    let mut lines = text.lines();
+    let header = lines.next().expect("a header line").to_string();
+    let rows = lines
+        .map(|l| l.split(',').map(|v| v.parse().expect("a number")).collect())
+        .collect();
+    (header, rows)
+}

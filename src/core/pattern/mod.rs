@@ -601,13 +601,14 @@ impl Default for Pattern {
 }
 
 impl Pattern {
-    /// Whether the pattern uses its seed (deterministic ones ignore it).
+    /// Whether the pattern uses its seed (deterministic ones ignore it). A scrambled pattern
+    /// (Sobol' or Halton with a scramble) draws its scramble from the seed, so it is random;
+    /// unscrambled it is deterministic.
     pub fn is_random(&self) -> bool {
         !matches!(
             self,
             Pattern::Grid(_)
                 | Pattern::VanDerCorput(_)
-                | Pattern::Halton(_)
                 | Pattern::Hammersley(_)
                 | Pattern::HaltonZaremba(_)
                 | Pattern::HammersleyZaremba(_)
