@@ -72,6 +72,7 @@ pub mod cube;
 mod dd;
 pub mod l2;
 pub mod mindist;
+mod pairs;
 pub mod psa;
 pub mod star;
 pub mod tvalue;

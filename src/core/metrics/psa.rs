@@ -103,6 +103,7 @@ use rayon::prelude::*;
 use serde::Serialize;
 use std::f64::consts::{FRAC_PI_4, PI, TAU};
 
+use super::pairs::{self, bin_of};
 use super::{hex_distance, validate, Cancel, MetricsError, CANCEL_STRIDE};
 use crate::core::filter::special::bessel_j0;
 use crate::core::torus;
@@ -223,24 +224,15 @@ fn validate_range(bins: usize, r_max: f64) -> Result<(), MetricsError> {
     Ok(())
 }
 
-/// The bin ⌊d/Δr⌋ of distance `d`, if below `bins` (the same arithmetic in [`rdf`] and
-/// [`rdf_naive`], so their counts agree exactly).
-#[inline]
-fn bin_of(d: f64, dr: f64, bins: usize) -> Option<usize> {
-    let t = (d / dr).floor();
-    (t < bins as f64).then_some(t as usize)
-}
-
-/// g_i from the pair counts.
-fn normalise(n: usize, r_max: f64, counts: &[u64]) -> Rdf {
-    let dr = r_max / counts.len() as f64;
+/// g_i from the pair counts of bins of width `dr` (bins 0 … counts.len() − 1; fewer than
+/// the RDF's bins when only its first bins are needed).
+fn normalise(n: usize, dr: f64, counts: &[u64]) -> Vec<f64> {
     let pairs = (n as f64) * (n as f64 - 1.0) / 2.0;
-    let values = counts
+    counts
         .iter()
         .enumerate()
         .map(|(i, &c)| c as f64 / (pairs * PI * dr * dr * (2 * i + 1) as f64))
-        .collect();
-    Rdf { n, r_max, values }
+        .collect()
 }
 
 /// PSA's binning of its `--rdf` output: N/8 bins (at least 1) up to 8 d_hex(N) (at most ½,
@@ -277,8 +269,10 @@ fn last_term(len: f64, dr: f64, m: usize) -> usize {
 }
 
 /// The radial distribution function of `points` (toroidal, see the module docs) over `bins`
-/// bins up to `r_max` ∈ (0, ½]. All N(N−1)/2 pairs, in parallel; the counts, hence the
-/// values, do not depend on the number of threads.
+/// bins up to `r_max` ∈ (0, ½]: the pairs closer than `r_max` by a cell grid (O(N·k) for k
+/// points within `r_max`; all N(N−1)/2 pairs when `r_max` is too large for a grid), in
+/// parallel; the counts, hence the values, do not depend on the number of threads and equal
+/// [`rdf_naive`]'s bin for bin.
 ///
 /// Errors: fewer than 2 or more than [`PSA_MAX_N`] points, an invalid point, `bins` = 0 or
 /// above [`RDF_MAX_BINS`], `r_max` outside (0, ½], cancellation.
@@ -292,32 +286,12 @@ pub fn rdf(
     validate_range(bins, r_max)?;
     let n = points.len();
     let dr = r_max / bins as f64;
-    // Rows interleaved over a fixed number of chunks: balanced (row i has N − 1 − i pairs),
-    // one histogram per chunk.
-    let chunks = (rayon::current_num_threads() * 4).clamp(1, n);
-    let partial: Vec<Vec<u64>> = (0..chunks)
-        .into_par_iter()
-        .map(|c| {
-            let mut h = vec![0u64; bins];
-            for i in (c..n).step_by(chunks) {
-                cancel.check()?;
-                let p = points[i];
-                for q in &points[i + 1..] {
-                    if let Some(b) = bin_of(torus::distance_squared(p, *q, 1.0).sqrt(), dr, bins) {
-                        h[b] += 1;
-                    }
-                }
-            }
-            Ok(h)
-        })
-        .collect::<Result<_, MetricsError>>()?;
-    let mut counts = vec![0u64; bins];
-    for h in &partial {
-        for (c, v) in counts.iter_mut().zip(h) {
-            *c += v;
-        }
-    }
-    Ok(normalise(n, r_max, &counts))
+    let counts = pairs::pair_counts(points, bins, dr, cancel)?;
+    Ok(Rdf {
+        n,
+        r_max,
+        values: normalise(n, dr, &counts),
+    })
 }
 
 /// [`rdf`] by a plain serial double loop (the reference of the tests).
@@ -346,7 +320,11 @@ pub fn rdf_naive(
             }
         }
     }
-    Ok(normalise(n, r_max, &counts))
+    Ok(Rdf {
+        n,
+        r_max,
+        values: normalise(n, dr, &counts),
+    })
 }
 
 /// J₀(x) by Abramowitz & Stegun 9.4.1 (|x| ≤ 3, error < 5·10⁻⁸) and 9.4.3 (|x| > 3,
@@ -762,14 +740,86 @@ mod tests {
         assert!((j0_fast(3.0 + 1e-12) - bessel_j0(3.0)).abs() < 1e-7);
     }
 
+    /// Jittered points: one per cell of a k × k grid.
+    fn jitter(k: usize, seed: u64) -> Vec<DVec2> {
+        let mut rng = Rng::new(seed);
+        let s = 1.0 / k as f64;
+        (0..k * k)
+            .map(|i| {
+                let x = ((i % k) as f64 + rng.next_f64()) * s;
+                DVec2::new(x, ((i / k) as f64 + rng.next_f64()) * s)
+            })
+            .collect()
+    }
+
+    /// Clusters of 20 points within 0.01 of 30 random centres (wrapped into [0,1)).
+    fn clustered(seed: u64) -> Vec<DVec2> {
+        let mut rng = Rng::new(seed);
+        let wrap = |v: f64| {
+            let w = v.rem_euclid(1.0);
+            if w >= 1.0 {
+                0.0
+            } else {
+                w
+            }
+        };
+        let mut pts = Vec::new();
+        for _ in 0..30 {
+            let c = DVec2::new(rng.next_f64(), rng.next_f64());
+            for _ in 0..20 {
+                let d = DVec2::new(rng.next_f64() - 0.5, rng.next_f64() - 0.5) * 0.02;
+                pts.push(DVec2::new(wrap(c.x + d.x), wrap(c.y + d.y)));
+            }
+        }
+        pts
+    }
+
     #[test]
-    fn rdf_matches_the_naive_double_loop_exactly() {
-        let pts = white(700, 3);
+    fn rdf_matches_the_naive_double_loop_bin_for_bin() {
         let c = Cancel::never();
-        for (bins, r_max) in [(64, 0.5), (90, 0.2), (1, 0.5), (1000, 0.013)] {
-            let fast = rdf(&pts, bins, r_max, &c).unwrap();
-            let naive = rdf_naive(&pts, bins, r_max, &c).unwrap();
-            assert_eq!(fast, naive, "bins = {bins}, r_max = {r_max}");
+        let below_one = 1.0 - f64::EPSILON / 2.0;
+        // On the boundary and at the corners (0 and the largest value below 1), duplicates.
+        let mut edge = white(300, 8);
+        edge.extend([
+            DVec2::ZERO,
+            DVec2::new(below_one, 0.0),
+            DVec2::new(0.0, below_one),
+            DVec2::new(below_one, below_one),
+            DVec2::new(0.5, 0.0),
+            DVec2::new(0.5, below_one),
+            DVec2::new(0.25, 0.25),
+            DVec2::new(0.25, 0.25),
+            DVec2::ZERO,
+        ]);
+        let (hex, _, _) = lattice(32, 32, 0.5);
+        let sets: Vec<(&str, Vec<DVec2>)> = vec![
+            ("random", white(700, 3)),
+            ("jitter", jitter(40, 4)),
+            ("clustered", clustered(5)),
+            ("edge", edge),
+            ("lattice", hex),
+            ("two", vec![DVec2::new(0.1, 0.9), DVec2::new(0.95, 0.05)]),
+            ("three", white(3, 6)),
+            ("duplicates", vec![DVec2::new(0.3, 0.7); 5]),
+        ];
+        let n_psa = spectral_bins(1600);
+        for (name, pts) in &sets {
+            for (bins, r_max) in [
+                (64, 0.5),
+                (90, 0.2),
+                (1, 0.5),
+                (1000, 0.013),
+                (200, 0.07),
+                (n_psa, 0.5),
+            ] {
+                let fast = rdf(pts, bins, r_max, &c).unwrap();
+                let naive = rdf_naive(pts, bins, r_max, &c).unwrap();
+                assert_eq!(fast, naive, "{name}: bins = {bins}, r_max = {r_max}");
+            }
+            // PSA's own --rdf range.
+            let (bins, r_max) = psa_rdf_range(pts.len());
+            let fast = rdf(pts, bins, r_max, &c).unwrap();
+            assert_eq!(fast, rdf_naive(pts, bins, r_max, &c).unwrap(), "{name}");
         }
     }
 

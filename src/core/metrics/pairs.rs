@@ -1,0 +1,182 @@
+//! The histogram of toroidal pair distances below a radius, by a cell grid: the pair counts
+//! behind PSA's radial distribution function ([`super::psa::rdf`]), in O(N·k) for k points
+//! within the radius instead of over all N(N−1)/2 pairs.
+//!
+//! The points are sorted into a G × G grid of cells of side 1/G; each pair closer than the
+//! radius R lies in two cells whose offset (a, b) has |a|, |b| ≤ reach = ⌈R·G⌉ and whose
+//! closest corners are closer than R. A half stencil (b > 0, or b = 0 and a > 0, plus pairs
+//! within a cell) visits every unordered pair of cells once when G ≥ 2·reach + 1 (no offset
+//! wraps onto another); otherwise every pair is visited ([`all_pairs`]). Each pair's distance
+//! is [`torus::distance_squared`] of the original coordinates and its bin ⌊√d²/Δr⌋, the same
+//! arithmetic as the all-pairs loop, so the counts are equal bin for bin.
+
+use glam::DVec2;
+use rayon::prelude::*;
+
+use super::{Cancel, MetricsError};
+use crate::core::torus;
+
+/// The bin ⌊d/Δr⌋ of distance `d`, if below `bins` (the one binning rule of every pair loop,
+/// so that their counts agree exactly).
+#[inline]
+pub(crate) fn bin_of(d: f64, dr: f64, bins: usize) -> Option<usize> {
+    let t = (d / dr).floor();
+    (t < bins as f64).then_some(t as usize)
+}
+
+/// The chunks the pair loops split their work into: a fixed number (4 per thread), each
+/// with its own histogram.
+fn chunk_count(items: usize) -> usize {
+    (rayon::current_num_threads() * 4).clamp(1, items.max(1))
+}
+
+/// Sums per-chunk histograms.
+fn merge(partial: Vec<Vec<u64>>, bins: usize) -> Vec<u64> {
+    let mut counts = vec![0u64; bins];
+    for h in &partial {
+        for (c, v) in counts.iter_mut().zip(h) {
+            *c += v;
+        }
+    }
+    counts
+}
+
+/// Counts of the pairs of `points` in bins [iΔr, (i+1)Δr), i < `bins`, over all N(N−1)/2
+/// pairs (parallel over interleaved rows; the counts do not depend on the threads).
+pub(crate) fn all_pairs(
+    points: &[DVec2],
+    bins: usize,
+    dr: f64,
+    cancel: &Cancel,
+) -> Result<Vec<u64>, MetricsError> {
+    let n = points.len();
+    // Rows interleaved over a fixed number of chunks: balanced (row i has N − 1 − i pairs).
+    let chunks = chunk_count(n);
+    let partial: Vec<Vec<u64>> = (0..chunks)
+        .into_par_iter()
+        .map(|c| {
+            let mut h = vec![0u64; bins];
+            for i in (c..n).step_by(chunks) {
+                cancel.check()?;
+                let p = points[i];
+                for q in &points[i + 1..] {
+                    if let Some(b) = bin_of(torus::distance_squared(p, *q, 1.0).sqrt(), dr, bins) {
+                        h[b] += 1;
+                    }
+                }
+            }
+            Ok(h)
+        })
+        .collect::<Result<_, MetricsError>>()?;
+    Ok(merge(partial, bins))
+}
+
+/// The grid's cells per side for N points and radius R: about two points per cell, at most
+/// 1024 per side.
+fn grid_side(n: usize, radius: f64) -> Option<(usize, usize)> {
+    let g = ((n as f64 / 2.0).sqrt().floor() as usize).clamp(1, 1024);
+    let reach = (radius * g as f64).ceil() as usize;
+    (g > 2 * reach).then_some((g, reach))
+}
+
+/// Counts of the pairs of `points` in bins [iΔr, (i+1)Δr), i < `bins`: equal to
+/// [`all_pairs`] bin for bin; by the cell grid (module docs) when the radius `bins`·Δr is
+/// small enough for one, else over all pairs.
+pub(crate) fn pair_counts(
+    points: &[DVec2],
+    bins: usize,
+    dr: f64,
+    cancel: &Cancel,
+) -> Result<Vec<u64>, MetricsError> {
+    let n = points.len();
+    // Every counted distance is below `radius` (a margin over bins·Δr for the rounding of
+    // d/Δr; the bin decides).
+    let radius = bins as f64 * dr * (1.0 + 1e-9);
+    let Some((g, reach)) = grid_side(n, radius) else {
+        return all_pairs(points, bins, dr, cancel);
+    };
+    let r2 = radius * radius;
+    // Sort the points by cell (row-major), coordinates as structure of arrays.
+    let cell_of = |p: DVec2| {
+        let cx = ((p.x * g as f64) as usize).min(g - 1);
+        let cy = ((p.y * g as f64) as usize).min(g - 1);
+        cy * g + cx
+    };
+    let mut start = vec![0usize; g * g + 1];
+    for p in points {
+        start[cell_of(*p) + 1] += 1;
+    }
+    for c in 0..g * g {
+        start[c + 1] += start[c];
+    }
+    let mut fill = start.clone();
+    let mut xs = vec![0.0; n];
+    let mut ys = vec![0.0; n];
+    for p in points {
+        let c = cell_of(*p);
+        xs[fill[c]] = p.x;
+        ys[fill[c]] = p.y;
+        fill[c] += 1;
+    }
+    // The half stencil, row by row: for row offset b, the column offsets −a_b … a_b (b > 0) or
+    // 1 … a_b (b = 0) whose cells can hold a pair closer than the radius.
+    let s = 1.0 / g as f64;
+    let near = |a: usize, b: usize| {
+        let gx = a.saturating_sub(1) as f64 * s;
+        let gy = b.saturating_sub(1) as f64 * s;
+        gx * gx + gy * gy < r2
+    };
+    let rows: Vec<(usize, usize)> = (0..=reach)
+        .filter_map(|b| {
+            let a = (0..=reach).take_while(|&a| near(a, b)).last()?;
+            (b > 0 || a > 0).then_some((b, a))
+        })
+        .collect();
+    let chunks = chunk_count(g);
+    let partial: Vec<Vec<u64>> = (0..chunks)
+        .into_par_iter()
+        .map(|chunk| {
+            let mut h = vec![0u64; bins];
+            let mut count = |px: f64, py: f64, lo: usize, hi: usize| {
+                let p = DVec2::new(px, py);
+                for (&qx, &qy) in xs[lo..hi].iter().zip(&ys[lo..hi]) {
+                    let d2 = torus::distance_squared(p, DVec2::new(qx, qy), 1.0);
+                    if d2 < r2 {
+                        if let Some(b) = bin_of(d2.sqrt(), dr, bins) {
+                            h[b] += 1;
+                        }
+                    }
+                }
+            };
+            for cy in (chunk..g).step_by(chunks) {
+                cancel.check()?;
+                for cx in 0..g {
+                    let c = cy * g + cx;
+                    for i in start[c]..start[c + 1] {
+                        let (px, py) = (xs[i], ys[i]);
+                        // Pairs within the cell.
+                        count(px, py, i + 1, start[c + 1]);
+                        for &(b, a) in &rows {
+                            let row = ((cy + b) % g) * g;
+                            // Columns cx + lo … cx + a (mod g): at most two runs of cells.
+                            let (lo, hi) = if b == 0 {
+                                (cx + 1, cx + a)
+                            } else {
+                                (cx + g - a, cx + g + a)
+                            };
+                            let (first, last) = (lo % g, hi % g);
+                            if first <= last {
+                                count(px, py, start[row + first], start[row + last + 1]);
+                            } else {
+                                count(px, py, start[row + first], start[row + g]);
+                                count(px, py, start[row], start[row + last + 1]);
+                            }
+                        }
+                    }
+                }
+            }
+            Ok(h)
+        })
+        .collect::<Result<_, MetricsError>>()?;
+    Ok(merge(partial, bins))
+}
