@@ -19,13 +19,12 @@ use super::outln;
 use super::session::{write_output, Session};
 use super::CliError;
 use samplescope::core::cancel::Cancel;
-use samplescope::engine::Evaluator;
+use samplescope::engine::{ColumnResults, ColumnsError, Evaluator};
 use samplescope::export::figure::{Aspect, FileFormat, MAX_COMPOSITE_PIXELS, SCALES};
 use samplescope::export::publish::{publish, Format as PublishFormat, Target};
 use samplescope::export::ExportError;
-use samplescope::scene::graph::{NodeKind, NodeResult};
+use samplescope::scene::graph::NodeKind;
 use samplescope::scene::{figure, panels, Scene};
-use std::collections::HashMap;
 use std::path::PathBuf;
 use std::sync::Arc;
 
@@ -153,39 +152,21 @@ fn evaluator(no_cache: bool) -> Evaluator {
     Evaluator::new(samplescope::engine::cache::DEFAULT_BUDGET, disk)
 }
 
-/// Evaluates every node the scene needs; the first failed node (in evaluation order) of any
-/// column is an error naming the column and the node.
+/// Evaluates every node the scene needs; the first failed node of any column is an error
+/// naming the column and the node ([`Evaluator::evaluate_columns`]).
 fn evaluate(
     scene: &Scene,
     plan: Arc<samplescope::scene::graph::Plan>,
     source: &str,
     no_cache: bool,
     cancel: &Cancel,
-) -> Result<Vec<HashMap<NodeKind, Arc<NodeResult>>>, CliError> {
-    let mut results: Vec<HashMap<NodeKind, Arc<NodeResult>>> =
-        vec![HashMap::new(); scene.columns.len()];
-    let eval = evaluator(no_cache);
-    eval.evaluate_planned(scene, plan, cancel, &mut |c, kind, r| {
-        if let Some(col) = results.get_mut(c) {
-            col.insert(kind, r);
-        }
-    });
-    if cancel.is_cancelled() {
-        return Err(CliError::Cancelled);
-    }
-    for (c, col) in results.iter().enumerate() {
-        for kind in NodeKind::ALL {
-            if let Some(Err(e)) = col.get(&kind).map(|r| &r.value) {
-                return Err(CliError::Usage(format!(
-                    "{source}: column {} ({}): {} node failed: {e}",
-                    c + 1,
-                    scene.columns[c].title(),
-                    kind.name()
-                )));
-            }
-        }
-    }
-    Ok(results)
+) -> Result<ColumnResults, CliError> {
+    evaluator(no_cache)
+        .evaluate_columns(scene, plan, cancel)
+        .map_err(|e| match e {
+            ColumnsError::Cancelled => CliError::Cancelled,
+            ColumnsError::Failed(e) => CliError::Usage(format!("{source}: {e}")),
+        })
 }
 
 /// Runs `samplescope render`.
@@ -259,12 +240,8 @@ pub fn render(
     for (c, col) in scene.columns.iter().enumerate() {
         if col.points.is_none() {
             if let Err(e) = col.pattern.validate(scene.n) {
-                return Err(CliError::Usage(format!(
-                    "{source}: column {} ({}): {} node failed: {e}",
-                    c + 1,
-                    col.title(),
-                    NodeKind::Points.name()
-                )));
+                let e = ColumnsError::failed(&scene, c, NodeKind::Points, &e);
+                return Err(CliError::Usage(format!("{source}: {e}")));
             }
         }
     }

@@ -10,13 +10,13 @@
 //! from the scene's layout, before any data), and the frames' plans (for the caller's
 //! compute budget, [`Prepared::estimates`]).
 
-use super::Evaluator;
+use super::{ColumnResults, ColumnsError, Evaluator};
 use crate::core::budget::Estimate;
 use crate::core::cancel::Cancel;
 use crate::export::figure::{comparison_file_name, comparison_size, Aspect, FileFormat};
 use crate::export::publish::{picture, Target};
 use crate::export::{gif, ExportError};
-use crate::scene::graph::{self, NodeKind, NodeResult, Plan};
+use crate::scene::graph::{self, Plan};
 use crate::scene::{animation, figure, Scene};
 use std::collections::HashMap;
 use std::sync::Arc;
@@ -63,7 +63,7 @@ impl Prepared {
 /// The figure size of `scene`'s comparison at `scale` in a frame of `aspect`, from its layout
 /// alone (no data: the colour bar of shared spectra counted as drawn).
 fn layout_size(scene: &Scene, stem: &str, scale: u32, aspect: Aspect) -> (u64, u64) {
-    let empty: Vec<HashMap<NodeKind, Arc<NodeResult>>> = vec![HashMap::new(); scene.columns.len()];
+    let empty: ColumnResults = vec![HashMap::new(); scene.columns.len()];
     let Ok(mut columns) = figure::figure_columns(scene, &empty, stem) else {
         return (0, 0);
     };
@@ -149,28 +149,12 @@ pub fn render_gif(
         if cancel.is_cancelled() {
             return Err(AnimationError::Cancelled);
         }
-        let mut results: Vec<HashMap<NodeKind, Arc<NodeResult>>> =
-            vec![HashMap::new(); scene.columns.len()];
-        eval.evaluate_planned(scene, plan.clone(), cancel, &mut |c, kind, r| {
-            if let Some(col) = results.get_mut(c) {
-                col.insert(kind, r);
-            }
-        });
-        if cancel.is_cancelled() {
-            return Err(AnimationError::Cancelled);
-        }
-        for (c, col) in results.iter().enumerate() {
-            for kind in NodeKind::ALL {
-                if let Some(Err(e)) = col.get(&kind).map(|r| &r.value) {
-                    return Err(AnimationError::Failed(format!(
-                        "frame {i}: column {} ({}): {} node failed: {e}",
-                        c + 1,
-                        scene.columns[c].title(),
-                        kind.name()
-                    )));
-                }
-            }
-        }
+        let results = eval
+            .evaluate_columns(scene, plan.clone(), cancel)
+            .map_err(|e| match e {
+                ColumnsError::Cancelled => AnimationError::Cancelled,
+                ColumnsError::Failed(e) => AnimationError::Failed(format!("frame {i}: {e}")),
+            })?;
         let columns = figure::figure_columns(scene, &results, &prepared.stem)
             .map_err(|e| AnimationError::Failed(e.to_string()))?;
         let publication = figure::publication(scene, columns, &prepared.stem);

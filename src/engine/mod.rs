@@ -32,6 +32,7 @@ use crate::scene::graph::{self, NodeKey, NodeKind, NodeResult, Plan};
 use crate::scene::Scene;
 pub use scheduler::Update;
 use scheduler::{Event, Scheduler, Shared, Sink};
+use std::collections::HashMap;
 use std::sync::atomic::Ordering;
 use std::sync::mpsc::{channel, Receiver, RecvTimeoutError, Sender, TryRecvError};
 use std::sync::Arc;
@@ -188,6 +189,63 @@ impl Evaluator {
                 Err(RecvTimeoutError::Disconnected) => return,
             }
         }
+    }
+}
+
+/// The final result of every node of an evaluated scene, per column.
+pub type ColumnResults = Vec<HashMap<NodeKind, Arc<NodeResult>>>;
+
+/// Why [`Evaluator::evaluate_columns`] returned no results.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+pub enum ColumnsError {
+    /// `cancel` fired.
+    #[error("cancelled")]
+    Cancelled,
+    /// The first failed node, columns in order and in each column the kinds in
+    /// [`NodeKind::ALL`]'s order: "column C (title): KIND node failed: ERROR", C from 1.
+    #[error("{0}")]
+    Failed(String),
+}
+
+impl ColumnsError {
+    /// Node `kind` of column `c` (from 0) of `scene` failed with `error`.
+    pub fn failed(scene: &Scene, c: usize, kind: NodeKind, error: &dyn std::fmt::Display) -> Self {
+        ColumnsError::Failed(format!(
+            "column {} ({}): {} node failed: {error}",
+            c + 1,
+            scene.columns[c].title(),
+            kind.name()
+        ))
+    }
+}
+
+impl Evaluator {
+    /// [`Self::evaluate_planned`] with every final result collected per column: the results,
+    /// or the first failed node (one that failed through its inputs counts too), or
+    /// [`ColumnsError::Cancelled`]. `samplescope render` and each frame of an animation.
+    pub fn evaluate_columns(
+        &self,
+        scene: &Scene,
+        plan: Arc<Plan>,
+        cancel: &Cancel,
+    ) -> Result<ColumnResults, ColumnsError> {
+        let mut results: ColumnResults = vec![HashMap::new(); scene.columns.len()];
+        self.evaluate_planned(scene, plan, cancel, &mut |c, kind, r| {
+            if let Some(col) = results.get_mut(c) {
+                col.insert(kind, r);
+            }
+        });
+        if cancel.is_cancelled() {
+            return Err(ColumnsError::Cancelled);
+        }
+        for (c, col) in results.iter().enumerate() {
+            for kind in NodeKind::ALL {
+                if let Some(Err(e)) = col.get(&kind).map(|r| &r.value) {
+                    return Err(ColumnsError::failed(scene, c, kind, e));
+                }
+            }
+        }
+        Ok(results)
     }
 }
 

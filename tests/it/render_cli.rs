@@ -338,6 +338,40 @@ fn failing_node_exits_2_naming_column_and_node() {
 }
 
 #[test]
+fn evaluate_columns_collects_every_column_or_names_the_first_failed_node() {
+    use samplescope::core::cancel::Cancel;
+    use samplescope::engine::{ColumnsError, Evaluator};
+    use samplescope::scene::graph::{self, NodeKind};
+    use samplescope::scene::Scene;
+    use std::sync::Arc;
+    let eval = Evaluator::default();
+    let run = |scene: &Scene, cancel: &Cancel| {
+        eval.evaluate_columns(scene, Arc::new(graph::plan(scene)), cancel)
+    };
+    let ok = Scene::from_ron(SCENE, "ok.ron").unwrap();
+    let results = run(&ok, &Cancel::never()).unwrap();
+    assert_eq!(results.len(), 2);
+    for col in &results {
+        assert!(col[&NodeKind::Points].value.is_ok());
+    }
+    let text = SCENE.replace(
+        r#"(pattern: (kind: "halton", base_x: 2, base_y: 3, skip: 0), seed: 0, label: "Halton")"#,
+        r#"(pattern: (kind: "poisson-dart", radius: 0.4, max_misses: 1000), seed: 0, label: "too sparse")"#,
+    );
+    let bad = Scene::from_ron(&text, "bad.ron").unwrap();
+    match run(&bad, &Cancel::never()) {
+        Err(ColumnsError::Failed(e)) => assert!(
+            e.starts_with("column 2 (too sparse): points node failed: "),
+            "{e}"
+        ),
+        other => panic!("{:?}", other.map(|r| r.len())),
+    }
+    let cancel = Cancel::new();
+    cancel.cancel();
+    assert!(matches!(run(&ok, &cancel), Err(ColumnsError::Cancelled)));
+}
+
+#[test]
 fn scene_without_drawable_panels_warns_and_writes_nothing() {
     let dir = temp_dir("nopanels");
     let scene = dir.join("none.ron");
