@@ -312,7 +312,7 @@ pub fn render(
     if let Some(a) = &animation {
         use samplescope::engine::animation::{render_gif, AnimationError};
         let eval = evaluator(args.no_cache);
-        let bytes = render_gif(a, &eval, cancel, &mut |_, _| {}).map_err(|e| match e {
+        let bytes = render_gif(a, &eval, cancel, &mut |_| {}).map_err(|e| match e {
             AnimationError::Cancelled => CliError::Cancelled,
             other => CliError::Usage(format!("{source}: --format gif: {other}")),
         })?;

@@ -9,6 +9,16 @@
 //! the scene animates, the frames' pixels against [`gif::MAX_GIF_PIXELS`] (the frame's size
 //! from the scene's layout, before any data), and the frames' plans (for the caller's
 //! compute budget, [`Prepared::estimates`]).
+//!
+//! **One colour range.** Every frame's periodograms are drawn with one colour range: the
+//! last frame's (the shared range `render` gives that frame's columns,
+//! [`figure::figure_columns`]). For a prefix the last frame shows all N points, so the GIF
+//! ends on the still comparison `render` draws and a colour means the same power in every
+//! frame (each frame normalised on its own made the spectrum flicker as k grew); a few
+//! points' noisier periodogram shows its values beyond that range at its ends. A moving
+//! scene's points do not move, so its periodograms and their range are the same in every
+//! frame anyway. The last frame is therefore computed first (its results kept and drawn
+//! last): the first frame appears after two frames' work.
 
 use super::{ColumnResults, ColumnsError, Evaluator};
 use crate::core::budget::Estimate;
@@ -16,6 +26,7 @@ use crate::core::cancel::Cancel;
 use crate::export::figure::{comparison_file_name, comparison_size, Aspect, FileFormat};
 use crate::export::publish::{picture, Target};
 use crate::export::{gif, ExportError};
+use crate::model::{ColumnData, FigureContext};
 use crate::scene::graph::{self, Plan};
 use crate::scene::{animation, figure, Scene};
 use std::collections::HashMap;
@@ -134,29 +145,74 @@ pub fn prepare(
     })
 }
 
-/// Computes and draws every frame of `prepared` and returns the GIF's bytes; `on_frame(i, n)`
-/// is called after frame i of n is encoded. Nothing is written here.
+/// What [`render_gif`] reports after each frame is encoded.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FrameDone {
+    /// The frame encoded (0-based).
+    pub index: usize,
+    /// How many frames the animation has.
+    pub frames: usize,
+    /// The colour range (log10 P) its periodograms were drawn with: the animation's one range
+    /// (see the module docs); `None` when it draws no periodogram.
+    pub spectrum_range: Option<(f32, f32)>,
+}
+
+/// Evaluates frame `i` (its scene and plan): every column's results, or why not.
+fn evaluate_frame(
+    i: usize,
+    scene: &Scene,
+    plan: &Arc<Plan>,
+    eval: &Evaluator,
+    cancel: &Cancel,
+) -> Result<ColumnResults, AnimationError> {
+    if cancel.is_cancelled() {
+        return Err(AnimationError::Cancelled);
+    }
+    eval.evaluate_columns(scene, plan.clone(), cancel)
+        .map_err(|e| match e {
+            ColumnsError::Cancelled => AnimationError::Cancelled,
+            ColumnsError::Failed(e) => AnimationError::Failed(format!("frame {i}: {e}")),
+        })
+}
+
+/// The shared colour range of the periodograms of a frame's figure columns (`None`: none).
+fn columns_range(columns: &[(FigureContext, ColumnData)]) -> Option<(f32, f32)> {
+    columns.iter().find_map(|(ctx, _)| ctx.spectrum_range)
+}
+
+/// Computes and draws every frame of `prepared` and returns the GIF's bytes; `on_frame` is
+/// called after each frame is encoded. The last frame is computed first: its periodograms'
+/// colour range is every frame's (see the module docs). Nothing is written here.
 pub fn render_gif(
     prepared: &Prepared,
     eval: &Evaluator,
     cancel: &Cancel,
-    on_frame: &mut dyn FnMut(usize, usize),
+    on_frame: &mut dyn FnMut(FrameDone),
 ) -> Result<Vec<u8>, AnimationError> {
     let count = prepared.frames.len();
+    let Some((last_scene, last_plan)) = prepared.frames.last() else {
+        return Err(AnimationError::Failed("no frames".into()));
+    };
+    let last_results = evaluate_frame(count - 1, last_scene, last_plan, eval, cancel)?;
+    let range = figure::figure_columns(last_scene, &last_results, &prepared.stem)
+        .map(|columns| columns_range(&columns))
+        .map_err(|e| AnimationError::Failed(e.to_string()))?;
+    let mut last = Some(last_results);
     let mut writer: Option<gif::GifWriter> = None;
     let mut first_size = (0, 0);
     for (i, (scene, plan)) in prepared.frames.iter().enumerate() {
-        if cancel.is_cancelled() {
-            return Err(AnimationError::Cancelled);
-        }
-        let results = eval
-            .evaluate_columns(scene, plan.clone(), cancel)
-            .map_err(|e| match e {
-                ColumnsError::Cancelled => AnimationError::Cancelled,
-                ColumnsError::Failed(e) => AnimationError::Failed(format!("frame {i}: {e}")),
-            })?;
-        let columns = figure::figure_columns(scene, &results, &prepared.stem)
+        let results = match last.take_if(|_| i + 1 == count) {
+            Some(r) => r,
+            None => evaluate_frame(i, scene, plan, eval, cancel)?,
+        };
+        let mut columns = figure::figure_columns(scene, &results, &prepared.stem)
             .map_err(|e| AnimationError::Failed(e.to_string()))?;
+        if range.is_some() {
+            for (ctx, _) in &mut columns {
+                ctx.spectrum_range = range;
+            }
+        }
+        let spectrum_range = columns_range(&columns);
         let publication = figure::publication(scene, columns, &prepared.stem);
         let (w, h, mut rgba, _) = picture(
             &publication,
@@ -192,7 +248,11 @@ pub fn render_gif(
         };
         gif.frame(&mut rgba)
             .map_err(|e| AnimationError::Failed(e.to_string()))?;
-        on_frame(i, count);
+        on_frame(FrameDone {
+            index: i,
+            frames: count,
+            spectrum_range,
+        });
     }
     let Some(gif) = writer else {
         return Err(AnimationError::Failed("no frames".into()));

@@ -1,6 +1,7 @@
 //! The application: scene, engine, controls, and where each part of the window goes. It owns
 //! the state the panels and components are lent each frame; nothing below it imports it.
 
+use super::animated::GifSaver;
 use super::columns::{self, Columns};
 use super::dropped::{self, PointImport};
 use super::figures::{self, FigureRequests};
@@ -68,6 +69,8 @@ pub struct SamplescopeApp {
     figures: FigureRequests,
     /// Renders and writes requested figures off the UI thread.
     pub saver: figures::Saver,
+    /// Makes the animated GIF of an animated scene off the UI thread.
+    pub gif: GifSaver,
     /// The pictures the column panels drew in the last frame.
     pictures: Vec<Picture>,
     /// What the window still has to do once shown: fit the monitor, go full screen.
@@ -179,6 +182,7 @@ impl SamplescopeApp {
             applied_style: None,
             figures: FigureRequests::default(),
             saver: figures::Saver::default(),
+            gif: GifSaver::default(),
             pictures: Vec::new(),
             window_start: WindowStart {
                 // eframe stores the window's size and state under "window" (persist_window).
@@ -603,7 +607,11 @@ impl SamplescopeApp {
 
     /// The comparison's save menu, the figure folder and scale, and the last save's outcome.
     fn figures_ui(&mut self, ui: &mut egui::Ui) {
-        self.figures.comparison_menu_ui(ui);
+        let animation = self
+            .scene
+            .animates()
+            .map(|_| (self.scene.animation.frames, self.scene.animation.fps));
+        self.figures.comparison_menu_ui(ui, animation);
         let label = ui.label("into");
         ui.add(
             egui::TextEdit::singleline(&mut self.view.figure_dir)
@@ -625,6 +633,7 @@ impl SamplescopeApp {
         if let Some(status) = &self.saver.status {
             ui.small(status);
         }
+        self.gif.ui(ui);
     }
 
     /// Lecture mode, its scale, and the controls and full-screen toggles.
@@ -831,6 +840,19 @@ impl eframe::App for SamplescopeApp {
             self.saver.start(&ctx, snapshot, requests, dir);
         }
         self.saver.poll(&ctx);
+        if let Some(scale) = self.figures.take_gif() {
+            self.gif.start(
+                &ctx,
+                &self.scene,
+                &figures::scene_stem(&self.scene_name),
+                scale,
+                crate::export::figure::Aspect::SLIDE,
+                &self.budget,
+                self.engine.evaluator().clone(),
+                std::path::PathBuf::from(self.view.figure_dir.trim()),
+            );
+        }
+        self.gif.poll();
         if !self.engine.is_idle() {
             ctx.request_repaint_after(Duration::from_millis(30));
         }

@@ -373,9 +373,10 @@ impl Grid {
     }
 }
 
-/// The title of column `cx.column`: its pattern, N, seed (and the pair of dimensions shown of a
-/// column in D > 2 dimensions), labelled from the scene its points
-/// were computed for (a recompute may be running); an imported set has its own size and no seed.
+/// The title of column `cx.column`: its pattern, the points shown, seed (and the pair of
+/// dimensions shown of a column in D > 2 dimensions), labelled from the scene its points were
+/// computed for (a recompute may be running); an imported set has its own size and no seed.
+/// The points shown are `N = n`, or `k = k of n` while a prefix shows the first k.
 fn column_header(cx: &PanelCx<'_>) -> String {
     let ci = cx.column;
     let scene: &Scene = cx.scene;
@@ -383,7 +384,7 @@ fn column_header(cx: &PanelCx<'_>) -> String {
         return String::new();
     };
     match &column.points {
-        Some(p) => format!("{} · N = {}", column.title(), p.points.len()),
+        Some(_) => format!("{} · {}", column.title(), shown_points(scene, ci)),
         None => {
             let slot = cx.get::<PointsData>();
             let lab = slot
@@ -397,12 +398,23 @@ fn column_header(cx: &PanelCx<'_>) -> String {
                 format!(" · x{} × x{} of D = {}", c.project.0, c.project.1, c.dims)
             };
             format!(
-                "{} · N = {} · seed {}{projection}",
+                "{} · {} · seed {}{projection}",
                 c.title(),
-                lab.n,
+                shown_points(lab, ci),
                 c.seed
             )
         }
+    }
+}
+
+/// The points column `c` of `scene` shows: `N = n`, or `k = k of n` when a prefix shows
+/// fewer than all of them.
+fn shown_points(scene: &Scene, c: usize) -> String {
+    let (k, n) = (scene.shown_n(c), scene.column_n(c));
+    if k < n {
+        format!("k = {k} of {n}")
+    } else {
+        format!("N = {n}")
     }
 }
 
@@ -429,5 +441,19 @@ mod tests {
         let mut all = [columns, docks].concat();
         all.sort();
         assert_eq!(all, PanelKind::ALL.to_vec());
+    }
+
+    #[test]
+    fn the_header_shows_the_prefix_k_of_n_while_one_is_shown() {
+        let mut scene = Scene {
+            n: 1024,
+            ..Scene::default()
+        };
+        assert_eq!(shown_points(&scene, 0), "N = 1024");
+        scene.prefix = Some(37);
+        assert_eq!(shown_points(&scene, 0), "k = 37 of 1024");
+        // A prefix of all the points (or more than an imported set has) shows N.
+        scene.prefix = Some(1024);
+        assert_eq!(shown_points(&scene, 0), "N = 1024");
     }
 }

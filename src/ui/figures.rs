@@ -57,6 +57,9 @@ struct PanelRect {
 #[derive(Debug, Default)]
 pub struct FigureRequests {
     queue: Vec<Request>,
+    /// The scale of an animated GIF of the comparison asked for (the app's
+    /// [`super::animated::GifSaver`] makes it).
+    gif: Option<u32>,
     panels: Vec<PanelRect>,
 }
 
@@ -69,6 +72,11 @@ impl FigureRequests {
     /// Takes every queued request.
     pub fn take(&mut self) -> Vec<Request> {
         std::mem::take(&mut self.queue)
+    }
+
+    /// Takes the animated GIF asked for (its scale), if any.
+    pub fn take_gif(&mut self) -> Option<u32> {
+        self.gif.take()
     }
 
     /// Records where a panel of figure `kind` was drawn this frame.
@@ -112,10 +120,26 @@ impl FigureRequests {
         });
     }
 
-    /// A "Save comparison" menu.
-    pub fn comparison_menu_ui(&mut self, ui: &mut egui::Ui) {
+    /// A "Save comparison" menu; for an animated scene (`animation`: its frames and rate, as
+    /// the GIF's hover text says them) also its animated GIF at 1× and 2×.
+    pub fn comparison_menu_ui(&mut self, ui: &mut egui::Ui, animation: Option<(usize, f64)>) {
         ui.menu_button("Save comparison", |ui| {
             self.outputs_ui(ui, Target::Comparison, false);
+            if let Some((frames, fps)) = animation {
+                ui.separator();
+                for scale in 1..=2 {
+                    let r = ui
+                        .button(format!("Animated GIF {scale}×"))
+                        .on_hover_text(format!(
+                            "The scene's animation ({frames} frames at {fps} fps, looping) as \
+                         `render --format gif` writes it"
+                        ));
+                    if r.clicked() {
+                        self.gif = Some(scale);
+                        ui.close();
+                    }
+                }
+            }
         })
         .response
         .on_hover_text("Every column as one figure (Ctrl+Shift+S)");

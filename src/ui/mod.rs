@@ -16,7 +16,8 @@
 //! panels/<name>        one panel each: a struct implementing panels::Panel, reading a PanelCx
 //! panels (mod.rs)      the Panel trait and PanelCx
 //! widgets/             image view (texture cache), parameter editors, status labels
-//! figures              figure requests (the outbox lent to panels), the background saver
+//! figures, animated     figure requests (the outbox lent to panels), the background saver;
+//!                      the animated GIF's saver (engine::animation, progress, cancel)
 //! view, results        shared display state; the engine's results as the UI holds them (the one
 //!                      decoder of the graph's values: panels get plain `model` data, `Slot`)
 //! gpu                  the wgpu display pipelines
@@ -26,6 +27,7 @@
 //! need as arguments. The state of a frame (figure requests, where panels were drawn, whether
 //! wall times are shown) travels in that context, not in egui's temporary data.
 
+pub mod animated;
 pub mod app;
 pub mod columns;
 pub mod dropped;

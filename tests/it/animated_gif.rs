@@ -192,17 +192,52 @@ fn a_prefix_playback_grows_frame_by_frame_at_the_scene_s_rate() {
             .sum();
         sum as f64 / rgb.len() as f64
     };
-    let (first, last) = (still(Some(8)), still(None));
+    let last = still(None);
     let (f0, f7) = (&frames[0].1, &frames[7].1);
-    assert!(
-        diff(&first, f0) < 2.0,
-        "frame 0 vs 8 points: {}",
-        diff(&first, f0)
-    );
+    // The last frame is the still comparison of all 64 points (up to the palette).
     assert!(
         diff(&last, f7) < 2.0,
         "frame 7 vs 64 points: {}",
         diff(&last, f7)
+    );
+    // Frame 0 is the comparison of its 8 points with the periodogram in the last frame's
+    // colour range (the animation's one range), drawn here by the library.
+    let first = {
+        use samplescope::core::cancel::Cancel;
+        use samplescope::engine::Evaluator;
+        use samplescope::export::figure::Aspect;
+        use samplescope::export::publish::{picture, Target};
+        use samplescope::scene::{figure, Scene};
+        let scene = samplescope::scene::Scene::from_ron(PREFIX, "fill.ron").unwrap();
+        let eval = Evaluator::default();
+        let columns = |s: &Scene| {
+            let mut results = vec![std::collections::HashMap::new(); s.columns.len()];
+            eval.evaluate(s, &Cancel::never(), &mut |c, k, r| {
+                results[c].insert(k, r);
+            });
+            figure::figure_columns(s, &results, "fill").unwrap()
+        };
+        let range = columns(&scene.frame(7).unwrap())[0].0.spectrum_range;
+        let s0 = scene.frame(0).unwrap();
+        assert_eq!(s0.prefix, Some(8));
+        let mut c0 = columns(&s0);
+        assert_ne!(
+            c0[0].0.spectrum_range, range,
+            "8 points have a range of their own"
+        );
+        for (ctx, _) in &mut c0 {
+            ctx.spectrum_range = range;
+        }
+        let p = figure::publication(&s0, c0, "fill");
+        let (_, _, rgba, _) = picture(&p, Target::Comparison, 1, Aspect::SLIDE).unwrap();
+        rgba.chunks_exact(4)
+            .flat_map(|p| [p[0], p[1], p[2]])
+            .collect::<Vec<u8>>()
+    };
+    assert!(
+        diff(&first, f0) < 2.0,
+        "frame 0 vs 8 points: {}",
+        diff(&first, f0)
     );
     assert!(
         diff(&first, f7) > 2.0 * diff(&first, f0),
@@ -257,4 +292,206 @@ fn gif_refusals_are_one_line_before_any_work() {
         &["does not animate", "motion", "sobol", "poisson-dart"],
     );
     std::fs::remove_dir_all(&dir).ok();
+}
+
+/// Every frame's periodograms share one colour range, the last frame's (all N points), so the
+/// spectrum does not flicker as the prefix grows; drawn on its own, frame 0's range differs.
+#[test]
+fn every_frame_uses_the_last_frame_s_spectrum_range() {
+    use samplescope::core::cancel::Cancel;
+    use samplescope::engine::animation::{prepare, render_gif};
+    use samplescope::engine::Evaluator;
+    use samplescope::export::figure::Aspect;
+    use samplescope::scene::graph::NodeKind;
+    use samplescope::scene::{figure, Scene};
+    use std::collections::HashMap;
+    let scene = Scene::from_ron(PREFIX, "fill.ron").unwrap();
+    let prepared = prepare(&scene, "fill", 1, Aspect::SLIDE, "animation.frames").unwrap();
+    let eval = Evaluator::default();
+    let mut ranges = Vec::new();
+    let bytes = render_gif(&prepared, &eval, &Cancel::never(), &mut |f| {
+        assert_eq!(f.index, ranges.len());
+        assert_eq!(f.frames, 8);
+        ranges.push(f.spectrum_range.expect("the scene draws a periodogram"));
+    })
+    .unwrap();
+    assert_eq!(ranges.len(), 8);
+    assert!(ranges.iter().all(|r| *r == ranges[7]), "{ranges:?}");
+    // Each frame's own range (what `render` gives that frame's still figure).
+    let own = |i: usize| {
+        let s = scene.frame(i).unwrap();
+        let mut results = vec![HashMap::new(); s.columns.len()];
+        eval.evaluate(&s, &Cancel::never(), &mut |c, k: NodeKind, r| {
+            results[c].insert(k, r);
+        });
+        let columns = figure::figure_columns(&s, &results, "fill").unwrap();
+        columns[0].0.spectrum_range.unwrap()
+    };
+    assert_eq!(
+        own(7),
+        ranges[7],
+        "the last frame's range is its still figure's"
+    );
+    assert_ne!(
+        own(0),
+        ranges[0],
+        "frame 0 on its own would use another range"
+    );
+    // The same GIF again: deterministic.
+    let again = render_gif(&prepared, &eval, &Cancel::never(), &mut |_| {}).unwrap();
+    assert_eq!(bytes, again);
+}
+
+/// The GUI's Save comparison menu: an animated scene offers its animated GIF, which is the
+/// file `render --format gif` writes, byte for byte; a still scene offers none; a GIF beyond
+/// the budget is refused before any work; a cancelled one leaves no file.
+mod gui {
+    use super::*;
+    use egui_kittest::kittest::Queryable;
+    use egui_kittest::Harness;
+    use samplescope::scene::graph::NodeKind;
+    use samplescope::scene::Scene;
+    use samplescope::ui::SamplescopeApp;
+    use std::time::{Duration, Instant};
+
+    fn harness(text: &str, name: &str, dir: &Path) -> Harness<'static, SamplescopeApp> {
+        let scene = Scene::from_ron(text, name).unwrap();
+        let (name, dir) = (name.to_string(), dir.display().to_string());
+        let mut h = Harness::builder()
+            .with_size(eframe::egui::Vec2::new(1400.0, 1000.0))
+            .build_eframe(move |cc| {
+                let mut app = crate::hermetic_app(cc);
+                app.view.show_timings = false;
+                app.view.figure_dir = dir.clone();
+                app.set_scene(scene.clone(), name.clone());
+                app
+            });
+        crate::settle(&mut h, 1);
+        h
+    }
+
+    fn open_menu(h: &mut Harness<'static, SamplescopeApp>) {
+        h.get_by_label("Save comparison").click();
+        h.run_steps(2);
+    }
+
+    /// Steps until the GIF saver is done; its status.
+    fn finished(h: &mut Harness<'static, SamplescopeApp>) -> String {
+        let deadline = Instant::now() + Duration::from_secs(120);
+        while h.state().gif.busy() {
+            h.step();
+            std::thread::sleep(Duration::from_millis(10));
+            assert!(Instant::now() < deadline, "GIF not finished");
+        }
+        h.state().gif.status.clone().unwrap_or_default()
+    }
+
+    #[test]
+    fn save_menu_writes_the_gif_render_writes() {
+        let dir = temp_dir("gui");
+        let figures = dir.join("figures");
+        let mut h = harness(PREFIX, "fill.ron", &figures);
+        open_menu(&mut h);
+        h.get_by_label("Animated GIF 1×").click();
+        h.step();
+        assert!(h.state().gif.busy() || h.state().gif.status.is_some());
+        let status = finished(&mut h);
+        let path = figures.join("fill_n64_comparison@1x.gif");
+        assert!(
+            status.starts_with("saved ") && status.contains("8 frames"),
+            "{status}"
+        );
+        let ours = std::fs::read(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+        let file = scene_file(&dir, "fill.ron", PREFIX);
+        let out = dir.join("cli");
+        let o = render(&[&file, "--out", out.to_str().unwrap(), "--format", "gif"]);
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        let theirs = std::fs::read(out.join("fill_n64_comparison@1x.gif")).unwrap();
+        assert!(ours == theirs, "the GUI's GIF differs from render's");
+        // Nothing else was left in the folder (no partial file).
+        assert_eq!(only_file(&figures), path);
+        std::fs::remove_dir_all(&dir).ok();
+    }
+
+    #[test]
+    fn a_still_scene_offers_no_gif_and_a_moving_one_does() {
+        let dir = temp_dir("gui-still");
+        let still = MOTION.replace("motion: Some((velocity_x: 2.7, frame_rate: 24.0)),", "");
+        let mut h = harness(&still, "still.ron", &dir);
+        open_menu(&mut h);
+        h.get_by_label("PNG 1×");
+        assert!(h.query_by_label_contains("Animated GIF").is_none());
+        let mut h = harness(MOTION, "drift.ron", &dir);
+        open_menu(&mut h);
+        h.get_by_label("Animated GIF 1×");
+        h.get_by_label("Animated GIF 2×");
+        std::fs::remove_dir_all(&dir).ok();
+    }
+
+    #[test]
+    fn a_gif_over_the_budget_is_refused_before_any_work() {
+        let dir = temp_dir("gui-budget");
+        let figures = dir.join("figures");
+        let mut h = harness(PREFIX, "fill.ron", &figures);
+        let eval = h.state().engine.evaluator().clone();
+        // 1000 frames at 2× are beyond the GIF's pixel budget.
+        h.state_mut().scene.animation.frames = 1000;
+        crate::settle(&mut h, 1);
+        let before_spectra = eval.count(NodeKind::Spectrum);
+        open_menu(&mut h);
+        h.get_by_label("Animated GIF 2×").click();
+        h.step();
+        assert!(!h.state().gif.busy());
+        let status = h.state().gif.status.clone().unwrap_or_default();
+        assert!(
+            status.starts_with("GIF not saved: animation.frames = 1000:")
+                && status.contains("2..="),
+            "{status}"
+        );
+        assert_eq!(
+            eval.count(NodeKind::Spectrum),
+            before_spectra,
+            "work was done"
+        );
+        assert!(!figures.exists());
+        // The compute budget: a budget of almost nothing refuses the GIF the same way.
+        h.state_mut().scene.animation.frames = 8;
+        h.state_mut().budget.seconds = 1e-9;
+        h.step();
+        open_menu(&mut h);
+        h.get_by_label("Animated GIF 1×").click();
+        h.step();
+        assert!(!h.state().gif.busy());
+        let status = h.state().gif.status.clone().unwrap_or_default();
+        assert!(status.starts_with("GIF not saved: "), "{status}");
+        assert!(!figures.exists());
+        std::fs::remove_dir_all(&dir).ok();
+    }
+
+    #[test]
+    fn a_cancelled_gif_leaves_no_file() {
+        let dir = temp_dir("gui-cancel");
+        let figures = dir.join("figures");
+        // Many frames of a larger scene: far from done when cancelled.
+        let text = PREFIX
+            .replace("n: 64,", "n: 4096,")
+            .replace("frames: 8,", "frames: 200,");
+        let mut h = harness(&text, "fill.ron", &figures);
+        open_menu(&mut h);
+        h.get_by_label("Animated GIF 1×").click();
+        h.run_steps(2);
+        assert!(h.state().gif.busy());
+        h.get_by_label_contains("saving GIF: frame");
+        h.get_by_label("Cancel GIF").click();
+        let status = finished(&mut h);
+        assert_eq!(
+            status,
+            "GIF cancelled: fill_n4096_comparison@1x.gif not written"
+        );
+        let left: Vec<_> = std::fs::read_dir(&figures)
+            .map(|d| d.map(|e| e.unwrap().path()).collect())
+            .unwrap_or_default();
+        assert!(left.is_empty(), "{left:?}");
+        std::fs::remove_dir_all(&dir).ok();
+    }
 }

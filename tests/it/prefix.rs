@@ -186,6 +186,30 @@ fn a_bad_prefix_names_the_field_and_the_range() {
     assert!(e.contains("animation.fps") && e.contains("50"), "{e}");
 }
 
+/// The shipped scenes' notes name the player's controls, not the draw-only slider it replaced.
+#[test]
+fn notes_name_the_player_s_controls() {
+    use samplescope::scene::BUILTIN;
+    for (name, text) in BUILTIN {
+        let s = Scene::from_ron(text, name).unwrap();
+        assert!(!s.notes.contains("first i points"), "{name}: {}", s.notes);
+        if s.notes.contains("first k points") {
+            assert!(
+                s.animates().is_some() || s.columns.iter().any(|c| c.pattern.plays_in_order()),
+                "{name}: its notes name the player, which it cannot show"
+            );
+        }
+    }
+    let text = BUILTIN
+        .iter()
+        .find(|(n, _)| *n == "dart-throwing-step-by-step.ron")
+        .unwrap()
+        .1;
+    let dart = Scene::from_ron(text, "dart").unwrap();
+    assert!(dart.notes.contains("Play") && dart.notes.contains("'first k points'"));
+    assert!(dart.plays_prefix());
+}
+
 /// Which scenes animate: motion, or every column in order; the others do not.
 #[test]
 fn which_shipped_scenes_animate() {
@@ -247,6 +271,7 @@ mod gui {
         let mut h = harness("dart-throwing-step-by-step.ron");
         assert_eq!(shown(&h), 256);
         h.get_by_label_contains("first 256 = 2^8 of 256 points");
+        h.get_by_label_contains("dart throwing · N = 256 · seed 4");
         h.get_by_role_and_label(Role::Slider, "first k points")
             .set_value_accesskit(10.0);
         h.step();
@@ -254,6 +279,9 @@ mod gui {
         assert_eq!(h.state().scene.prefix, Some(10));
         assert_eq!(shown(&h), 10);
         h.get_by_label_contains("first 10 of 256 points");
+        // The column's header shows the prefix, not N.
+        h.get_by_label_contains("dart throwing · k = 10 of 256 · seed 4");
+        assert!(h.query_by_label_contains("· N = 256").is_none());
         // One point more, one fewer.
         h.get_by_label("Step forward").click();
         h.step();
