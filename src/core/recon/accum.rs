@@ -86,10 +86,10 @@ pub(crate) fn tile_sorted(points: &[DVec2], values: &[f64], w: usize) -> Vec<(DV
 const SMALL: usize = 16;
 
 /// Adds the separable weights wt = hx[a]·hy[b] to the pixels (i0 + a, j0 + b): the four sums
-/// [wt·v, wt, |wt|, |wt|·v].
+/// [wt·v, wt, |wt|, |wt|·v] (or the two of [`TwoSums`]).
 #[inline(always)]
-fn splat_rows(
-    cells: &mut [[f64; 4]],
+fn splat_rows<C: Sums>(
+    cells: &mut [C],
     w: usize,
     i0: usize,
     j0: usize,
@@ -107,7 +107,7 @@ fn splat_rows(
         // [wy·v, wy] scaled by wx: one packed multiply-add per tap, and the absolute pair.
         let wyv = wy * v;
         for (cell, &wx) in row.iter_mut().zip(hx) {
-            add(cell, wx * wy, wx * wyv, v);
+            cell.add(wx * wy, wx * wyv, v);
         }
     }
 }
@@ -120,6 +120,218 @@ fn add(cell: &mut [f64; 4], wt: f64, wtv: f64, v: f64) {
     cell[1] += wt;
     cell[2] += a;
     cell[3] += a * v;
+}
+
+/// A pixel's running sums: the four [Σw·v, Σw, Σ|w|, Σ|w|·v] ([`FourSums`]), or the two
+/// [Σw·v, Σw] that decide the pixel when no weight is negative ([`TwoSums`]).
+pub(crate) trait Sums: Copy + Default + Send + Sync {
+    /// Whether this is the two-sum layout (usable only under its conditions).
+    const TWO: bool;
+    /// Adds one tap of weight `wt` (and `wtv` = wt·v) for a sample of value `v`.
+    fn add(&mut self, wt: f64, wtv: f64, v: f64);
+    /// The four sums the estimator reads ([`finish_sums`]).
+    fn four(&self) -> [f64; 4];
+}
+
+/// The four sums of every kernel.
+pub(crate) type FourSums = [f64; 4];
+
+impl Sums for FourSums {
+    const TWO: bool = false;
+    #[inline(always)]
+    fn add(&mut self, wt: f64, wtv: f64, v: f64) {
+        add(self, wt, wtv, v)
+    }
+    #[inline(always)]
+    fn four(&self) -> [f64; 4] {
+        *self
+    }
+}
+
+/// [Σw·v, Σw] for weights that are all ≥ 0 (or −0), at most [`FACTOR_BOUND`]² in size, with
+/// values at most [`VALUE_BOUND`] in size. Then Σ|w| is Σw bit for bit (the same terms added
+/// in the same order), so the estimator never floors (Σw ≥ c·Σ|w| for c ≤ ½), and Σ|w|·v,
+/// which only the floored branch reads, is finite like Σw·v (no sum can overflow under the
+/// bounds): [`Sums::four`] gives [Σw·v, Σw, Σw, Σw·v] and the estimator's every output bit
+/// and flag are those of the four sums. Half the memory traffic and adds per tap.
+pub(crate) type TwoSums = [f64; 2];
+
+impl Sums for TwoSums {
+    const TWO: bool = true;
+    #[inline(always)]
+    fn add(&mut self, wt: f64, wtv: f64, _v: f64) {
+        self[0] += wtv;
+        self[1] += wt;
+    }
+    #[inline(always)]
+    fn four(&self) -> [f64; 4] {
+        [self[0], self[1], self[1], self[0]]
+    }
+}
+
+/// Largest separable factor |h| for which [`TwoSums`] is used (|w| ≤ 10¹⁰⁰).
+const FACTOR_BOUND: f64 = 1e50;
+/// Largest sample value |v| for which [`TwoSums`] is used (|w·v| ≤ 10²⁵⁰, and sums of up to
+/// 2⁶⁴ such terms stay below 10²⁷⁰: finite).
+const VALUE_BOUND: f64 = 1e150;
+
+/// Most factors held at once by [`splat_separable`] (16 MiB); more samples are splatted in
+/// blocks.
+const FACTOR_BUDGET: usize = 1 << 21;
+
+/// The separable factors of a block of samples, evaluated once each (in parallel) and read by
+/// every band of output rows the sample reaches.
+struct FactorTable {
+    /// Per sample, its pixel range (i0, i1, j0, j1), `None` when it reaches no pixel.
+    ranges: Vec<Option<(usize, usize, usize, usize)>>,
+    /// Per sample, `stride` slots: its factors along x from i0, then along y from j0 at
+    /// `cap`.
+    h: Vec<f64>,
+    cap: usize,
+    /// Whether every factor lies in [0, FACTOR_BOUND] ([`TwoSums`] may be used).
+    two_sums: bool,
+}
+
+impl FactorTable {
+    fn new<K: ReconKernel + ?Sized>(
+        samples: &[(DVec2, f64)],
+        kernel: &K,
+        inv_scale: f64,
+        r_px: f64,
+        w: usize,
+    ) -> Self {
+        use rayon::prelude::*;
+        let ranges: Vec<_> = samples
+            .iter()
+            .map(|&(x, _)| {
+                let (j0, j1) = pixel_range(x.y, r_px, w)?;
+                let (i0, i1) = pixel_range(x.x, r_px, w)?;
+                Some((i0, i1, j0, j1))
+            })
+            .collect();
+        let cap = ranges
+            .iter()
+            .flatten()
+            .map(|&(i0, i1, j0, j1)| (i1 - i0).max(j1 - j0) + 1)
+            .max()
+            .unwrap_or(0);
+        let mut h = vec![0.0; samples.len() * 2 * cap];
+        let two_sums = cap == 0
+            || h.par_chunks_mut(2 * cap)
+                .zip(samples.par_iter().zip(ranges.par_iter()))
+                .with_min_len(64)
+                .map(|(slots, (&(x, _), range))| {
+                    let Some((i0, i1, j0, j1)) = *range else {
+                        return true;
+                    };
+                    let (hx, hy) = slots.split_at_mut(cap);
+                    let mut ok = true;
+                    for (h, i) in hx.iter_mut().zip(i0..=i1) {
+                        *h = kernel.factor(offset(i, x.x, inv_scale)).unwrap_or(0.0);
+                        ok &= (0.0..=FACTOR_BOUND).contains(h);
+                    }
+                    for (h, j) in hy.iter_mut().zip(j0..=j1) {
+                        *h = kernel.factor(offset(j, x.y, inv_scale)).unwrap_or(0.0);
+                        ok &= (0.0..=FACTOR_BOUND).contains(h);
+                    }
+                    ok
+                })
+                .reduce(|| true, |a, b| a && b);
+        FactorTable {
+            ranges,
+            h,
+            cap,
+            two_sums,
+        }
+    }
+}
+
+/// Splats `samples` (pixel units, in the order given) with a separable kernel: the factors of
+/// each block of samples are evaluated once, in parallel ([`FactorTable`]), then added in
+/// parallel over bands of output rows, each band visiting the samples in order and adding to
+/// its own rows only. Every pixel receives the same terms, with the same bits, in the same
+/// order as [`Accum::splat`] on each sample in turn, so the image is that of the serial splat
+/// bit for bit (a test checks it, kernel by kernel). When no factor is negative and the values
+/// are bounded it keeps two sums per pixel instead of four ([`TwoSums`], same bits); a kernel
+/// whose factors turn out negative in a later block is splatted again with four.
+/// Cancellable every 4096 samples per band.
+fn splat_separable<K: ReconKernel + ?Sized>(
+    acc: Accum<'_, K>,
+    samples: &[(DVec2, f64)],
+    n: usize,
+    start: std::time::Instant,
+    cancel: &crate::core::cancel::Cancel,
+) -> Result<Reconstruction, ReconError> {
+    debug_assert!(acc.separable);
+    let mut first = None;
+    if samples.iter().all(|s| s.1.abs() <= VALUE_BOUND) {
+        if let Some(cells) = splat_blocks::<K, TwoSums>(&acc, samples, &mut first, cancel)? {
+            return finish_sums(acc.w, &cells, acc.floor, n, start.elapsed());
+        }
+    }
+    match splat_blocks::<K, FourSums>(&acc, samples, &mut first, cancel)? {
+        Some(cells) => finish_sums(acc.w, &cells, acc.floor, n, start.elapsed()),
+        None => unreachable!("four sums take every factor"),
+    }
+}
+
+/// The sums of every pixel, block of samples after block; `None` when `C` is [`TwoSums`] and a
+/// block has a factor outside [0, FACTOR_BOUND] (the first block's table is left in `first`
+/// for the next try).
+fn splat_blocks<K: ReconKernel + ?Sized, C: Sums>(
+    acc: &Accum<'_, K>,
+    samples: &[(DVec2, f64)],
+    first: &mut Option<FactorTable>,
+    cancel: &crate::core::cancel::Cancel,
+) -> Result<Option<Vec<C>>, ReconError> {
+    use rayon::prelude::*;
+    let w = acc.w;
+    let per_sample = 2 * (2.0 * acc.r_px + 3.0).min(w as f64 + 1.0) as usize;
+    let block = (FACTOR_BUDGET / per_sample.max(1)).max(1);
+    let mut cells = vec![C::default(); w * w];
+    // Several bands per thread balance uneven sample densities.
+    let bands = (4 * rayon::current_num_threads()).clamp(1, 64).min(w);
+    let rows = w.div_ceil(bands);
+    for (b, chunk) in samples.chunks(block).enumerate() {
+        if cancel.is_cancelled() {
+            return Err(ReconError::Cancelled);
+        }
+        let table = match first.take().filter(|_| b == 0) {
+            Some(t) => t,
+            None => FactorTable::new(chunk, acc.kernel, acc.inv_scale, acc.r_px, w),
+        };
+        if C::TWO && !table.two_sums {
+            if b == 0 {
+                *first = Some(table);
+            }
+            return Ok(None);
+        }
+        let (cap, stride) = (table.cap, 2 * table.cap);
+        cells
+            .par_chunks_mut(rows * w)
+            .enumerate()
+            .try_for_each(|(band_index, band)| {
+                let (row0, row1) = (band_index * rows, band_index * rows + band.len() / w);
+                for (k, &(_, v)) in chunk.iter().enumerate() {
+                    if k % 4096 == 0 && cancel.is_cancelled() {
+                        return Err(ReconError::Cancelled);
+                    }
+                    let Some((i0, i1, j0, j1)) = table.ranges[k] else {
+                        continue;
+                    };
+                    let (jc0, jc1) = (j0.max(row0), j1.min(row1 - 1));
+                    if jc1 < jc0 {
+                        continue;
+                    }
+                    let slots = &table.h[k * stride..(k + 1) * stride];
+                    let hx = &slots[..i1 - i0 + 1];
+                    let hy = &slots[cap + (jc0 - j0)..cap + (jc1 - j0) + 1];
+                    splat_rows(band, w, i0, jc0 - row0, hx, hy, v);
+                }
+                Ok(())
+            })?;
+    }
+    Ok(Some(cells))
 }
 
 /// Running sums Σ w·v, Σ w, Σ |w| and Σ |w|·v per pixel (interleaved for locality).
@@ -210,12 +422,30 @@ impl<'k, K: ReconKernel + ?Sized> Accum<'k, K> {
         }
     }
 
-    /// Splats every sample of `samples` (pixel units), in parallel over bands of output rows:
-    /// each band visits the samples in the given order and adds only to its own rows, so every
-    /// pixel receives the same terms in the same order as [`Self::splat`] called on each sample
-    /// in turn — the same bits, whatever the number of bands or threads (a test checks this
-    /// against the serial loop). Cancellable every 4096 samples per band.
+    /// Splats every sample of `samples` (pixel units, in the order given) in parallel and
+    /// normalises: [`splat_separable`] for a separable kernel, else bands of output rows
+    /// ([`Self::splat_all_radial`]). The image is bit for bit that of [`Self::splat`] called on
+    /// each sample in turn, whatever the number of threads (a test checks it). `n` is the
+    /// number of samples reported, `start` when the reconstruction began.
     pub(crate) fn splat_all(
+        mut self,
+        samples: &[(DVec2, f64)],
+        n: usize,
+        start: std::time::Instant,
+        cancel: &crate::core::cancel::Cancel,
+    ) -> Result<Reconstruction, ReconError> {
+        if self.separable {
+            return splat_separable(self, samples, n, start, cancel);
+        }
+        self.splat_all_radial(samples, cancel)?;
+        self.finish(n, start.elapsed())
+    }
+
+    /// Splats every sample with a kernel that is not separable, in parallel over bands of
+    /// output rows: each band visits the samples in the given order and adds only to its own
+    /// rows, so every pixel receives the same terms in the same order as [`Self::splat`]
+    /// called on each sample in turn. Cancellable every 4096 samples per band.
+    fn splat_all_radial(
         &mut self,
         samples: &[(DVec2, f64)],
         cancel: &crate::core::cancel::Cancel,
@@ -225,14 +455,12 @@ impl<'k, K: ReconKernel + ?Sized> Accum<'k, K> {
         // Several bands per thread balance uneven sample densities.
         let bands = (4 * rayon::current_num_threads()).clamp(1, 64).min(w);
         let rows = w.div_ceil(bands);
-        let (kernel, separable, s, r_px) = (self.kernel, self.separable, self.inv_scale, self.r_px);
+        let (kernel, s, r_px) = (self.kernel, self.inv_scale, self.r_px);
         self.cells
             .par_chunks_mut(rows * w)
             .enumerate()
             .try_for_each(|(b, band)| {
                 let (row0, row1) = (b * rows, b * rows + band.len() / w);
-                let mut hx = Vec::new();
-                let mut hy = Vec::new();
                 for (k, &(x, v)) in samples.iter().enumerate() {
                     if k % 4096 == 0 && cancel.is_cancelled() {
                         return Err(ReconError::Cancelled);
@@ -248,25 +476,13 @@ impl<'k, K: ReconKernel + ?Sized> Accum<'k, K> {
                         continue;
                     };
                     let nx = i1 - i0 + 1;
-                    if separable {
-                        hx.clear();
-                        hx.extend(
-                            (i0..=i1).map(|i| kernel.factor(offset(i, x.x, s)).unwrap_or(0.0)),
-                        );
-                        hy.clear();
-                        hy.extend(
-                            (j0..=j1).map(|j| kernel.factor(offset(j, x.y, s)).unwrap_or(0.0)),
-                        );
-                        splat_rows(band, w, i0, j0 - row0, &hx, &hy, v);
-                    } else {
-                        for j in j0..=j1 {
-                            let dy = offset(j, x.y, s);
-                            let base = (j - row0) * w + i0;
-                            let row = &mut band[base..base + nx];
-                            for (a, cell) in row.iter_mut().enumerate() {
-                                let wt = kernel.weight(DVec2::new(offset(i0 + a, x.x, s), dy));
-                                add(cell, wt, wt * v, v);
-                            }
+                    for j in j0..=j1 {
+                        let dy = offset(j, x.y, s);
+                        let base = (j - row0) * w + i0;
+                        let row = &mut band[base..base + nx];
+                        for (a, cell) in row.iter_mut().enumerate() {
+                            let wt = kernel.weight(DVec2::new(offset(i0 + a, x.x, s), dy));
+                            add(cell, wt, wt * v, v);
                         }
                     }
                 }
@@ -294,9 +510,9 @@ impl<'k, K: ReconKernel + ?Sized> Accum<'k, K> {
 /// ```
 ///
 /// and the fill value where A = 0.
-pub(crate) fn finish_sums(
+pub(crate) fn finish_sums<C: Sums>(
     w: usize,
-    cells: &[[f64; 4]],
+    cells: &[C],
     floor: f64,
     samples: usize,
     wall_time: Duration,
@@ -309,9 +525,8 @@ pub(crate) fn finish_sums(
     // One pass. x·0 is NaN exactly when x is not finite, and a finite sum over a tiny
     // non-zero weight can still overflow: both make `bad` true.
     let mut bad = false;
-    for ((&[num, den, abs, num_abs], p), m) in
-        cells.iter().zip(pixels.iter_mut()).zip(mask.iter_mut())
-    {
+    for ((c, p), m) in cells.iter().zip(pixels.iter_mut()).zip(mask.iter_mut()) {
+        let [num, den, abs, num_abs] = c.four();
         let zero = abs == 0.0;
         let least = floor * abs;
         let low = den < least;
@@ -332,7 +547,7 @@ pub(crate) fn finish_sums(
         let pixel = cells
             .iter()
             .zip(&pixels)
-            .position(|(c, v)| !(c.iter().all(|x| x.is_finite()) && v.is_finite()))
+            .position(|(c, v)| !(c.four().iter().all(|x| x.is_finite()) && v.is_finite()))
             .unwrap_or(0);
         return Err(ReconError::NonFiniteWeight { pixel });
     }

@@ -153,14 +153,13 @@ fn splat_scattered<K: ReconKernel + ?Sized>(
     let sorted = tile_sorted(points, values, w);
     if parallel {
         check_cancel(cancel)?;
-        acc.splat_all(&sorted, cancel)?;
-    } else {
-        for (k, &(x, v)) in sorted.iter().enumerate() {
-            if k % 4096 == 0 {
-                check_cancel(cancel)?;
-            }
-            acc.splat(x, v);
+        return acc.splat_all(&sorted, points.len(), start, cancel);
+    }
+    for (k, &(x, v)) in sorted.iter().enumerate() {
+        if k % 4096 == 0 {
+            check_cancel(cancel)?;
         }
+        acc.splat(x, v);
     }
     acc.finish(points.len(), start.elapsed())
 }
