@@ -153,19 +153,35 @@ impl Evaluator {
         cancel: &Cancel,
         sink: &mut dyn FnMut(usize, NodeKind, Arc<NodeResult>),
     ) {
+        self.evaluate_updates(scene, plan, cancel, &mut |u: Update| {
+            if u.progress.is_none() {
+                sink(u.column, u.kind, u.result);
+            }
+        });
+    }
+
+    /// [`Self::evaluate_planned`] that hands `sink` every [`Update`] as the app's engine sends
+    /// them: results published while a node works (coarse ones, and final values before their
+    /// readout: `value_final`) as well as the final ones (`progress` is `None`). Benchmarks
+    /// time the complete picture with it.
+    pub fn evaluate_updates(
+        &self,
+        scene: &Scene,
+        plan: Arc<Plan>,
+        cancel: &Cancel,
+        sink: &mut dyn FnMut(Update),
+    ) {
         if cancel.is_cancelled() {
             return;
         }
-        struct Finals<'a>(&'a mut dyn FnMut(usize, NodeKind, Arc<NodeResult>));
-        impl Sink for Finals<'_> {
+        struct All<'a>(&'a mut dyn FnMut(Update));
+        impl Sink for All<'_> {
             fn node(&mut self, u: Update) {
-                if u.progress.is_none() {
-                    (self.0)(u.column, u.kind, u.result);
-                }
+                (self.0)(u)
             }
             fn finished(&mut self, _: u64, _: Duration) {}
         }
-        let mut sink = Finals(sink);
+        let mut sink = All(sink);
         let (tx, rx) = channel();
         let mut s = Scheduler::new(self.shared.clone(), tx);
         s.handle(

@@ -39,8 +39,13 @@ pub struct Update {
     /// The scene the result was computed for (labels and figures use it, never a newer one).
     pub scene: Arc<Scene>,
     pub result: Arc<NodeResult>,
-    /// `Some` for a coarse result while the node refines; `None` for the final one.
+    /// `Some` for a result published while the node works (a coarse one, or its final value
+    /// before its readout, see `value_final`); `None` for the final result.
     pub progress: Option<Steps>,
+    /// Whether the value is the node's final value, bit for bit: true for the final result and
+    /// for a final value published before its accuracy readout (the spectrum before its
+    /// measured error); false for a coarse result.
+    pub value_final: bool,
 }
 
 /// What drives the scheduler.
@@ -232,11 +237,12 @@ impl Scheduler {
                 scene: scene.clone(),
                 result: Arc::new(NodeResult::error(e)),
                 progress: None,
+                value_final: true,
             });
         }
         for p in &active.nodes {
             if let Some(r) = active.ready.get(&p.key) {
-                deliver(&active, p, r.clone(), None, sink);
+                deliver(&active, p, r.clone(), None, true, sink);
             }
         }
         self.active = Some(active);
@@ -267,7 +273,7 @@ impl Scheduler {
                 if let Some(e) = failed_input(p.deps.iter().map(|(k, _)| (k, &deps[k]))) {
                     let r = Arc::new(NodeResult::error(e));
                     active.ready.insert(p.key, r.clone());
-                    deliver(active, &active.nodes[i], r, None, sink);
+                    deliver(active, &active.nodes[i], r, None, true, sink);
                     changed = true;
                     continue;
                 }
@@ -323,7 +329,15 @@ impl Scheduler {
             wall,
             accuracy: partial.accuracy,
         });
-        deliver(active, &active.nodes[i], r, Some(partial.progress), sink);
+        let value_final = partial.value_final;
+        deliver(
+            active,
+            &active.nodes[i],
+            r,
+            Some(partial.progress),
+            value_final,
+            sink,
+        );
     }
 
     fn done(&mut self, job: u64, key: NodeKey, result: Option<NodeResult>, sink: &mut dyn Sink) {
@@ -341,7 +355,7 @@ impl Scheduler {
             if let Some(&i) = active.index.get(&key) {
                 if let std::collections::hash_map::Entry::Vacant(e) = active.ready.entry(key) {
                     e.insert(result.clone());
-                    deliver(active, &active.nodes[i], result, None, sink);
+                    deliver(active, &active.nodes[i], result, None, true, sink);
                 }
             }
         }
@@ -354,6 +368,7 @@ fn deliver(
     p: &Planned,
     result: Arc<NodeResult>,
     progress: Option<Steps>,
+    value_final: bool,
     sink: &mut dyn Sink,
 ) {
     for &c in &p.columns {
@@ -365,6 +380,7 @@ fn deliver(
             scene: active.scene.clone(),
             result: result.clone(),
             progress,
+            value_final,
         });
     }
 }

@@ -15,6 +15,9 @@ pub enum Accuracy {
     },
     /// Fast spectrum without a measured error: only the tolerance asked.
     SpectrumAsked { tolerance: f64 },
+    /// Fast spectrum shown while its error is being measured (the final result then carries
+    /// [`Accuracy::SpectrumMeasured`]).
+    SpectrumMeasuring { asked: f64 },
     /// The exact DFT.
     ExactDft,
     /// A partial spectrum: the mean of `done` of `of` realizations (relative noise 1/√done).
@@ -90,6 +93,9 @@ impl std::fmt::Display for Accuracy {
                 "rel. L2 error {relative_l2:.1e} (asked {asked:.0e}, {frequencies} freq.)"
             ),
             Accuracy::SpectrumAsked { tolerance } => write!(f, "asked {tolerance:.0e}"),
+            Accuracy::SpectrumMeasuring { asked } => {
+                write!(f, "asked {asked:.0e}, measuring the error…")
+            }
             Accuracy::ExactDft => f.write_str("exact DFT"),
             Accuracy::Realizations { done, of } => write!(
                 f,
@@ -143,6 +149,10 @@ mod tests {
                     frequencies: 512,
                 },
                 "rel. L2 error 3.1e-8 (asked 1e-6, 512 freq.)",
+            ),
+            (
+                Accuracy::SpectrumMeasuring { asked: 1e-6 },
+                "asked 1e-6, measuring the error…",
             ),
             (Accuracy::ExactDft, "exact DFT"),
             (

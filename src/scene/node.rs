@@ -220,12 +220,16 @@ pub type Deps = HashMap<NodeKind, Arc<NodeResult>>;
 /// What a job returns: its value and the accuracy reached, or the error that stopped it.
 pub type Output = Result<(NodeValue, Option<Accuracy>), NodeError>;
 
-/// A coarse result a node publishes while it refines, `progress` of the way (the last step
-/// is the node's final result and is returned, not published).
+/// A result a node publishes before it returns, `progress` of the way (the last step is the
+/// node's final result and is returned, not published): a coarse value while it refines, or
+/// (`value_final`) its final value while only its accuracy readout is still being measured.
 pub struct Partial {
     pub value: NodeValue,
     pub accuracy: Option<Accuracy>,
     pub progress: Steps,
+    /// The value is the node's final value, bit for bit (the picture is complete); only the
+    /// accuracy follows with the returned result (the spectrum before its measured error).
+    pub value_final: bool,
 }
 
 /// Everything a job sees: the scene, its column, its declared inputs' results, its own

@@ -22,7 +22,8 @@ pub struct Shown {
     pub scene: Arc<Scene>,
     /// The generation it belongs to.
     pub generation: u64,
-    /// `Some` while the node refines (a coarse result is on screen).
+    /// `Some` while the node refines (a coarse result is on screen; `None` for a final value
+    /// whose readout is still being measured).
     pub progress: Option<Steps>,
 }
 
@@ -40,12 +41,14 @@ impl AsRef<NodeResult> for Shown {
 }
 
 impl From<Update> for Shown {
+    /// A final value published before its readout is shown as final (no "refining" bar):
+    /// its accuracy says what is still being measured.
     fn from(u: Update) -> Self {
         Shown {
             result: u.result,
             scene: u.scene,
             generation: u.generation,
-            progress: u.progress,
+            progress: u.progress.filter(|_| !u.value_final),
         }
     }
 }

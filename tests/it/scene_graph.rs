@@ -441,14 +441,22 @@ fn slow_nodes_publish_coarse_results_then_the_exact_final_one() {
         last.progress.is_none(),
         "the last spectrum is the final one"
     );
-    for u in &spectra[..spectra.len() - 1] {
+    // Coarse means of the first realizations, then (just before the final) the final
+    // picture while its error is measured.
+    let (coarse, picture) = spectra[..spectra.len() - 1].split_at(spectra.len() - 2);
+    for u in coarse {
         let p = u.progress.unwrap();
-        assert!(p.done < p.total && p.total == 128);
+        assert!(p.done < p.total && p.total == 128 && !u.value_final);
         assert!(matches!(
             u.result.accuracy,
             Some(samplescope::model::Accuracy::Realizations { .. })
         ));
     }
+    assert!(picture[0].value_final && picture[0].progress.is_some());
+    assert!(matches!(
+        picture[0].result.accuracy,
+        Some(samplescope::model::Accuracy::SpectrumMeasuring { .. })
+    ));
     // The final result is exactly what a plain evaluation computes.
     let mut plain = None;
     Evaluator::default().evaluate(&s, &Cancel::never(), &mut |_, k, r| {
@@ -465,6 +473,100 @@ fn slow_nodes_publish_coarse_results_then_the_exact_final_one() {
         .iter()
         .zip(b.iter())
         .all(|(x, y)| x.to_bits() == y.to_bits()));
+    let c = image(&picture[0].result);
+    assert!(a
+        .iter()
+        .zip(c.iter())
+        .all(|(x, y)| x.to_bits() == y.to_bits()));
+}
+
+#[test]
+fn the_spectrum_shows_first_and_its_measured_error_follows_with_the_same_number() {
+    // The default scene's spectrum (NUFFT at 1e-6, error measured on exact DFT rows): the
+    // engine publishes the final picture first (its readout says the error is being measured),
+    // then the final result with the measured error, which is the number the one-call
+    // spectrum of the same points reports.
+    use samplescope::core::spectrum::{analyze_points, Method};
+    use samplescope::model::Accuracy;
+    let mut s = Scene::builtin_default();
+    s.panels.zoneplate = false;
+    s.panels.filter = false;
+    let mut engine = Engine::with_evaluator(Evaluator::default(), Arc::new(|| {}));
+    engine.submit(&s);
+    let updates = engine.wait(Duration::from_secs(120));
+    assert!(engine.is_idle());
+    let spectra: Vec<_> = updates
+        .iter()
+        .filter(|u| u.kind == NodeKind::Spectrum)
+        .collect();
+    assert_eq!(spectra.len(), 2, "the picture, then the final result");
+    let (picture, last) = (spectra[0], spectra[1]);
+    assert!(picture.value_final && picture.progress.is_some());
+    assert!(last.value_final && last.progress.is_none());
+    assert_eq!(
+        picture.result.accuracy,
+        Some(Accuracy::SpectrumMeasuring { asked: 1e-6 })
+    );
+    assert_eq!(
+        picture.result.accuracy.as_ref().unwrap().to_string(),
+        "asked 1e-6, measuring the error…"
+    );
+    let (a, b) = match (&picture.result.value, &last.result.value) {
+        (Ok(NodeValue::Spectrum(a)), Ok(NodeValue::Spectrum(b))) => (a.clone(), b.clone()),
+        other => panic!("{other:?}"),
+    };
+    assert!(a
+        .power
+        .power
+        .iter()
+        .zip(&b.power.power)
+        .all(|(x, y)| x.to_bits() == y.to_bits()));
+    assert!(a
+        .image
+        .values
+        .iter()
+        .zip(b.image.values.iter())
+        .all(|(x, y)| x.to_bits() == y.to_bits()));
+    assert_eq!(
+        (&a.raps, &a.anisotropy, a.auto_range),
+        (&b.raps, &b.anisotropy, b.auto_range)
+    );
+    // The stages say what the error check cost once it is there.
+    assert!(!a.stages.iter().any(|(n, _)| n == "error-check"));
+    assert!(b.stages.iter().any(|(n, _)| n == "error-check"));
+    // The same number as the spectrum computed in one call (check included) on these points.
+    let points = updates
+        .iter()
+        .find_map(|u| match (&u.kind, &u.result.value) {
+            (NodeKind::Points, Ok(NodeValue::Points(p))) => Some(p.points.clone()),
+            _ => None,
+        })
+        .unwrap();
+    let req = s.spectrum.request(points.len(), false);
+    assert_eq!(req.method, Method::Nufft { tolerance: 1e-6 });
+    let (_, report) = analyze_points(&req, &points, &Cancel::never()).unwrap();
+    let e = report.error.unwrap();
+    match &last.result.accuracy {
+        Some(Accuracy::SpectrumMeasured {
+            relative_l2,
+            asked,
+            frequencies,
+        }) => {
+            assert_eq!(relative_l2.to_bits(), e.relative_l2.to_bits());
+            assert_eq!((*asked, *frequencies), (1e-6, e.frequencies));
+            assert!(*relative_l2 > 0.0 && *relative_l2 < 1e-6, "{relative_l2}");
+        }
+        other => panic!("{other:?}"),
+    }
+    // A plain evaluation (render, the command line) sees only the final result.
+    let mut finals = 0;
+    Evaluator::default().evaluate(&s, &Cancel::never(), &mut |_, k, r| {
+        if k == NodeKind::Spectrum {
+            finals += 1;
+            assert_eq!(r.accuracy, last.result.accuracy);
+        }
+    });
+    assert_eq!(finals, 1);
 }
 
 #[test]
@@ -543,7 +645,10 @@ fn reference_images_persist_on_disk_and_a_corrupt_file_is_recomputed() {
         1,
         "a corrupt file was trusted"
     );
-    assert!(a.iter().zip(&c).all(|(x, y)| x.to_bits() == y.to_bits()));
+    assert!(a
+        .iter()
+        .zip(c.iter())
+        .all(|(x, y)| x.to_bits() == y.to_bits()));
     // Without a disk cache nothing is read.
     let none = Evaluator::default();
     reference_of(&none, &s);

@@ -134,11 +134,13 @@ pub struct SpectrumReport {
 struct Realization {
     power: Vec<f64>,
     n_points: usize,
-    times: [Duration; 5],
-    error: Option<ErrorCheck>,
+    times: [Duration; 4],
+    check: Option<PendingCheck>,
 }
 
-const STAGE_NAMES: [&str; 5] = ["generate", "spread", "fft", "deconvolve", "error-check"];
+const STAGE_NAMES: [&str; 4] = ["generate", "spread", "fft", "deconvolve"];
+/// The stage of the error check ([`SpectrumReport::finish_check`]).
+const ERROR_CHECK_STAGE: &str = "error-check";
 
 /// How many NUFFT plans [`cached_plan`] keeps (most recently used first).
 const PLAN_CACHE: usize = 4;
@@ -225,6 +227,30 @@ where
     G: Fn(u64) -> Result<Vec<DVec2>, E> + Sync,
     E: Into<Box<dyn std::error::Error + Send + Sync>>,
 {
+    let (spectrum, mut report, check) =
+        average_periodogram_staged(req, seed, generate, cancel, min_interval, progress)?;
+    report.finish_check(check, cancel)?;
+    Ok((spectrum, report))
+}
+
+/// [`average_periodogram_progressive`] in two stages, so that a caller can show the spectrum
+/// before its measured error: the spectrum (bit-identical) and a report without the error
+/// check, plus the check made ready (realization 0's points and the part of its periodogram
+/// compared), which [`SpectrumReport::finish_check`] runs and records; the report is then the
+/// one [`average_periodogram_progressive`] returns. The check is `None` for the exact method
+/// or a budget of 0.
+pub fn average_periodogram_staged<G, E>(
+    req: &SpectrumRequest,
+    seed: u64,
+    generate: G,
+    cancel: &Cancel,
+    min_interval: Duration,
+    progress: &mut OnProgress<'_, Spectrum>,
+) -> Result<(Spectrum, SpectrumReport, Option<PendingCheck>), SpectrumError>
+where
+    G: Fn(u64) -> Result<Vec<DVec2>, E> + Sync,
+    E: Into<Box<dyn std::error::Error + Send + Sync>>,
+{
     let start = Instant::now();
     req.validate()?;
     let m = req.size;
@@ -250,7 +276,7 @@ where
     };
     let one = |r: usize| -> Result<Realization, SpectrumError> {
         cancel.check()?;
-        let mut times = [Duration::ZERO; 5];
+        let mut times = [Duration::ZERO; 4];
         let t0 = Instant::now();
         let points =
             generate(derive_seed(seed, r as u64)).map_err(|e| SpectrumError::Generator {
@@ -259,7 +285,8 @@ where
             })?;
         times[0] = t0.elapsed();
         check_points(&points)?;
-        let mut error = None;
+        let mut check = None;
+        let n_points = points.len();
         let power = match &plan {
             Some(plan) => {
                 let mut power = take_buffer();
@@ -268,11 +295,8 @@ where
                 times[2] = t.fft;
                 times[3] = t.deconvolve;
                 if r == 0 && req.error_check_budget > 0 {
-                    let t = Instant::now();
-                    let s = Spectrum::from_power(m, power, points.len());
-                    error = error_check(&points, &s, req.error_check_budget, cancel)?;
-                    power = s.power;
-                    times[4] = t.elapsed();
+                    // Kept for the error check, which runs once the average is complete.
+                    check = Some(PendingCheck::new(points, &power, m, req.error_check_budget));
                 }
                 power
             }
@@ -285,16 +309,16 @@ where
         };
         Ok(Realization {
             power,
-            n_points: points.len(),
+            n_points,
             times,
-            error,
+            check,
         })
     };
 
     let mut acc = vec![0.0; m * m];
-    let mut times = [Duration::ZERO; 5];
+    let mut times = [Duration::ZERO; 4];
     let mut average_time = Duration::ZERO;
-    let mut error = None;
+    let mut check = None;
     let (mut n_min, mut n_max) = (usize::MAX, 0);
     let mut throttle = Throttle::new(min_interval);
     for g0 in (0..k).step_by(group) {
@@ -332,8 +356,8 @@ where
             }
             n_min = n_min.min(real.n_points);
             n_max = n_max.max(real.n_points);
-            if real.error.is_some() {
-                error = real.error;
+            if real.check.is_some() {
+                check = real.check;
             }
         }
     }
@@ -346,12 +370,7 @@ where
 
     let mut stages = vec![(STAGE_NAMES[0], times[0])];
     match &plan {
-        Some(_) => {
-            stages.extend((1..4).map(|i| (STAGE_NAMES[i], times[i])));
-            if req.error_check_budget > 0 {
-                stages.push((STAGE_NAMES[4], times[4]));
-            }
-        }
+        Some(_) => stages.extend((1..4).map(|i| (STAGE_NAMES[i], times[i]))),
         None => stages.push(("exact", times[1])),
     }
     stages.push(("average", average_time));
@@ -367,12 +386,12 @@ where
         wall: start.elapsed(),
         tolerance: plan.as_ref().and_then(|p| p.tolerance()),
         kernel: plan.as_ref().map(|p| (p.kernel(), p.upsampled())),
-        error,
+        error: None,
         n_points_range: (n_min, n_max),
         realizations: k,
     };
     progress(Progress::with(k, k, &spectrum));
-    Ok((spectrum, report))
+    Ok((spectrum, report, check))
 }
 
 /// The spectrum of one given point set (K must be 1): [`average_periodogram`] with a
@@ -400,53 +419,127 @@ pub fn analyze_points(
     )
 }
 
-/// Compares `approx` (the periodogram of `points`) with the exact one within `budget`
-/// complex multiply-adds; see [`SpectrumReport::error`].
-fn error_check(
-    points: &[DVec2],
-    approx: &Spectrum,
-    budget: u64,
-    cancel: &Cancel,
-) -> Result<Option<ErrorCheck>, SpectrumError> {
-    let m = approx.m;
-    let n = points.len() as u64;
-    let k0 = k_min(m);
-    let full_cost = n * (-k0 + 1) as u64 * (-2 * k0 + 1) as u64;
-    if full_cost <= budget {
-        let exact = periodogram_exact(points, m, cancel)?;
-        return Ok(Some(ErrorCheck {
-            relative_l2: relative_l2_error(approx, &exact, true),
-            frequencies: m * m,
-            full: true,
-        }));
+/// The error check of realization 0, made ready while its periodogram is at hand and run
+/// once the average is complete ([`average_periodogram_staged`]; see
+/// [`SpectrumReport::error`]): its points and the part of its NUFFT periodogram the check
+/// compares (the whole grid when the exact periodogram fits the budget, else the checked rows).
+#[derive(Debug, Clone)]
+pub struct PendingCheck {
+    points: Vec<DVec2>,
+    m: usize,
+    what: Option<CheckedPart>,
+}
+
+#[derive(Debug, Clone)]
+enum CheckedPart {
+    /// The whole periodogram (N·(⌊M/2⌋+1)·(2⌊M/2⌋+1) ≤ budget).
+    Full(Vec<f64>),
+    /// Rows `ky` (frequencies), each M values of the periodogram, row after row.
+    Rows { ky: Vec<i64>, power: Vec<f64> },
+}
+
+impl PendingCheck {
+    /// The check of `power` (the M×M NUFFT periodogram of `points`) within `budget` complex
+    /// multiply-adds of the exact reference: the whole grid, R = ⌊budget/(N·M)⌋ evenly spaced
+    /// rows, or nothing when not even one row fits (then [`Self::run`] gives `None`).
+    fn new(points: Vec<DVec2>, power: &[f64], m: usize, budget: u64) -> Self {
+        let n = points.len() as u64;
+        let k0 = k_min(m);
+        let full_cost = n * (-k0 + 1) as u64 * (-2 * k0 + 1) as u64;
+        let what = if full_cost <= budget {
+            Some(CheckedPart::Full(power.to_vec()))
+        } else {
+            let rows = (budget / (n * m as u64)) as usize;
+            (rows > 0).then(|| {
+                let ky: Vec<i64> = (0..rows)
+                    .map(|i| k0 + ((2 * i + 1) * m / (2 * rows)) as i64)
+                    .collect();
+                let power = ky
+                    .iter()
+                    .flat_map(|&kyr| {
+                        let row = (kyr - k0) as usize * m;
+                        power[row..row + m].iter().copied()
+                    })
+                    .collect();
+                CheckedPart::Rows { ky, power }
+            })
+        };
+        PendingCheck { points, m, what }
     }
-    let rows = (budget / (n * m as u64)) as usize;
-    if rows == 0 {
-        return Ok(None);
-    }
-    let ky: Vec<i64> = (0..rows)
-        .map(|i| k0 + ((2 * i + 1) * m / (2 * rows)) as i64)
-        .collect();
-    let field = exact_field_rows(points, k0, m, &ky, cancel)?;
-    let inv_n = 1.0 / n as f64;
-    let (mut num, mut den) = (0.0f64, 0.0f64);
-    for (r, &kyr) in ky.iter().enumerate() {
-        for ix in 0..m {
-            let kx = k0 + ix as i64;
-            if kx == 0 && kyr == 0 {
-                continue;
+
+    /// Compares the kept periodogram with the exact one: ‖P_nufft − P_exact‖₂ / ‖P_exact‖₂ over
+    /// the checked frequencies, DC excluded (`None` when no row fitted the budget).
+    ///
+    /// # Errors
+    /// [`SpectrumError::Cancelled`].
+    pub fn run(&self, cancel: &Cancel) -> Result<Option<ErrorCheck>, SpectrumError> {
+        let (points, m) = (&self.points, self.m);
+        let n = points.len();
+        let k0 = k_min(m);
+        match &self.what {
+            None => Ok(None),
+            Some(CheckedPart::Full(power)) => {
+                let exact = periodogram_exact(points, m, cancel)?;
+                let approx = Spectrum::from_power(m, power.clone(), n);
+                Ok(Some(ErrorCheck {
+                    relative_l2: relative_l2_error(&approx, &exact, true),
+                    frequencies: m * m,
+                    full: true,
+                }))
             }
-            let re = field[r * 2 * m + ix];
-            let im = field[r * 2 * m + m + ix];
-            let exact = (re * re + im * im) * inv_n;
-            let a = approx.power[(kyr - k0) as usize * m + ix];
-            num += (a - exact) * (a - exact);
-            den += exact * exact;
+            Some(CheckedPart::Rows { ky, power }) => {
+                let field = exact_field_rows(points, k0, m, ky, cancel)?;
+                let inv_n = 1.0 / n as f64;
+                let (mut num, mut den) = (0.0f64, 0.0f64);
+                for (r, &kyr) in ky.iter().enumerate() {
+                    for ix in 0..m {
+                        let kx = k0 + ix as i64;
+                        if kx == 0 && kyr == 0 {
+                            continue;
+                        }
+                        let re = field[r * 2 * m + ix];
+                        let im = field[r * 2 * m + m + ix];
+                        let exact = (re * re + im * im) * inv_n;
+                        let a = power[r * m + ix];
+                        num += (a - exact) * (a - exact);
+                        den += exact * exact;
+                    }
+                }
+                Ok(Some(ErrorCheck {
+                    relative_l2: ratio_of_norms(num, den),
+                    frequencies: ky.len() * m,
+                    full: false,
+                }))
+            }
         }
     }
-    Ok(Some(ErrorCheck {
-        relative_l2: ratio_of_norms(num, den),
-        frequencies: rows * m,
-        full: false,
-    }))
+}
+
+impl SpectrumReport {
+    /// Runs the error check made ready by [`average_periodogram_staged`] (if any) and records
+    /// it: [`Self::error`], its stage `error-check` (before `average`) and its time in the wall
+    /// time. The report is then the one [`average_periodogram`] returns.
+    ///
+    /// # Errors
+    /// [`SpectrumError::Cancelled`].
+    pub fn finish_check(
+        &mut self,
+        check: Option<PendingCheck>,
+        cancel: &Cancel,
+    ) -> Result<(), SpectrumError> {
+        let Some(check) = check else {
+            return Ok(());
+        };
+        let t = Instant::now();
+        self.error = check.run(cancel)?;
+        let took = t.elapsed();
+        let at = self
+            .stages
+            .iter()
+            .position(|(name, _)| *name == "average")
+            .unwrap_or(self.stages.len());
+        self.stages.insert(at, (ERROR_CHECK_STAGE, took));
+        self.wall += took;
+        Ok(())
+    }
 }

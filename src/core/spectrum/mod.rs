@@ -58,8 +58,9 @@ pub mod quadrature;
 pub mod radial;
 
 pub use average::{
-    analyze_points, average_periodogram, average_periodogram_progressive, DcMode, ErrorCheck,
-    Method, SpectrumReport, SpectrumRequest, DEFAULT_ERROR_CHECK_BUDGET,
+    analyze_points, average_periodogram, average_periodogram_progressive,
+    average_periodogram_staged, DcMode, ErrorCheck, Method, PendingCheck, SpectrumReport,
+    SpectrumRequest, DEFAULT_ERROR_CHECK_BUDGET,
 };
 pub use dft::{exact_field_rows, periodogram_exact, periodogram_naive};
 pub use nufft::{

@@ -270,6 +270,19 @@ impl JobCtx<'_> {
             value,
             accuracy,
             progress,
+            value_final: false,
+        })
+    }
+
+    /// Publishes the node's final value (bit for bit what the job returns) while its accuracy
+    /// readout, `accuracy` so far, is still being measured: the picture is complete first and
+    /// the readout fills in with the returned result.
+    fn publish_final_value(&self, value: NodeValue, accuracy: Option<Accuracy>) {
+        (self.progress)(Partial {
+            value,
+            accuracy,
+            progress: Steps::at(1, 2),
+            value_final: true,
         })
     }
 }

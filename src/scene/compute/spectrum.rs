@@ -34,7 +34,7 @@ pub(in crate::scene) fn estimate(s: &Scene, c: usize) -> Vec<Estimate> {
 
 /// The job: the node's value from the scene, the column and the declared inputs.
 pub(in crate::scene) fn run(ctx: &JobCtx) -> Output {
-    use crate::core::spectrum::average_periodogram_progressive;
+    use crate::core::spectrum::average_periodogram_staged;
     let (scene, cancel) = (ctx.scene, ctx.cancel);
     let col = ctx.col();
     let s = scene.spectrum;
@@ -60,7 +60,7 @@ pub(in crate::scene) fn run(ctx: &JobCtx) -> Output {
             );
         }
     };
-    let (spec, report) = average_periodogram_progressive(
+    let (spec, mut report, check) = average_periodogram_staged(
         &req,
         col.seed,
         move |sd| {
@@ -79,12 +79,36 @@ pub(in crate::scene) fn run(ctx: &JobCtx) -> Output {
         crate::core::spectrum::average::PARTIAL_INTERVAL,
         &mut on_progress,
     )?;
-    let stages = report
-        .stages
-        .iter()
-        .map(|(name, d)| (name.to_string(), ms(*d)))
-        .collect();
-    let data = spectrum_data(&spec, stages)?;
+    let stages = |report: &crate::core::spectrum::SpectrumReport| {
+        report
+            .stages
+            .iter()
+            .map(|(name, d)| (name.to_string(), ms(*d)))
+            .collect()
+    };
+    let mut data = spectrum_data(&spec, stages(&report))?;
+    let shown_accuracy = |accuracy: Accuracy| {
+        Some(if imported && asked_k > 1 {
+            Accuracy::ImportedOneRealization {
+                asked: asked_k,
+                spectrum: Box::new(accuracy),
+            }
+        } else {
+            accuracy
+        })
+    };
+    if let (Some(check), Some(tol)) = (check, report.tolerance) {
+        // The picture is complete: show it now, and its measured error (two exact DFT rows at
+        // the default scene, about as long as the NUFFT itself) when it is ready.
+        let data_now = Arc::new(data);
+        ctx.publish_final_value(
+            NodeValue::Spectrum(data_now.clone()),
+            shown_accuracy(Accuracy::SpectrumMeasuring { asked: tol }),
+        );
+        report.finish_check(Some(check), cancel)?;
+        data = Arc::unwrap_or_clone(data_now);
+        data.stages = stages(&report);
+    }
     let accuracy = match (report.tolerance, report.error) {
         (Some(tol), Some(e)) => Accuracy::SpectrumMeasured {
             relative_l2: e.relative_l2,
@@ -94,15 +118,10 @@ pub(in crate::scene) fn run(ctx: &JobCtx) -> Output {
         (Some(tol), None) => Accuracy::SpectrumAsked { tolerance: tol },
         (None, _) => Accuracy::ExactDft,
     };
-    let accuracy = Some(if imported && asked_k > 1 {
-        Accuracy::ImportedOneRealization {
-            asked: asked_k,
-            spectrum: Box::new(accuracy),
-        }
-    } else {
-        accuracy
-    });
-    Ok((NodeValue::Spectrum(Arc::new(data)), accuracy))
+    Ok((
+        NodeValue::Spectrum(Arc::new(data)),
+        shown_accuracy(accuracy),
+    ))
 }
 
 /// The display data of a periodogram: log image, auto range, RAPS and anisotropy (a
