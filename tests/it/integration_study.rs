@@ -82,14 +82,22 @@ fn every_column_gets_its_study_with_partials_as_realizations_come_in() {
 fn the_measured_slopes_are_those_the_scene_notes_state() {
     // The notes quote `samplescope converge` with seed 1; the scene's columns use seed 1.
     for (name, want) in [
-        ("integration-error-disk.ron", [-1.05, -1.48, -1.37, -1.46]),
+        (
+            "integration-error-disk.ron",
+            &[-1.05, -1.48, -1.37, -1.46][..],
+        ),
         (
             "integration-error-gaussian.ron",
-            [-1.01, -1.97, -2.77, -2.76],
+            &[-1.01, -1.97, -2.77, -2.76][..],
+        ),
+        (
+            "integration-error-dims.ron",
+            &[-0.88, -1.92, -1.67, -0.88, -1.88][..],
         ),
     ] {
         let scene = shipped(name);
-        for (col, w) in scene.columns.iter().zip(want) {
+        assert_eq!(want.len(), scene.columns.len(), "{name}");
+        for (col, &w) in scene.columns.iter().zip(want) {
             let s = run_study(
                 &scene.integration.request(col.pattern, col.seed, col.dims),
                 &Cancel::never(),
