@@ -15,21 +15,8 @@ pub fn samplescope(args: &[&str]) -> std::process::Output {
 
 #[test]
 fn points_writes_csv_with_header_that_round_trips() {
-    let out = samplescope(&["points", "halton", "-n", "16"]);
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let text = String::from_utf8(out.stdout).unwrap();
-    let mut lines = text.lines();
-    assert_eq!(lines.next(), Some("x,y"));
-    let parsed: Vec<(f64, f64)> = lines
-        .map(|l| {
-            let (x, y) = l.split_once(',').unwrap();
-            (x.parse().unwrap(), y.parse().unwrap())
-        })
-        .collect();
+    let (header, parsed) = crate::points_csv(&["points", "halton", "-n", "16"]);
+    assert_eq!(header, "x,y");
     let expected = Pattern::from_name("halton")
         .unwrap()
         .generate(16, 0)
@@ -37,8 +24,9 @@ fn points_writes_csv_with_header_that_round_trips() {
     assert_eq!(parsed.len(), 16);
     for (p, e) in parsed.iter().zip(&expected) {
         // Round-trip precision: the printed decimal parses back to the same bits.
-        assert_eq!(p.0.to_bits(), e.x.to_bits());
-        assert_eq!(p.1.to_bits(), e.y.to_bits());
+        assert_eq!(p.len(), 2);
+        assert_eq!(p[0].to_bits(), e.x.to_bits());
+        assert_eq!(p[1].to_bits(), e.y.to_bits());
     }
 }
 
@@ -121,17 +109,13 @@ fn points_writes_a_file_and_sphere_mode_gives_unit_vectors() {
         "{}",
         String::from_utf8_lossy(&out.stderr)
     );
-    let text = std::fs::read_to_string(&file).unwrap();
-    let mut lines = text.lines();
-    assert_eq!(lines.next(), Some("x,y,z"));
-    let mut count = 0;
-    for l in lines {
-        let v: Vec<f64> = l.split(',').map(|s| s.parse().unwrap()).collect();
+    let (header, rows) = crate::parse_csv(&std::fs::read_to_string(&file).unwrap());
+    assert_eq!(header, "x,y,z");
+    for v in &rows {
         let len = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
         assert!((len - 1.0).abs() < 1e-12);
-        count += 1;
     }
-    assert_eq!(count, 64);
+    assert_eq!(rows.len(), 64);
     std::fs::remove_dir_all(&dir).ok();
 }
 

@@ -37,12 +37,8 @@ fn data_dir() -> std::path::PathBuf {
 /// The points of one reference set (header x0,…, comma-separated, 17 significant digits).
 fn read_set(name: &str) -> CubePoints {
     let text = std::fs::read_to_string(data_dir().join(format!("{name}.csv"))).unwrap();
-    let mut lines = text.lines();
-    let dims = lines.next().unwrap().split(',').count();
-    let coords: Vec<f64> = lines
-        .flat_map(|l| l.split(',').map(|v| v.parse::<f64>().unwrap()))
-        .collect();
-    CubePoints::new(dims, coords).unwrap()
+    let (header, rows) = crate::parse_csv(&text);
+    CubePoints::new(header.split(',').count(), rows.concat()).unwrap()
 }
 
 /// Whether `ours` is within 1e-12 relative of `exact` plus one ulp of the terms' scale (for

@@ -439,7 +439,7 @@ fn bad_dims_are_refused_with_one_line_naming_the_limit() {
 
 #[test]
 fn points_dims_writes_one_column_per_dimension_and_projections() {
-    let out = samplescope(&[
+    let (header, rows) = crate::points_csv(&[
         "points",
         "sobol",
         "-n",
@@ -451,22 +451,9 @@ fn points_dims_writes_one_column_per_dimension_and_projections() {
         "--seed",
         "4",
     ]);
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let text = String::from_utf8(out.stdout).unwrap();
-    let mut lines = text.lines();
-    assert_eq!(lines.next(), Some("x0,x1,x2"));
+    assert_eq!(header, "x0,x1,x2");
     let want = cube(&pattern("sobol", &[("scramble", "owen")]), 8, 3, 4);
-    let got: Vec<f64> = lines
-        .flat_map(|l| {
-            l.split(',')
-                .map(|v| v.parse::<f64>().unwrap())
-                .collect::<Vec<_>>()
-        })
-        .collect();
+    let got: Vec<f64> = rows.concat();
     assert_eq!(got, want.coords());
 
     let out = samplescope(&[

@@ -382,12 +382,7 @@ fn analyze_json(args: &[&str]) -> serde_json::Value {
 
 /// Reads a CSV written by analyze (header, then numbers).
 fn csv_rows(path: &Path) -> Vec<Vec<f64>> {
-    std::fs::read_to_string(path)
-        .unwrap()
-        .lines()
-        .skip(1)
-        .map(|l| l.split(',').map(|v| v.parse().unwrap()).collect())
-        .collect()
+    crate::parse_csv(&std::fs::read_to_string(path).unwrap()).1
 }
 
 /// Three jittered sets of 64 points (seeds 1, 2, 3) and one of 32, written by `points` into

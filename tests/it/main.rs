@@ -2,6 +2,7 @@
 //! Each former `tests/<name>.rs` is a module here; `cargo test <module>::` runs one of them.
 
 use samplescope::engine::Engine;
+use samplescope::scene::{Scene, BUILTIN};
 use samplescope::ui::SamplescopeApp;
 use std::sync::Arc;
 use std::time::{Duration, Instant};
@@ -76,6 +77,31 @@ pub fn hermetic_app(cc: &eframe::CreationContext<'_>) -> SamplescopeApp {
     SamplescopeApp::with_engine(cc, None, engine)
 }
 
+/// The GUI (egui_kittest, no rendering: no GPU needed) showing the built-in scene `name`,
+/// lightened by `shrink` (smaller images where a test is about the controls), computed and
+/// drawn once more.
+pub fn builtin_harness(
+    name: &str,
+    shrink: impl FnOnce(&mut Scene),
+) -> egui_kittest::Harness<'static, SamplescopeApp> {
+    let (_, text) = BUILTIN
+        .iter()
+        .find(|(n, _)| *n == name)
+        .unwrap_or_else(|| panic!("no built-in scene {name}"));
+    let mut scene = Scene::from_ron(text, name).unwrap();
+    shrink(&mut scene);
+    let mut h = egui_kittest::Harness::builder()
+        .with_size(eframe::egui::Vec2::new(1400.0, 1000.0))
+        .build_eframe(move |cc| {
+            let mut app = hermetic_app(cc);
+            app.view.show_timings = false;
+            app.set_scene(scene.clone(), name.to_string());
+            app
+        });
+    settle(&mut h, 1);
+    h
+}
+
 /// Steps the UI until the engine has delivered every node of the current scene, then `extra`
 /// more frames (so the last results are drawn).
 pub fn settle(h: &mut egui_kittest::Harness<'static, SamplescopeApp>, extra: usize) {
@@ -107,8 +133,22 @@ pub fn png_text(info: &png::Info<'_>) -> Vec<(String, String)> {
         .collect()
 }
 
+/// A CSV of numbers: its header line and one row of numbers per line after it.
+pub fn parse_csv(text: &str) -> (String, Vec<Vec<f64>>) {
+    let mut lines = text.lines();
+    let header = lines.next().expect("a header line").to_string();
+    let rows = lines
+        .map(|l| {
+            l.split(',')
+                .map(|v| v.parse().unwrap_or_else(|e| panic!("{v:?} in {l:?}: {e}")))
+                .collect()
+        })
+        .collect();
+    (header, rows)
+}
+
 /// Runs `samplescope ARGS` (a `points` command), which must succeed, and parses the CSV it
-/// writes: the header line and one row of numbers per point.
+/// writes ([`parse_csv`]).
 pub fn points_csv(args: &[&str]) -> (String, Vec<Vec<f64>>) {
     let out = std::process::Command::new(env!("CARGO_BIN_EXE_samplescope"))
         .args(args)
@@ -119,11 +159,5 @@ pub fn points_csv(args: &[&str]) -> (String, Vec<Vec<f64>>) {
         "{args:?}: {}",
         String::from_utf8_lossy(&out.stderr)
     );
-    let text = String::from_utf8(out.stdout).expect("UTF-8 CSV");
-    let mut lines = text.lines();
-    let header = lines.next().expect("a header line").to_string();
-    let rows = lines
-        .map(|l| l.split(',').map(|v| v.parse().expect("a number")).collect())
-        .collect();
-    (header, rows)
+    parse_csv(&String::from_utf8(out.stdout).expect("UTF-8 CSV"))
 }

@@ -311,25 +311,14 @@ mod ui {
     use egui_kittest::kittest::Queryable;
     use egui_kittest::Harness;
     use samplescope::scene::graph::NodeKind;
-    use samplescope::scene::{Scene, BUILTIN};
     use samplescope::ui::SamplescopeApp;
     use std::time::{Duration, Instant};
 
     fn harness_with(name: &str) -> Harness<'static, SamplescopeApp> {
-        let (_, text) = BUILTIN.iter().find(|(n, _)| *n == name).unwrap();
-        let mut scene = Scene::from_ron(text, name).unwrap();
-        scene.recon.size = scene.recon.size.min(128);
-        scene.spectrum.size = scene.spectrum.size.min(64);
-        let mut h = Harness::builder()
-            .with_size(eframe::egui::Vec2::new(1400.0, 1000.0))
-            .build_eframe(move |cc| {
-                let mut app = crate::hermetic_app(cc);
-                app.view.show_timings = false;
-                app.set_scene(scene.clone(), name.to_string());
-                app
-            });
-        crate::settle(&mut h, 1);
-        h
+        crate::builtin_harness(name, |s| {
+            s.recon.size = s.recon.size.min(128);
+            s.spectrum.size = s.spectrum.size.min(64);
+        })
     }
 
     fn count(h: &Harness<'static, SamplescopeApp>, kind: NodeKind) -> usize {

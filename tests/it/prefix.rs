@@ -239,24 +239,11 @@ mod gui {
     use egui_kittest::kittest::Queryable;
     use egui_kittest::Harness;
     use samplescope::model::{PointsData, Slot};
-    use samplescope::scene::{Scene, BUILTIN};
     use samplescope::ui::SamplescopeApp;
     use std::time::{Duration, Instant};
 
     fn harness(name: &str) -> Harness<'static, SamplescopeApp> {
-        let text = BUILTIN.iter().find(|(n, _)| *n == name).unwrap().1;
-        let mut scene = Scene::from_ron(text, name).unwrap();
-        scene.spectrum.size = scene.spectrum.size.min(32);
-        let mut h = Harness::builder()
-            .with_size(eframe::egui::Vec2::new(1400.0, 1000.0))
-            .build_eframe(move |cc| {
-                let mut app = crate::hermetic_app(cc);
-                app.view.show_timings = false;
-                app.set_scene(scene.clone(), name.to_string());
-                app
-            });
-        crate::settle(&mut h, 1);
-        h
+        crate::builtin_harness(name, |s| s.spectrum.size = s.spectrum.size.min(32))
     }
 
     fn shown(h: &Harness<'static, SamplescopeApp>) -> usize {

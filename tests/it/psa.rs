@@ -231,12 +231,8 @@ fn analyze_json_has_the_psa_fields_and_rdf_writes_a_csv() {
         Some(s.bond_orientational_order)
     );
     assert!(v["psa_skipped"].is_null());
-    let csv = std::fs::read_to_string(&out_csv).unwrap();
-    let mut lines = csv.lines();
-    assert_eq!(lines.next(), Some("r_min,r_max,r_mid_normalized,g"));
-    let rows: Vec<Vec<f64>> = lines
-        .map(|l| l.split(',').map(|x| x.parse().unwrap()).collect())
-        .collect();
+    let (header, rows) = crate::parse_csv(&std::fs::read_to_string(&out_csv).unwrap());
+    assert_eq!(header, "r_min,r_max,r_mid_normalized,g");
     assert_eq!(rows.len(), 128);
     let (bins, r_max) = psa::psa_rdf_range(1024);
     let g = metrics::rdf(&pts, bins, r_max, &Cancel::never()).unwrap();

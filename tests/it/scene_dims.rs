@@ -3,7 +3,6 @@
 //! projection `points --dims D --project i,j` writes; the 2D key and points unchanged), and
 //! the GUI's pair picker.
 
-use crate::cli_points::samplescope;
 use samplescope::core::cancel::Cancel;
 use samplescope::core::params::Params;
 use samplescope::core::pattern::Pattern;
@@ -154,21 +153,9 @@ fn the_points_node_in_16_dimensions_is_the_projection_points_writes() {
         if let Some(s) = set {
             args.extend(["--set", s, "--seed", &seed_text]);
         }
-        let out = samplescope(&args);
-        assert!(
-            out.status.success(),
-            "{}",
-            String::from_utf8_lossy(&out.stderr)
-        );
-        let text = String::from_utf8(out.stdout).unwrap();
-        let mut lines = text.lines();
-        assert_eq!(lines.next(), Some("x,y"));
-        let cli: Vec<[f64; 2]> = lines
-            .map(|l| {
-                let (x, y) = l.split_once(',').unwrap();
-                [x.parse().unwrap(), y.parse().unwrap()]
-            })
-            .collect();
+        let (header, rows) = crate::points_csv(&args);
+        assert_eq!(header, "x,y");
+        let cli: Vec<[f64; 2]> = rows.iter().map(|r| [r[0], r[1]]).collect();
         let shown: Vec<[f64; 2]> = node.points.iter().map(|p| [p.x, p.y]).collect();
         assert_eq!(shown, cli, "{pattern} ({i}, {j})");
         // And it is the core's projection of the cube, bit for bit.
