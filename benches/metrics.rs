@@ -1,9 +1,11 @@
 //! Speed of the point-set metrics against their naive references, in the same run.
 //!
 //! Targets: exact star discrepancy N = 4096 ≤ 50 ms and N = 16 384 ≤ 1 s; L2-star N = 4096
-//! ≤ 10 ms. References: the O(N³) brute-force star discrepancy (timed at N = 256 and
-//! extrapolated by (N/256)³, since at N = 4096 it would take minutes), the O(N²) literal
-//! Warnock sum (timed at the same N), and the O(N²) brute-force minimum distance.
+//! ≤ 10 ms; PSA's statistics of 4096 jittered points ≤ 20 ms. References: the O(N³)
+//! brute-force star discrepancy (timed at N = 256 and extrapolated by (N/256)³, since at
+//! N = 4096 it would take minutes), the O(N²) literal Warnock sum (timed at the same N), the
+//! O(N²) brute-force minimum distance, and PSA's statistics by the all-pairs RDF and the
+//! direct O(m²) transform (the same triangulation).
 //!
 //! Run: `cargo bench --bench metrics -- --warm-up-time 1 --measurement-time 3`.
 //! After criterion's report a table of medians (own timing, `Instant`) and ratios is printed.
@@ -14,6 +16,10 @@ use std::time::{Duration, Instant};
 use criterion::Criterion;
 use glam::DVec2;
 use samplescope::core::cancel::Cancel;
+use samplescope::core::metrics::psa::{
+    bond_orientational_order, effective_nyquist, oscillations, psa_statistics, radial_power_direct,
+    PsaStatistics,
+};
 use samplescope::core::metrics::{
     l2_star_discrepancy, l2_star_discrepancy_naive, min_distance, min_distance_naive,
     star_discrepancy, star_discrepancy_brute_force,
@@ -27,6 +33,37 @@ fn random_points(n: usize) -> Vec<DVec2> {
     (0..n)
         .map(|_| DVec2::new(r.next_f64(), r.next_f64()))
         .collect()
+}
+
+/// Jittered points, one per cell of a k × k grid (PSA's kind of input).
+fn jittered_points(k: usize) -> Vec<DVec2> {
+    let mut r = Rng::new(SEED);
+    let s = 1.0 / k as f64;
+    (0..k * k)
+        .map(|i| {
+            let x = ((i % k) as f64 + r.next_f64()) * s;
+            DVec2::new(x, ((i / k) as f64 + r.next_f64()) * s)
+        })
+        .collect()
+}
+
+/// PSA's statistics by the references: the all-pairs RDF and the direct transform.
+fn psa_statistics_reference(points: &[DVec2], cancel: &Cancel) -> PsaStatistics {
+    let rp = radial_power_direct(points, cancel).unwrap();
+    PsaStatistics {
+        effective_nyquist: effective_nyquist(&rp),
+        oscillations: oscillations(&rp),
+        bond_orientational_order: bond_orientational_order(points, cancel).unwrap(),
+    }
+}
+
+/// `f` on one thread (so that the calling thread's CPU time is all of its work).
+fn serial<T: Send>(f: impl FnOnce() -> T + Send) -> T {
+    rayon::ThreadPoolBuilder::new()
+        .num_threads(1)
+        .build()
+        .expect("a one-thread pool")
+        .install(f)
 }
 
 /// CPU time of the calling thread, in ns, from Linux's `/proc/thread-self/schedstat` (first
@@ -99,6 +136,17 @@ fn criterion_benches(c: &mut Criterion) {
         b.iter(|| min_distance_naive(black_box(&pts), &never).unwrap())
     });
     g.finish();
+
+    let mut g = c.benchmark_group("psa_statistics");
+    g.sample_size(10);
+    let jit = jittered_points(64);
+    g.bench_function("fast/4096", |b| {
+        b.iter(|| psa_statistics(black_box(&jit), &never).unwrap())
+    });
+    g.bench_function("all_pairs_rdf_direct_transform/4096", |b| {
+        b.iter(|| psa_statistics_reference(black_box(&jit), &never))
+    });
+    g.finish();
 }
 
 /// One row of the table: times in ms (CPU time where available, else wall time).
@@ -161,10 +209,34 @@ fn ratio_table() {
         reference_ms: (ms(naive.0), naive.1.map(ms)),
     });
 
+    // PSA's statistics: wall time on the whole pool; CPU time on one thread (the calling
+    // thread's CPU time would miss the pool's other threads).
+    let jit = jittered_points(64);
+    let fast_wall = median(9, || psa_statistics(&jit, &never).unwrap()).0;
+    let fast_cpu = serial(|| median(9, || psa_statistics(&jit, &never).unwrap()).1);
+    let ref_wall = median(3, || psa_statistics_reference(&jit, &never)).0;
+    let ref_cpu = serial(|| median(3, || psa_statistics_reference(&jit, &never)).1);
+    let (a, b) = (
+        psa_statistics(&jit, &never).unwrap(),
+        psa_statistics_reference(&jit, &never),
+    );
+    assert!(
+        (a.oscillations - b.oscillations).abs() < 1e-9
+            && a.effective_nyquist == b.effective_nyquist
+    );
+    rows.push(Row {
+        what: "PSA statistics, jittered",
+        n: 4096,
+        fast: (fast_wall, fast_cpu),
+        target: "≤ 20 ms",
+        reference: "all-pairs RDF + direct O(m²) transform".into(),
+        reference_ms: (ms(ref_wall), ref_cpu.map(ms)),
+    });
+
     println!();
     println!(
-        "metrics: fast vs reference (median; random points, Rng seed {SEED:#x}; \
-         cpu = thread CPU time, wall = wall clock)"
+        "metrics: fast vs reference (median; random points, PSA's jittered, Rng seed {SEED:#x}; \
+         cpu = thread CPU time, PSA's on a one-thread pool; wall = wall clock)"
     );
     println!(
         "{:<26} {:>6} {:>10} {:>10} {:>10} {:<44} {:>12} {:>12} {:>8}",

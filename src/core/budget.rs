@@ -46,7 +46,7 @@
 //! | tap | kernel taps of splatting | 2 (separable, plus 40 per 1D factor), 50 (radial) |
 //! | multiply-add | exact DFT | 2 (parallel) |
 //! | cell | star-discrepancy sweep | 0.65 |
-//! | pair | RDF pair distances (PSA statistics, `--rdf`), plus the transform's Bessel terms | [`PAIR_NS`], [`PSA_TERM_NS`] (parallel) |
+//! | pair | RDF pairs the cell grid visits (PSA statistics, `--rdf`), plus the transform's directly summed Bessel terms and its FFTs (per L·log₂ L) | [`PAIR_NS`], [`PSA_TERM_NS`], [`PSA_FFT_NS`] (parallel) |
 //!
 //! # Memory
 //!
@@ -67,7 +67,7 @@ use crate::core::format::significant;
 // command builds its plan from one place.
 pub use crate::core::filter::cost::filter_metrics;
 pub use crate::core::metrics::cost::{
-    net_prefixes, psa_statistics, rdf, statistics, PAIR_NS, PSA_TERM_NS,
+    net_prefixes, psa_statistics, rdf, statistics, PAIR_NS, PSA_FFT_NS, PSA_TERM_NS,
 };
 pub use crate::core::metrics::cube::cost::cube_measure;
 pub use crate::core::pattern::cost::{

@@ -8,10 +8,14 @@ pub(crate) const STAR_CELL_NS: f64 = 0.65;
 /// Per point: the minimum distance (grid search), the t-value digits per (m·log₂ m).
 pub(crate) const MIN_DISTANCE_NS: f64 = 400.0;
 pub(crate) const L2_NS: f64 = 80.0;
-/// One pair of an RDF: a toroidal distance, its square root and bin (parallel).
+/// One pair of an RDF the pair loop visits: a toroidal distance and, within the radius, its
+/// square root and bin (parallel).
 pub const PAIR_NS: f64 = 2.0;
-/// One term of PSA's RDF-to-power transform: J₀, the window and a multiply-add (parallel).
+/// One term of PSA's RDF-to-power transform summed directly: J₀, the window and a
+/// multiply-add (parallel).
 pub const PSA_TERM_NS: f64 = 10.0;
+/// Per unit of L·log₂ L of the transform's FFTs of length L (parallel).
+pub const PSA_FFT_NS: f64 = 0.3;
 /// Per point of the toroidal Delaunay triangulation and its neighbour rings (serial).
 pub(crate) const DELAUNAY_POINT_NS: f64 = 500.0;
 pub(crate) const TVALUE_NS: f64 = 5.0;
@@ -62,10 +66,11 @@ pub fn star_discrepancy(n: usize) -> Estimate {
     )
 }
 
-/// PSA's statistics of `n` points ([`crate::core::metrics::psa_statistics`]): the RDF over
-/// N(N−1)/2 pairs, its transform (≈ m²/2 terms for m = ⌊100√N⌋ RDF bins and frequencies),
-/// and a toroidal Delaunay triangulation of ≈ N + 16√N points. Nothing above
-/// [`crate::core::metrics::PSA_MAX_N`] points (not computed there).
+/// PSA's statistics of `n` points ([`crate::core::metrics::psa_statistics`]): the RDF's pairs
+/// closer than ¼ by a cell grid, the transform's directly summed J₀ terms and FFTs
+/// ([`crate::core::metrics::psa::radial_power_work`]), and a toroidal Delaunay triangulation
+/// of ≈ N + 16√N points. Nothing above [`crate::core::metrics::PSA_MAX_N`] points (not
+/// computed there).
 pub fn psa_statistics(n: usize) -> Estimate {
     use crate::core::metrics::psa;
     if !(psa::PSA_MIN_N..=psa::PSA_MAX_N).contains(&n) {
@@ -78,16 +83,18 @@ pub fn psa_statistics(n: usize) -> Estimate {
         );
     }
     let nf = n as f64;
-    let pairs = nf * (nf - 1.0) / 2.0;
     let m = psa::spectral_bins(n) as f64;
-    let terms = psa::transform_terms(n);
+    let (pairs, terms, fft) = psa::radial_power_work(n);
     let tri = nf + 16.0 * nf.sqrt();
-    let bytes = 8.0 * m * 2.0 * (rayon_chunks() + 2.0) + 200.0 * tri;
+    // Per-chunk histograms of the ≈ m/2 bins used, the prefix sums (7 rows), the FFT buffers
+    // (23 rows of up to ≈ 2m complex values), the triangulation.
+    let bytes = 8.0 * m * (rayon_chunks() + 8.0) + 16.0 * 23.0 * 2.0 * m + 200.0 * tri;
     Estimate::new(
         format!("PSA statistics of {n} points ({m} RDF bins)"),
         pairs,
         Unit::Pairs,
-        parallel(pairs * PAIR_NS + terms * PSA_TERM_NS) + cpu(tri * DELAUNAY_POINT_NS),
+        parallel(pairs * PAIR_NS + terms * PSA_TERM_NS + fft * PSA_FFT_NS)
+            + cpu(tri * DELAUNAY_POINT_NS),
         bytes,
     )
 }
@@ -97,10 +104,10 @@ pub(crate) fn rayon_chunks() -> f64 {
     4.0 * REFERENCE_CORES
 }
 
-/// A radial distribution function of `n` points over `bins` bins ([`crate::core::metrics::rdf`]).
-pub fn rdf(n: usize, bins: usize) -> Estimate {
-    let nf = n as f64;
-    let pairs = nf * (nf - 1.0).max(0.0) / 2.0;
+/// A radial distribution function of `n` points over `bins` bins up to `r_max`
+/// ([`crate::core::metrics::rdf`]: the pairs its cell grid visits).
+pub fn rdf(n: usize, bins: usize, r_max: f64) -> Estimate {
+    let pairs = crate::core::metrics::psa::rdf_work(n, r_max);
     let bytes = 8.0 * bins as f64 * (rayon_chunks() + 1.0);
     Estimate::new(
         format!("RDF of {n} points ({bins} bins)"),

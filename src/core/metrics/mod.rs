@@ -70,6 +70,7 @@
 pub mod cost;
 pub mod cube;
 mod dd;
+mod hankel;
 pub mod l2;
 pub mod mindist;
 mod pairs;

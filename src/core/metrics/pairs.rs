@@ -20,8 +20,10 @@ use crate::core::torus;
 /// so that their counts agree exactly).
 #[inline]
 pub(crate) fn bin_of(d: f64, dr: f64, bins: usize) -> Option<usize> {
-    let t = (d / dr).floor();
-    (t < bins as f64).then_some(t as usize)
+    // ⌊q⌋ < bins ⟺ q < bins for an integer bins, and `as` truncates a q ≥ 0 to ⌊q⌋ (no call
+    // to floor, which is a library call without SSE4.1); NaN gives no bin.
+    let q = d / dr;
+    (q < bins as f64).then_some(q as usize)
 }
 
 /// The chunks the pair loops split their work into: a fixed number (4 per thread), each
@@ -79,6 +81,40 @@ fn grid_side(n: usize, radius: f64) -> Option<(usize, usize)> {
     (g > 2 * reach).then_some((g, reach))
 }
 
+/// The pairs [`pair_counts`] visits for N uniformly spread points and bins up to `radius`:
+/// N(N−1)/2 times the share of the cells its stencil covers (all pairs without a grid). The
+/// budget's count.
+pub(crate) fn visited_pairs(n: usize, radius: f64) -> f64 {
+    let nf = n as f64;
+    let all = nf * (nf - 1.0).max(0.0) / 2.0;
+    let Some((g, reach)) = grid_side(n, radius * (1.0 + 1e-9)) else {
+        return all;
+    };
+    let cells: usize = stencil(g, reach, radius * (1.0 + 1e-9))
+        .iter()
+        .map(|&(b, a)| if b == 0 { a } else { 2 * a + 1 })
+        .sum();
+    all * ((2 * cells + 1) as f64 / (g * g) as f64).min(1.0)
+}
+
+/// The half stencil, row by row: for row offset b, the largest column offset a_b whose cells
+/// can hold a pair closer than `radius` (columns −a_b … a_b for b > 0, 1 … a_b for b = 0).
+fn stencil(g: usize, reach: usize, radius: f64) -> Vec<(usize, usize)> {
+    let s = 1.0 / g as f64;
+    let r2 = radius * radius;
+    let near = |a: usize, b: usize| {
+        let gx = a.saturating_sub(1) as f64 * s;
+        let gy = b.saturating_sub(1) as f64 * s;
+        gx * gx + gy * gy < r2
+    };
+    (0..=reach)
+        .filter_map(|b| {
+            let a = (0..=reach).take_while(|&a| near(a, b)).last()?;
+            (b > 0 || a > 0).then_some((b, a))
+        })
+        .collect()
+}
+
 /// Counts of the pairs of `points` in bins [iΔr, (i+1)Δr), i < `bins`: equal to
 /// [`all_pairs`] bin for bin; by the cell grid (module docs) when the radius `bins`·Δr is
 /// small enough for one, else over all pairs.
@@ -118,20 +154,7 @@ pub(crate) fn pair_counts(
         ys[fill[c]] = p.y;
         fill[c] += 1;
     }
-    // The half stencil, row by row: for row offset b, the column offsets −a_b … a_b (b > 0) or
-    // 1 … a_b (b = 0) whose cells can hold a pair closer than the radius.
-    let s = 1.0 / g as f64;
-    let near = |a: usize, b: usize| {
-        let gx = a.saturating_sub(1) as f64 * s;
-        let gy = b.saturating_sub(1) as f64 * s;
-        gx * gx + gy * gy < r2
-    };
-    let rows: Vec<(usize, usize)> = (0..=reach)
-        .filter_map(|b| {
-            let a = (0..=reach).take_while(|&a| near(a, b)).last()?;
-            (b > 0 || a > 0).then_some((b, a))
-        })
-        .collect();
+    let rows = stencil(g, reach, radius);
     let chunks = chunk_count(g);
     let partial: Vec<Vec<u64>> = (0..chunks)
         .into_par_iter()

@@ -39,8 +39,14 @@
 //! |·| (P is a power, and the windowed estimate can dip below zero). The frequencies are
 //! ν_k = kΔν, k = 0 … bins − 1, Δν = ν_max/bins; PSA's spectral statistics use the same bin
 //! count as the RDF and ν_max = N/2 ([`radial_power`]). J₀ is Abramowitz & Stegun 9.4.1 and
-//! 9.4.3 (absolute error < 10⁻⁷, checked against [`bessel_j0`] in the tests);
-//! [`radial_power_from_rdf_naive`] evaluates the same sum with the exact J₀ and no shortcut.
+//! 9.4.3 (absolute error < 10⁻⁷, checked against [`bessel_j0`] in the tests). The sum is
+//! evaluated in O(m log m) ([`super::hankel`]: prefix sums for J₀'s power series, chirp-z
+//! transforms for its asymptotic series); [`radial_power_from_rdf_direct`] sums it term by
+//! term with the same J₀ (the reference: equal up to rounding, ≈ 10⁻¹⁴), and
+//! [`radial_power_from_rdf_naive`] with the exact J₀ and no shortcut.
+//!
+//! The windows are at most ½·r_max long, so the statistics read the RDF up to r = ¼ only:
+//! [`radial_power`] counts just the pairs closer than that.
 //!
 //! PSA derives its statistics from this transform, not from a periodogram on the integer
 //! frequency grid (`src/core/spectrum/`), because they need the spectrum on a continuous,
@@ -94,15 +100,17 @@
 //!
 //! # Costs
 //!
-//! [`psa_statistics`]: the RDF over all pairs, N(N−1)/2 distances (parallel); the transform,
-//! about 0.4 · (100√N)² = 4000·N Bessel evaluations (parallel); a triangulation of about
-//! N + 16√N points. N ≤ [`PSA_MAX_N`].
+//! [`psa_statistics`]: the RDF's pairs closer than ¼ by a cell grid (≈ πN²/32 pairs, plus the
+//! grid's margin; parallel); the transform, a few hundred thousand J₀ terms summed directly and
+//! ≈ 4 blocks × 47 FFTs of length ≤ 2m (parallel), instead of ≈ m²/2 = 5000·N J₀ terms; a
+//! triangulation of about N + 16√N points ([`radial_power_work`] counts them for the budget).
+//! The pairs still grow as N², so N ≤ [`PSA_MAX_N`].
 
 use glam::DVec2;
-use rayon::prelude::*;
 use serde::Serialize;
-use std::f64::consts::{FRAC_PI_4, PI, TAU};
+use std::f64::consts::{PI, TAU};
 
+use super::hankel;
 use super::pairs::{self, bin_of};
 use super::{hex_distance, validate, Cancel, MetricsError, CANCEL_STRIDE};
 use crate::core::filter::special::bessel_j0;
@@ -111,8 +119,8 @@ use crate::core::torus::{circumcircle, circumdisc_in_band};
 
 /// The fewest points the PSA statistics accept (an RDF needs a pair).
 pub const PSA_MIN_N: usize = 2;
-/// The most points the PSA statistics accept: their RDF costs N(N−1)/2 distances (≈ 2·10⁹
-/// at this N, a few seconds on two cores).
+/// The most points the PSA statistics accept: their RDF visits the pairs closer than ¼
+/// (≈ 0.12·N², ≈ 5·10⁸ at this N, a few seconds on two cores).
 pub const PSA_MAX_N: usize = 65_536;
 /// The most bins an RDF or radial power curve may have.
 pub const RDF_MAX_BINS: usize = 1 << 24;
@@ -200,7 +208,7 @@ fn validate_psa(points: &[DVec2], what: &'static str) -> Result<(), MetricsError
             what,
             n,
             max: PSA_MAX_N,
-            cost: "O(N²) pair distances",
+            cost: "O(N²) pairs closer than ¼",
         });
     }
     if n < PSA_MIN_N {
@@ -247,24 +255,29 @@ pub fn spectral_bins(n: usize) -> usize {
     (100.0 * (n as f64).sqrt()) as usize
 }
 
-/// The number of terms [`radial_power`] sums for N points (the budget's count): for each of
-/// the m = [`spectral_bins`] frequencies, the RDF samples 1 … ⌊L(ν)/Δr⌋ (at most m − 1).
-/// About m²/2.
-pub fn transform_terms(n: usize) -> f64 {
+/// The work of [`radial_power`] for N points (the budget's counts): the pairs its cell grid
+/// visits (those closer than ¼, the longest window, and the grid's margin: ≈ 0.12·N² for
+/// N ≥ 1000), the J₀ terms it sums one by one, and its FFTs' Σ L·log₂ L.
+pub fn radial_power_work(n: usize) -> (f64, f64, f64) {
     let m = spectral_bins(n);
-    if m == 0 {
-        return 0.0;
+    if m == 0 || n < PSA_MIN_N {
+        return (0.0, 0.0, 0.0);
     }
-    let dnu = 0.5 * n as f64 / m as f64;
-    let dr = 0.5 / m as f64;
-    (0..m)
-        .map(|k| last_term(window_length(k as f64 * dnu, n, 0.5), dr, m) as f64)
-        .sum()
+    let r_max = 0.5;
+    let used = hankel::samples_used(m, r_max);
+    let pairs = pairs::visited_pairs(n, used as f64 * (r_max / m as f64));
+    let plan = hankel::Plan::new(n, r_max, m, m, 0.5 * n as f64);
+    (pairs, plan.direct_terms(n, r_max, m), plan.fft_work())
+}
+
+/// The pairs [`rdf`] visits for N points up to `r_max` (the budget's count).
+pub fn rdf_work(n: usize, r_max: f64) -> f64 {
+    pairs::visited_pairs(n, r_max)
 }
 
 /// The last RDF sample of the transform at window length `len`.
 #[inline]
-fn last_term(len: f64, dr: f64, m: usize) -> usize {
+pub(super) fn last_term(len: f64, dr: f64, m: usize) -> usize {
     ((len / dr).floor() as usize).min(m - 1)
 }
 
@@ -327,37 +340,9 @@ pub fn rdf_naive(
     })
 }
 
-/// J₀(x) by Abramowitz & Stegun 9.4.1 (|x| ≤ 3, error < 5·10⁻⁸) and 9.4.3 (|x| > 3,
-/// √x·error < 2·10⁻⁸ in amplitude and 7·10⁻⁸ in phase).
-#[inline]
-fn j0_fast(x: f64) -> f64 {
-    let ax = x.abs();
-    if ax <= 3.0 {
-        let t = (ax / 3.0) * (ax / 3.0);
-        1.0 + t
-            * (-2.249_999_7
-                + t * (1.265_620_8
-                    + t * (-0.316_386_6
-                        + t * (0.044_447_9 + t * (-0.003_944_4 + t * 0.000_210_0)))))
-    } else {
-        let t = 3.0 / ax;
-        let f0 = 0.797_884_56
-            + t * (-0.000_000_77
-                + t * (-0.005_527_40
-                    + t * (-0.000_095_12
-                        + t * (0.001_372_37 + t * (-0.000_728_05 + t * 0.000_144_76)))));
-        let theta = ax - FRAC_PI_4
-            + t * (-0.041_663_97
-                + t * (-0.000_039_54
-                    + t * (0.002_625_73
-                        + t * (-0.000_541_25 + t * (-0.000_293_33 + t * 0.000_135_58)))));
-        f0 * theta.cos() / ax.sqrt()
-    }
-}
-
 /// PSA's taper (module docs) at r for window length `len`; 0 beyond.
 #[inline]
-fn window(r: f64, len: f64) -> f64 {
+pub(super) fn window(r: f64, len: f64) -> f64 {
     if r > len {
         0.0
     } else {
@@ -367,7 +352,7 @@ fn window(r: f64, len: f64) -> f64 {
 
 /// The window length L(ν) = r_max · clamp(4ν/√N, 0.2, 0.5).
 #[inline]
-fn window_length(nu: f64, n: usize, r_max: f64) -> f64 {
+pub(super) fn window_length(nu: f64, n: usize, r_max: f64) -> f64 {
     r_max * (4.0 * nu / (n as f64).sqrt()).clamp(0.2, 0.5)
 }
 
@@ -383,8 +368,10 @@ fn validate_spectrum(bins: usize, nu_max: f64) -> Result<(), MetricsError> {
 }
 
 /// The radial power spectrum P(ν_k), ν_k = k·ν_max/bins, from an RDF by PSA's windowed
-/// Hankel transform (module docs). Parallel over the frequencies; each value is a serial sum,
-/// so the result does not depend on the number of threads.
+/// Hankel transform (module docs), evaluated fast ([`super::hankel`]: chirp-z transforms of
+/// J₀'s asymptotic series and prefix sums of its power series, O(m log m)); equal to
+/// [`radial_power_from_rdf_direct`] up to rounding (≈ 10⁻¹² here). Parallel; the result does
+/// not depend on the number of threads.
 ///
 /// Errors: `bins` = 0 or above [`RDF_MAX_BINS`], `nu_max` not a positive number, cancellation.
 pub fn radial_power_from_rdf(
@@ -394,43 +381,40 @@ pub fn radial_power_from_rdf(
     cancel: &Cancel,
 ) -> Result<RadialPower, MetricsError> {
     validate_spectrum(bins, nu_max)?;
-    let m = rdf.values.len();
-    let dr = rdf.bin_width();
-    let dnu = nu_max / bins as f64;
-    let n = rdf.n;
-    // The window is the same for all frequencies where L(ν) is clamped (all but a few).
-    let taper = |len: f64| -> Vec<f64> { (0..m).map(|j| window(j as f64 * dr, len)).collect() };
-    let (short, long) = (0.2 * rdf.r_max, 0.5 * rdf.r_max);
-    let (w_short, w_long) = (taper(short), taper(long));
-    let values = (0..bins)
-        .into_par_iter()
-        .with_min_len(8)
-        .map(|k| {
-            cancel.check()?;
-            let nu = k as f64 * dnu;
-            let len = window_length(nu, n, rdf.r_max);
-            let u = TAU * nu;
-            // Samples beyond L have a zero window; j = 0 has r = 0.
-            let last = last_term(len, dr, m);
-            let w_at = |j: usize| {
-                if len == short {
-                    w_short[j]
-                } else if len == long {
-                    w_long[j]
-                } else {
-                    window(j as f64 * dr, len)
-                }
-            };
-            let mut sum = 0.0;
-            for j in 1..=last {
-                let r = j as f64 * dr;
-                let f = (rdf.values[j] - 1.0) * j0_fast(u * r) * r * w_at(j);
-                sum += if j == m - 1 { 0.5 * f } else { f };
-            }
-            Ok((1.0 + TAU * n as f64 * dr * sum).abs())
-        })
-        .collect::<Result<Vec<f64>, MetricsError>>()?;
-    Ok(RadialPower { n, nu_max, values })
+    let t = rdf_transform(rdf, bins, nu_max);
+    Ok(RadialPower {
+        n: rdf.n,
+        nu_max,
+        values: hankel::power(&t, cancel)?,
+    })
+}
+
+fn rdf_transform(rdf: &Rdf, bins: usize, nu_max: f64) -> hankel::Transform<'_> {
+    hankel::Transform {
+        n: rdf.n,
+        r_max: rdf.r_max,
+        m: rdf.values.len(),
+        g: &rdf.values,
+        bins,
+        nu_max,
+    }
+}
+
+/// [`radial_power_from_rdf`] by the direct sum: one J₀ (the same A&S approximation) per
+/// frequency and RDF sample within the window, O(m²) (the reference of the fast path).
+pub fn radial_power_from_rdf_direct(
+    rdf: &Rdf,
+    bins: usize,
+    nu_max: f64,
+    cancel: &Cancel,
+) -> Result<RadialPower, MetricsError> {
+    validate_spectrum(bins, nu_max)?;
+    let t = rdf_transform(rdf, bins, nu_max);
+    Ok(RadialPower {
+        n: rdf.n,
+        nu_max,
+        values: hankel::power_direct(&t, cancel)?,
+    })
 }
 
 /// [`radial_power_from_rdf`] by the plain trapezoid sum over all RDF samples with the exact
@@ -465,15 +449,44 @@ pub fn radial_power_from_rdf_naive(
     })
 }
 
-/// PSA's radial power spectrum of `points`: the RDF with [`spectral_bins`] bins up to ½, its
-/// transform at as many frequencies up to N/2.
+/// PSA's radial power spectrum of `points`: the RDF with [`spectral_bins`] bins up to ½ (only
+/// the bins up to ¼ counted, all the windows reach), its transform at as many frequencies up
+/// to N/2.
 ///
 /// Errors: as [`rdf`].
 pub fn radial_power(points: &[DVec2], cancel: &Cancel) -> Result<RadialPower, MetricsError> {
+    validate_psa(points, "a radial distribution function")?;
+    let n = points.len();
+    let m = spectral_bins(n).max(1);
+    let r_max = 0.5;
+    validate_range(m, r_max)?;
+    // Only the RDF samples a window reaches (r ≤ ¼): the pairs closer than that.
+    let dr = r_max / m as f64;
+    let used = hankel::samples_used(m, r_max);
+    let g = normalise(n, dr, &pairs::pair_counts(points, used, dr, cancel)?);
+    let nu_max = 0.5 * n as f64;
+    let t = hankel::Transform {
+        n,
+        r_max,
+        m,
+        g: &g,
+        bins: m,
+        nu_max,
+    };
+    Ok(RadialPower {
+        n,
+        nu_max,
+        values: hankel::power(&t, cancel)?,
+    })
+}
+
+/// [`radial_power`] by the references: the RDF over all pairs ([`rdf_naive`]) and the direct
+/// transform ([`radial_power_from_rdf_direct`]).
+pub fn radial_power_direct(points: &[DVec2], cancel: &Cancel) -> Result<RadialPower, MetricsError> {
     let n = points.len();
     let bins = spectral_bins(n).max(1);
-    let g = rdf(points, bins, 0.5, cancel)?;
-    radial_power_from_rdf(&g, bins, 0.5 * n as f64, cancel)
+    let g = rdf_naive(points, bins, 0.5, cancel)?;
+    radial_power_from_rdf_direct(&g, bins, 0.5 * n as f64, cancel)
 }
 
 /// The effective Nyquist frequency of a radial power spectrum, relative to √N/2 (module
@@ -731,13 +744,13 @@ mod tests {
         let mut x = 0.0;
         let mut worst: f64 = 0.0;
         while x < 3000.0 {
-            worst = worst.max((j0_fast(x) - bessel_j0(x)).abs());
+            worst = worst.max((hankel::j0_fast(x) - bessel_j0(x)).abs());
             x += if x < 50.0 { 0.001 } else { 0.0731 };
         }
         assert!(worst < 1e-7, "max |J0 error| = {worst:e}");
         // Both sides of the switch at 3.
-        assert!((j0_fast(3.0) - bessel_j0(3.0)).abs() < 1e-7);
-        assert!((j0_fast(3.0 + 1e-12) - bessel_j0(3.0)).abs() < 1e-7);
+        assert!((hankel::j0_fast(3.0) - bessel_j0(3.0)).abs() < 1e-7);
+        assert!((hankel::j0_fast(3.0 + 1e-12) - bessel_j0(3.0)).abs() < 1e-7);
     }
 
     /// Jittered points: one per cell of a k × k grid.
@@ -867,6 +880,55 @@ mod tests {
                 .fold(0.0, f64::max);
             // J₀'s error (< 1e-7) times 2πN Σ|g − 1| r w Δr.
             assert!(worst < 1e-5, "n = {n}: max |ΔP| = {worst:e}");
+        }
+    }
+
+    /// max |P_a − P_b| / max(1, |P_b|).
+    fn worst_relative(a: &RadialPower, b: &RadialPower) -> f64 {
+        assert_eq!(a.values().len(), b.values().len());
+        a.values()
+            .iter()
+            .zip(b.values())
+            .map(|(x, y)| (x - y).abs() / y.abs().max(1.0))
+            .fold(0.0, f64::max)
+    }
+
+    #[test]
+    fn the_fast_transform_matches_the_direct_sum_and_its_statistics() {
+        let c = Cancel::never();
+        let (hex, _, _) = lattice(32, 32, 0.5);
+        let mut edge = jitter(20, 9);
+        edge.extend([DVec2::ZERO, DVec2::new(1.0 - f64::EPSILON / 2.0, 0.5)]);
+        let sets: Vec<(&str, Vec<DVec2>)> = vec![
+            ("random", white(256, 5)),
+            ("jitter", jitter(32, 7)),
+            ("clustered", clustered(3)),
+            ("lattice", hex),
+            ("edge", edge),
+            ("two", vec![DVec2::new(0.1, 0.9), DVec2::new(0.95, 0.05)]),
+            ("three", white(3, 6)),
+            ("duplicates", vec![DVec2::new(0.3, 0.7); 4]),
+        ];
+        for (name, pts) in &sets {
+            let fast = radial_power(pts, &c).unwrap();
+            let direct = radial_power_direct(pts, &c).unwrap();
+            let worst = worst_relative(&fast, &direct);
+            assert!(worst < 1e-10, "{name}: max |ΔP| = {worst:e}");
+            let (nf, nd) = (effective_nyquist(&fast), effective_nyquist(&direct));
+            let (of, od) = (oscillations(&fast), oscillations(&direct));
+            assert!((nf - nd).abs() <= 1e-9, "{name}: ν_eff {nf} vs {nd}");
+            assert!(
+                (of - od).abs() <= 1e-9 * od.max(1.0),
+                "{name}: {of} vs {od}"
+            );
+            // The same transform from the whole RDF (other bins: the public entry point).
+            let g = rdf(pts, 500, 0.5, &c).unwrap();
+            for (bins, nu_max) in [(700, 0.5 * pts.len() as f64), (300, 40.0), (90, 3.0)] {
+                let fast = radial_power_from_rdf(&g, bins, nu_max, &c).unwrap();
+                let direct = radial_power_from_rdf_direct(&g, bins, nu_max, &c).unwrap();
+                let worst = worst_relative(&fast, &direct);
+                assert!(worst < 1e-10, "{name}, {bins} to {nu_max}: {worst:e}");
+            }
         }
     }
 
@@ -1054,31 +1116,54 @@ mod tests {
     }
 
     #[test]
-    fn transform_terms_are_the_loop_count_and_about_half_m_squared() {
+    fn radial_power_work_counts_the_terms_the_fast_path_sums() {
         for n in [2, 100, 1024, 4096] {
             let m = spectral_bins(n);
-            let g = Rdf {
-                n,
-                r_max: 0.5,
-                values: vec![1.0; m],
-            };
-            let dr = g.bin_width();
+            let dr = 0.5 / m as f64;
             let dnu = 0.5 * n as f64 / m as f64;
-            let counted: usize = (0..m)
-                .map(|k| {
-                    (1..m)
-                        .filter(|&j| j as f64 * dr <= window_length(k as f64 * dnu, n, 0.5))
-                        .count()
-                })
+            let long = 0.25;
+            let last = ((long / dr).floor() as usize).min(m - 1);
+            // Counted here from the definitions: the frequencies before the long window over
+            // their windows, then per block [K₀, 4K₀) from the first k with J(k) < last, the
+            // samples J(k) < j ≤ J(K₀), J(k) = #{j ≤ last: 2πν_k·r_j ≤ 3}.
+            let len = |k: usize| window_length(k as f64 * dnu, n, 0.5);
+            let k_long = (0..m).find(|&k| len(k) == long).unwrap_or(m);
+            let jk = |k: usize| {
+                (1..=last)
+                    .filter(|&j| TAU * (k as f64 * dnu) * (j as f64 * dr) <= 3.0)
+                    .count()
+            };
+            let mut counted: usize = (0..k_long)
+                .map(|k| (1..m).filter(|&j| j as f64 * dr <= len(k)).count())
                 .sum();
+            let fast = m - k_long >= 64;
+            if fast {
+                let mut k0 = (k_long..m).find(|&k| jk(k) < last).unwrap_or(m);
+                while k0 < m {
+                    let k1 = (4 * k0).clamp(k0 + 1, m);
+                    counted += (k0..k1).map(|k| jk(k0) - jk(k)).sum::<usize>();
+                    k0 = k1;
+                }
+            } else {
+                counted = (0..m)
+                    .map(|k| (1..m).filter(|&j| j as f64 * dr <= len(k)).count())
+                    .sum();
+            }
+            let (pairs, terms, fft) = radial_power_work(n);
             // Within one per frequency (j·Δr ≤ L and j ≤ ⌊L/Δr⌋ may differ by a rounding).
             assert!(
-                (transform_terms(n) - counted as f64).abs() <= m as f64,
+                (terms - counted as f64).abs() <= m as f64,
+                "n = {n}: {terms} vs {counted}"
+            );
+            let all = (n * (n - 1) / 2) as f64;
+            assert!(
+                pairs <= all && pairs >= all * PI / 32.0 * 0.99 - 1.0,
                 "n = {n}"
             );
-            if n >= 1024 {
-                let half = (m * m) as f64 / 2.0;
-                assert!((counted as f64 / half - 1.0).abs() < 0.02, "n = {n}");
+            if n == 4096 {
+                // The fast path: about 1% of the direct sum's m²/2 terms, and FFTs.
+                assert!(terms < 0.02 * (m * m) as f64 / 2.0, "{terms}");
+                assert!(fft > 0.0 && pairs < 0.3 * all, "{fft} {pairs}");
             }
         }
     }

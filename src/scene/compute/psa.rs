@@ -27,7 +27,7 @@ pub(in crate::scene) fn run(ctx: &JobCtx) -> Output {
         PsaData {
             statistics: None,
             skipped: Some(format!(
-                "PSA statistics need {PSA_MIN_N} ≤ n ≤ {PSA_MAX_N} points (the RDF costs O(N²)), got n = {n}"
+                "PSA statistics need {PSA_MIN_N} ≤ n ≤ {PSA_MAX_N} points (the RDF's pairs closer than ¼ cost O(N²)), got n = {n}"
             )),
         }
     };

@@ -11,10 +11,8 @@ pub(in crate::scene) fn inputs(_: &Scene, _: usize) -> Inputs {
 /// What the node computes in column `c` of scene `s` (the budget's estimate).
 pub(in crate::scene) fn estimate(s: &Scene, c: usize) -> Vec<Estimate> {
     let n = n_of(s, c);
-    vec![budget::rdf(
-        n,
-        crate::core::metrics::psa::psa_rdf_range(n).0,
-    )]
+    let (bins, r_max) = crate::core::metrics::psa::psa_rdf_range(n);
+    vec![budget::rdf(n, bins, r_max)]
 }
 
 /// The job: the node's value from the scene, the column and the declared inputs.
