@@ -7,14 +7,81 @@
 //! Layout: cell (i, j) sits at grid column i and grid row K − 1 − j (row 0 at the top holds
 //! j = K − 1): x is dimension i, y dimension j, so the triangle fills the upper left of a
 //! (K − 1) × (K − 1) grid, as on axes where y grows upwards.
+//!
+//! The picture is drawn at the pixel size it is shown at ([`MatrixData::picture_sized`]: the
+//! figure's plotting area, the panel's size on screen), never resampled afterwards: the gaps
+//! between cells are a whole number of pixels, the same everywhere, and scale with the cells
+//! (1/24 of a cell, at least one pixel: [`MatrixAxis`]). At its natural size (48-pixel cells)
+//! the gaps are [`MATRIX_GAP`] pixels.
 
 use super::Colormap;
 use crate::core::metrics::cube::{ProjectionMeasure, ProjectionRow};
 
 /// Pixels of a cell's side in the node's coverage images.
 pub const MATRIX_CELL: usize = 48;
-/// Pixels between two cells of the picture.
+/// Pixels between two cells of the picture at its natural size ([`MATRIX_CELL`]-pixel cells);
+/// at other sizes the gap keeps this share of a cell's pitch (cell plus gap), rounded to
+/// whole pixels, at least one.
 pub const MATRIX_GAP: usize = 2;
+
+/// Where the cells of one side of the picture fall: cell k covers the pixels
+/// `start(k) .. start(k) + len(k)` with `start(k) = round(k (side + gap) / g)`, so every gap is
+/// exactly `gap` pixels and the cells differ by at most one pixel.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct MatrixAxis {
+    /// The picture's side in pixels.
+    pub side: usize,
+    /// Pixels between two cells.
+    pub gap: usize,
+    /// Cells along the side.
+    pub cells: usize,
+}
+
+impl MatrixAxis {
+    /// The layout of `cells` cells over `side` pixels (the gap [`MATRIX_GAP`]/(cell + gap) of
+    /// the pitch, at least one pixel; none for a single cell).
+    pub fn new(cells: usize, side: usize) -> Self {
+        let share = MATRIX_GAP as f64 / (MATRIX_CELL + MATRIX_GAP) as f64;
+        let gap = if cells > 1 {
+            ((side as f64 / cells as f64 * share).round() as usize).max(1)
+        } else {
+            0
+        };
+        MatrixAxis { side, gap, cells }
+    }
+
+    /// The side of `cells` cells of [`MATRIX_CELL`] pixels [`MATRIX_GAP`] apart.
+    pub fn natural_side(cells: usize) -> usize {
+        cells * MATRIX_CELL + cells.saturating_sub(1) * MATRIX_GAP
+    }
+
+    /// The first pixel of cell `k` (`k = cells`: one gap past the end).
+    fn edge(&self, k: usize) -> usize {
+        if self.cells == 0 {
+            return 0;
+        }
+        (k * (self.side + self.gap) + self.cells / 2) / self.cells
+    }
+
+    /// Cell `k`'s first pixel and width.
+    pub fn span(&self, k: usize) -> (usize, usize) {
+        let (a, b) = (self.edge(k), self.edge(k + 1));
+        (a, b.saturating_sub(a + self.gap))
+    }
+
+    /// The cell holding pixel `x`, if any (none in a gap or past the end).
+    pub fn cell_at(&self, x: usize) -> Option<usize> {
+        if self.cells == 0 || x >= self.side {
+            return None;
+        }
+        let k = ((x * self.cells) / (self.side + self.gap)).min(self.cells - 1);
+        // Rounding may put x in the cell before or after the estimate.
+        (k.saturating_sub(1)..=(k + 1).min(self.cells - 1)).find(|&c| {
+            let (a, w) = self.span(c);
+            (a..a + w).contains(&x)
+        })
+    }
+}
 
 /// One cell: the pair, its measured row (when measured: rows come in while the node runs), and
 /// the coverage of its scatter plot.
@@ -68,21 +135,32 @@ impl MatrixData {
         (i, self.grid() - j)
     }
 
-    /// The picture's pixel rectangle (x, y, side) of pair (i, j)'s cell.
-    pub fn cell_rect(&self, pair: [usize; 2]) -> (usize, usize, usize) {
-        let (gx, gy) = self.grid_of(pair);
-        let step = MATRIX_CELL + MATRIX_GAP;
-        (gx * step, gy * step, MATRIX_CELL)
+    /// The picture's side at its natural size ([`MATRIX_CELL`]-pixel cells).
+    pub fn natural_side(&self) -> usize {
+        MatrixAxis::natural_side(self.grid())
     }
 
-    /// The cell under the picture's pixel (x, y), if any (none in a gap or outside the
-    /// triangle).
-    pub fn cell_at_pixel(&self, x: usize, y: usize) -> Option<&MatrixCell> {
-        let step = MATRIX_CELL + MATRIX_GAP;
-        if x % step >= MATRIX_CELL || y % step >= MATRIX_CELL {
-            return None;
-        }
-        self.cell_at_grid(x / step, y / step)
+    /// The pixel rectangle (x, y, width, height) of pair (i, j)'s cell in the picture of
+    /// `width` × `height` pixels.
+    pub fn cell_rect(&self, pair: [usize; 2], (width, height): (usize, usize)) -> [usize; 4] {
+        let (gx, gy) = self.grid_of(pair);
+        let g = self.grid();
+        let (x, w) = MatrixAxis::new(g, width).span(gx);
+        let (y, h) = MatrixAxis::new(g, height).span(gy);
+        [x, y, w, h]
+    }
+
+    /// The cell under pixel (x, y) of the picture of `width` × `height` pixels, if any (none in
+    /// a gap or outside the triangle).
+    pub fn cell_at_pixel(
+        &self,
+        (x, y): (usize, usize),
+        (width, height): (usize, usize),
+    ) -> Option<&MatrixCell> {
+        let g = self.grid();
+        let gx = MatrixAxis::new(g, width).cell_at(x)?;
+        let gy = MatrixAxis::new(g, height).cell_at(y)?;
+        self.cell_at_grid(gx, gy)
     }
 
     /// Whether every cell is measured.
@@ -114,33 +192,52 @@ impl MatrixData {
         Some((lo, hi))
     }
 
-    /// The picture: (width, height, RGB bytes) of the (K − 1)² grid of [`MATRIX_CELL`]-pixel
-    /// cells [`MATRIX_GAP`] apart; each cell tinted by its `measure` through `colormap` over
-    /// [`MatrixData::range`] (light grey while unmeasured or without a value), its points
-    /// darkened over the tint; white outside the triangle.
+    /// The picture at its natural size ([`Self::natural_side`]: [`MATRIX_CELL`]-pixel cells
+    /// [`MATRIX_GAP`] apart): see [`Self::picture_sized`].
     pub fn picture(
         &self,
         measure: ProjectionMeasure,
         colormap: Colormap,
     ) -> (usize, usize, Vec<u8>) {
-        let g = self.grid();
-        let side = g * MATRIX_CELL + g.saturating_sub(1) * MATRIX_GAP;
-        let mut rgb = vec![255u8; side * side * 3];
+        let side = self.natural_side();
+        self.picture_sized(measure, colormap, (side, side))
+    }
+
+    /// The picture: (width, height, RGB bytes) of the (K − 1)² grid of cells laid out over
+    /// `width` × `height` pixels ([`MatrixAxis`]: even gaps of whole pixels); each cell tinted
+    /// by its `measure` through `colormap` over [`MatrixData::range`] (light grey while
+    /// unmeasured or without a value), its points darkened over the tint (the coverage image
+    /// resampled to the cell: each pixel the darkest coverage it covers, so no point is lost
+    /// when cells are smaller than [`MATRIX_CELL`]); white in the gaps and outside the
+    /// triangle.
+    pub fn picture_sized(
+        &self,
+        measure: ProjectionMeasure,
+        colormap: Colormap,
+        (width, height): (usize, usize),
+    ) -> (usize, usize, Vec<u8>) {
+        let (width, height) = (width.max(1), height.max(1));
+        let mut rgb = vec![255u8; width * height * 3];
         let range = self.range(measure);
+        // The source pixels [from(k, n), from(k + 1, n)) that destination pixel k of n covers.
+        let from = |k: usize, n: usize| (k * MATRIX_CELL) / n.max(1);
         for cell in &self.cells {
             let tint = match (cell.row.and_then(|r| r.value(measure)), range) {
                 (Some(v), Some((lo, hi))) => colormap.eval((v - lo) / (hi - lo)),
                 _ => [210, 210, 210],
             };
-            let (gx, gy) = self.grid_of(cell.pair);
-            let (x0, y0) = (
-                gx * (MATRIX_CELL + MATRIX_GAP),
-                gy * (MATRIX_CELL + MATRIX_GAP),
-            );
-            for r in 0..MATRIX_CELL {
-                for c in 0..MATRIX_CELL {
-                    let a = cell.coverage[r * MATRIX_CELL + c] as u32;
-                    let o = ((y0 + r) * side + x0 + c) * 3;
+            let [x0, y0, w, h] = self.cell_rect(cell.pair, (width, height));
+            for r in 0..h {
+                let rows = from(r, h)..from(r + 1, h).max(from(r, h) + 1);
+                for c in 0..w {
+                    let cols = from(c, w)..from(c + 1, w).max(from(c, w) + 1);
+                    let a = rows
+                        .clone()
+                        .flat_map(|sr| cols.clone().map(move |sc| (sr, sc)))
+                        .map(|(sr, sc)| cell.coverage[sr * MATRIX_CELL + sc])
+                        .max()
+                        .unwrap_or(0) as u32;
+                    let o = ((y0 + r) * width + x0 + c) * 3;
                     for (k, &t) in tint.iter().enumerate() {
                         // Points are near black over the tint: t·(1 − a) + 20·a.
                         rgb[o + k] = ((t as u32 * (255 - a) + 20 * a + 127) / 255) as u8;
@@ -148,7 +245,7 @@ impl MatrixData {
                 }
             }
         }
-        (side, side, rgb)
+        (width, height, rgb)
     }
 
     /// The table as CSV: `i,j,t_value,l2_star_discrepancy,min_distance`, pairs in order
@@ -225,13 +322,16 @@ mod tests {
         assert_eq!(m.cell_at_grid(2, 0).unwrap().pair, [2, 3]);
         assert_eq!(m.cell_at_grid(0, 2).unwrap().pair, [0, 1]);
         assert!(m.cell_at_grid(1, 2).is_none() && m.cell_at_grid(3, 0).is_none());
+        let natural = (m.natural_side(), m.natural_side());
         for c in &m.cells {
             let (gx, gy) = m.grid_of(c.pair);
             assert_eq!(m.cell_at_grid(gx, gy).unwrap().pair, c.pair);
-            let (x, y, s) = m.cell_rect(c.pair);
-            assert_eq!(m.cell_at_pixel(x, y).unwrap().pair, c.pair);
-            assert_eq!(m.cell_at_pixel(x + s - 1, y + s - 1).unwrap().pair, c.pair);
-            assert!(m.cell_at_pixel(x + s, y).is_none(), "the gap");
+            let [x, y, w, h] = m.cell_rect(c.pair, natural);
+            assert_eq!((x, y, w, h), (gx * 50, gy * 50, MATRIX_CELL, MATRIX_CELL));
+            assert_eq!(m.cell_at_pixel((x, y), natural).unwrap().pair, c.pair);
+            let corner = (x + w - 1, y + h - 1);
+            assert_eq!(m.cell_at_pixel(corner, natural).unwrap().pair, c.pair);
+            assert!(m.cell_at_pixel((x + w, y), natural).is_none(), "the gap");
         }
         assert_eq!(m.range(ProjectionMeasure::TValue), Some((0.0, 5.0)));
         let (w, h, rgb) = m.picture(ProjectionMeasure::TValue, Colormap::Viridis);
@@ -244,6 +344,71 @@ mod tests {
         assert_eq!(px(w - 2, h - 2), [255, 255, 255]);
         let csv = m.csv();
         assert!(csv.starts_with("i,j,t_value,l2_star_discrepancy,min_distance\n0,1,1,0.02,0.05\n"));
+    }
+
+    /// At any size the gaps are whole pixels, all equal, scaling with the cells (1/24 of a
+    /// cell, at least 1), and the cells tile the side: what the picture draws is what
+    /// `cell_at` finds.
+    #[test]
+    fn gaps_are_even_whole_pixels_at_any_size() {
+        for g in [1, 2, 3, 7, 15] {
+            let natural = MatrixAxis::new(g, MatrixAxis::natural_side(g));
+            let want = if g > 1 { MATRIX_GAP } else { 0 };
+            assert_eq!(natural.gap, want, "g = {g}");
+            for side in [30, 97, 250, 333, 512, 748, 1000, 1497, 2000] {
+                let a = MatrixAxis::new(g, side);
+                let spans: Vec<(usize, usize)> = (0..g).map(|k| a.span(k)).collect();
+                assert_eq!(spans[0].0, 0);
+                let (last, w) = spans[g - 1];
+                assert_eq!(last + w, side, "g = {g}, side = {side}");
+                let gaps: Vec<usize> = spans.windows(2).map(|p| p[1].0 - p[0].0 - p[0].1).collect();
+                assert!(gaps.iter().all(|&x| x == a.gap), "{gaps:?}");
+                let widths: Vec<usize> = spans.iter().map(|s| s.1).collect();
+                let (lo, hi) = (widths.iter().min().unwrap(), widths.iter().max().unwrap());
+                assert!(hi - lo <= 1, "{widths:?}");
+                if g > 1 {
+                    // About 1/24 of a cell (2 px beside 48), at least one pixel.
+                    let cell = widths[0] as f64;
+                    assert!(
+                        (a.gap as f64 - cell / 24.0).abs() <= 1.0,
+                        "{} vs {cell}",
+                        a.gap
+                    );
+                    assert!(a.gap >= 1);
+                }
+                for x in 0..side {
+                    let inside = spans.iter().position(|&(s, w)| (s..s + w).contains(&x));
+                    assert_eq!(a.cell_at(x), inside, "g = {g}, side = {side}, x = {x}");
+                }
+            }
+        }
+        // Twice the size, twice the gap.
+        assert_eq!(
+            MatrixAxis::new(15, 2 * 748).gap,
+            2 * MatrixAxis::new(15, 748).gap
+        );
+    }
+
+    #[test]
+    fn a_smaller_picture_keeps_every_point() {
+        let mut coverage = vec![0u8; MATRIX_CELL * MATRIX_CELL];
+        coverage[17 * MATRIX_CELL + 31] = 255;
+        let m = MatrixData {
+            k: 2,
+            dims: 2,
+            n: 1,
+            cells: vec![MatrixCell {
+                pair: [0, 1],
+                row: None,
+                coverage,
+            }],
+        };
+        for side in [10, 20, 48, 100] {
+            let (_, _, rgb) =
+                m.picture_sized(ProjectionMeasure::TValue, Colormap::Viridis, (side, side));
+            let dark = rgb.chunks_exact(3).filter(|p| p[0] < 100).count();
+            assert!(dark >= 1, "side {side}: the point is lost");
+        }
     }
 
     #[test]

@@ -40,7 +40,7 @@ pub use image::{next_version, ImageData};
 pub use integration::{
     guide_line, IntegrationCurve, IntegrationData, IntegrationPlot, GUIDE_SLOPES,
 };
-pub use matrix::{coverage, MatrixCell, MatrixData, MATRIX_CELL, MATRIX_GAP};
+pub use matrix::{coverage, MatrixAxis, MatrixCell, MatrixData, MATRIX_CELL, MATRIX_GAP};
 pub use points::{
     drawn_strata, elementary_grid, PointsData, PsaData, SequenceData, StatsData, MAX_STRATA_LINES,
     STATS_PSA_MAX_N,

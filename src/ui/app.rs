@@ -78,22 +78,62 @@ pub struct SamplescopeApp {
 }
 
 /// The window's first moves, made once it is shown (window systems ignore them for a hidden
-/// window) and the monitor is known.
+/// window) and the monitor is known: full screen for `--lecture`, then — on a first run and
+/// after asking for full screen — a check that the window uses the screen. Where it does not
+/// (no window manager, e.g. a bare X server: maximize and full-screen requests are only hints
+/// to one, though winit reports them as granted), the window is given the monitor's size at
+/// the screen's top-left corner ([`window_fit`]).
 #[derive(Debug, Clone, Copy, Default)]
 struct WindowStart {
-    /// A first run (no window state stored): where the window system has not maximized the
-    /// window, give it the monitor's size.
+    /// Check that the window uses the screen (a first run, no window state stored; or after
+    /// full screen was asked for).
     fit_monitor: bool,
     /// `--lecture`: full screen.
     fullscreen: bool,
-    /// When the app was made.
+    /// When the app was made, or the last move was sent.
     since: Option<Instant>,
 }
 
+/// What the window's first check finds ([`window_fit`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Fit {
+    /// The monitor or the window's rectangle is not known (yet).
+    Unknown,
+    /// The window covers at least [`USES_SCREEN`] of the monitor both ways.
+    Uses,
+    /// It does not: give it this inner size (the monitor's, in points).
+    Resize(egui::Vec2),
+}
+
+/// The share of the monitor's width and height a window must cover to count as using the
+/// screen: a window manager's maximized window loses at most its title bar and the desktop's
+/// panels (a 1920×1080 screen with a 30-px title bar and a 48-px panel: 93 % of the height),
+/// the 1600×1000 first-run size on a 1920×1080 screen without one covers 83 % of the width.
+const USES_SCREEN: f32 = 0.9;
+
+/// Whether a window whose inner rectangle is `inner` uses a monitor of `monitor` (both in
+/// points, as egui's `ViewportInfo` gives them), and if not the size to give it.
+fn window_fit(monitor: Option<egui::Vec2>, inner: Option<egui::Rect>) -> Fit {
+    let (Some(m), Some(r)) = (monitor, inner) else {
+        return Fit::Unknown;
+    };
+    if !(m.x > 0.0 && m.y > 0.0) {
+        return Fit::Unknown;
+    }
+    if r.width() >= USES_SCREEN * m.x && r.height() >= USES_SCREEN * m.y {
+        Fit::Uses
+    } else {
+        Fit::Resize(m)
+    }
+}
+
 impl WindowStart {
-    /// How long after start the window's state is read (a window manager maximizes it once
-    /// it is mapped).
+    /// How long after start (or after asking for full screen) the window's state is read (a
+    /// window manager maximizes it once it is mapped).
     const SETTLE: Duration = Duration::from_millis(300);
+    /// How long the monitor and the window's rectangle are waited for (never known on
+    /// Wayland: its compositor places and sizes the window itself).
+    const GIVE_UP: Duration = Duration::from_secs(3);
 
     /// Sends the pending moves once the window has settled and the monitor is known.
     fn apply(&mut self, ctx: &egui::Context) {
@@ -101,23 +141,31 @@ impl WindowStart {
             return;
         }
         let since = *self.since.get_or_insert_with(Instant::now);
-        let (monitor, maximized, fullscreen) = ctx.input(|i| {
-            let v = i.viewport();
-            (v.monitor_size, v.maximized, v.fullscreen)
-        });
         if since.elapsed() < Self::SETTLE {
-            ctx.request_repaint_after(Self::SETTLE);
+            ctx.request_repaint_after(Self::SETTLE - since.elapsed());
             return;
         }
         if self.fullscreen {
             ctx.send_viewport_cmd(egui::ViewportCommand::Fullscreen(true));
             self.fullscreen = false;
+            // Then check that it took.
+            self.fit_monitor = true;
+            self.since = Some(Instant::now());
+            ctx.request_repaint_after(Self::SETTLE);
+            return;
         }
-        if self.fit_monitor {
-            if let Some(size) = monitor.filter(|s| s.x > 0.0 && s.y > 0.0) {
-                if maximized != Some(true) && fullscreen != Some(true) {
-                    ctx.send_viewport_cmd(egui::ViewportCommand::InnerSize(size));
-                }
+        let (monitor, inner) = ctx.input(|i| {
+            let v = i.viewport();
+            (v.monitor_size, v.inner_rect)
+        });
+        match window_fit(monitor, inner) {
+            Fit::Unknown if since.elapsed() < Self::GIVE_UP => {
+                ctx.request_repaint_after(Self::SETTLE);
+            }
+            Fit::Unknown | Fit::Uses => self.fit_monitor = false,
+            Fit::Resize(size) => {
+                ctx.send_viewport_cmd(egui::ViewportCommand::OuterPosition(egui::Pos2::ZERO));
+                ctx.send_viewport_cmd(egui::ViewportCommand::InnerSize(size));
                 self.fit_monitor = false;
             }
         }
@@ -868,4 +916,34 @@ impl eframe::App for SamplescopeApp {
 /// The scene last submitted (the shown frame of a moving scene), else the edited one.
 fn shown_scene(scene: &Scene, submitted: Option<&Scene>) -> Scene {
     submitted.unwrap_or(scene).clone()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_window_that_does_not_use_the_screen_gets_the_monitor_s_size() {
+        let m = egui::vec2(1920.0, 1080.0);
+        let rect = |w: f32, h: f32| {
+            Some(egui::Rect::from_min_size(
+                egui::pos2(0.0, 0.0),
+                egui::vec2(w, h),
+            ))
+        };
+        // No window manager: the first-run size stays (what a bare X server did).
+        assert_eq!(window_fit(Some(m), rect(1600.0, 1000.0)), Fit::Resize(m));
+        // Full screen, and maximized under a title bar and a panel: it uses the screen.
+        assert_eq!(window_fit(Some(m), rect(1920.0, 1080.0)), Fit::Uses);
+        assert_eq!(window_fit(Some(m), rect(1920.0, 1002.0)), Fit::Uses);
+        // A window manager's side dock leaves the width a little short: still used.
+        assert_eq!(window_fit(Some(m), rect(1850.0, 1080.0)), Fit::Uses);
+        // Unknown monitor or window (Wayland gives no window rectangle).
+        assert_eq!(window_fit(None, rect(800.0, 600.0)), Fit::Unknown);
+        assert_eq!(window_fit(Some(m), None), Fit::Unknown);
+        assert_eq!(
+            window_fit(Some(egui::Vec2::ZERO), rect(800.0, 600.0)),
+            Fit::Unknown
+        );
+    }
 }

@@ -10,7 +10,7 @@ use samplescope::core::params::Params;
 use samplescope::core::pattern::Pattern;
 use samplescope::core::progress::no_progress;
 use samplescope::engine::Evaluator;
-use samplescope::model::{MatrixData, MATRIX_CELL, MATRIX_GAP};
+use samplescope::model::{MatrixAxis, MatrixData};
 use samplescope::scene::graph::{self, NodeKind, NodeValue};
 use samplescope::scene::panels::PanelKind;
 use samplescope::scene::{Column, Panels, Scene};
@@ -193,18 +193,18 @@ fn clicking_a_matrix_cell_shows_that_pair() {
     let mut h = gui_with(s, eframe::egui::Vec2::new(1400.0, 1000.0));
     assert_eq!(h.state().scene.columns[0].project, (0, 1));
     let rect = h.get_by_label("projection matrix").rect();
-    // Cell (i, j) = (1, 6): grid column 1, row K − 1 − j = 1, at its centre.
-    let g = 7.0;
-    let pic = g * MATRIX_CELL as f32 + (g - 1.0) * MATRIX_GAP as f32;
-    let step = (MATRIX_CELL + MATRIX_GAP) as f32;
-    let at = |i: f32, row: f32| {
-        rect.min
-            + eframe::egui::vec2(
-                (i * step + MATRIX_CELL as f32 / 2.0) * rect.width() / pic,
-                (row * step + MATRIX_CELL as f32 / 2.0) * rect.height() / pic,
-            )
+    // Cell (i, j) = (1, 6): grid column 1, row K − 1 − j = 1, at its centre (the picture is
+    // drawn at the rectangle's pixels: one pixel per point here).
+    assert_eq!(h.ctx.pixels_per_point(), 1.0);
+    let (ax, ay) = (
+        MatrixAxis::new(7, rect.width().round() as usize),
+        MatrixAxis::new(7, rect.height().round() as usize),
+    );
+    let at = |i: usize, row: usize| {
+        let ((x, w), (y, hh)) = (ax.span(i), ay.span(row));
+        rect.min.round() + eframe::egui::vec2(x as f32 + w as f32 / 2.0, y as f32 + hh as f32 / 2.0)
     };
-    let pos = at(1.0, 1.0);
+    let pos = at(1, 1);
     // Hovering shows the cell's values (tooltips at once, the pointer held still).
     h.ctx.all_styles_mut(|s| {
         s.interaction.tooltip_delay = 0.0;
@@ -243,7 +243,7 @@ fn clicking_a_matrix_cell_shows_that_pair() {
         .clone();
     assert_eq!(shown, cube.project(1, 6).unwrap());
     // A click outside the triangle changes nothing.
-    let below = at(5.0, 5.0);
+    let below = at(5, 5);
     h.hover_at(below);
     for pressed in [true, false] {
         h.event(eframe::egui::Event::PointerButton {

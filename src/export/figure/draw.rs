@@ -577,17 +577,19 @@ impl Frame<'_, '_> {
                 spec.colormap,
             ),
         };
-        self.picture(body, kind, rgb, &spec)
+        self.picture(body, kind, |_, _| rgb, &spec)
     }
 
-    /// A picture already in colour (`rgb`) over the axes of `spec` (whose `image` is not
-    /// read), with the colour bar of `spec.colormap` over [lo, hi] right of it when
-    /// `spec.bar` names one.
+    /// A picture already in colour over the axes of `spec` (whose `image` is not read), with
+    /// the colour bar of `spec.colormap` over [lo, hi] right of it when `spec.bar` names one.
+    /// `rgb(width, height)` makes the picture given the plotting area's size in pixels (a
+    /// picture of that size is placed pixel for pixel; another is scaled to it, nearest
+    /// neighbour).
     pub(super) fn picture(
         &mut self,
         body: &Area<'_>,
         kind: FigureKind,
-        rgb: Rgb,
+        rgb: impl FnOnce(u32, u32) -> Rgb,
         spec: &ImageSpec<'_>,
     ) -> Result<(), ExportError> {
         let look = self.look;
@@ -598,7 +600,12 @@ impl Frame<'_, '_> {
             (body.clone(), body.clone())
         };
         let mut ch = chart(&main, spec.x.clone(), spec.y.clone(), look, kind)?;
-        self.paint(ch.plotting_area().get_pixel_range(), rgb, kind)?;
+        let (xr, yr) = ch.plotting_area().get_pixel_range();
+        let size = (
+            (xr.end - xr.start).max(1) as u32,
+            (yr.end - yr.start).max(1) as u32,
+        );
+        self.paint((xr, yr), rgb(size.0, size.1), kind)?;
         axes(
             &mut ch,
             spec.x_desc,

@@ -1,7 +1,7 @@
 //! The projection matrix: the pairs of a column's first K dimensions as a triangle of scatter
-//! plots tinted by the scene's measure (`model::MatrixData::picture`, the picture the panel
-//! shows), dimension i across and j up, with the measure's colour bar; its CSV is the pair
-//! table.
+//! plots tinted by the scene's measure (`model::MatrixData::picture_sized`, the picture the
+//! panel shows, drawn at the plotting area's pixel size), dimension i across and j up, with the
+//! measure's colour bar; its CSV is the pair table.
 
 use super::draw::{empty, present, Frame, ImageSpec};
 use super::{context_metadata, Area, Figure, Rgb};
@@ -52,7 +52,6 @@ impl Figure for Matrix {
         let measure = f.ctx.matrix_measure;
         // The figures keep to one colour map: viridis, as the spectrum's default.
         let colormap = Colormap::Viridis;
-        let (w, h, rgb) = m.picture(measure, colormap);
         let g = m.grid();
         // The values behind the tints, one per grid cell (NaN outside the triangle).
         let values = ImageData::new(
@@ -89,10 +88,15 @@ impl Figure for Matrix {
             colormap,
             bar: Some(&bar),
         };
-        let rgb = Rgb {
-            width: w as u32,
-            height: h as u32,
-            data: rgb,
+        // Drawn at the plotting area's pixel size, so that the gaps between cells are even
+        // whole pixels at every scale (a fixed-size picture scaled to it would alias them).
+        let rgb = |w: u32, h: u32| {
+            let (w, h, data) = m.picture_sized(measure, colormap, (w as usize, h as usize));
+            Rgb {
+                width: w as u32,
+                height: h as u32,
+                data,
+            }
         };
         f.picture(body, KIND, rgb, &spec)
     }

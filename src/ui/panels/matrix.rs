@@ -1,5 +1,6 @@
 //! The projection-matrix panel: the column's first K dimensions as a triangle of small scatter
-//! plots tinted by a measure (`model::MatrixData::picture`), with its K and measure controls, a
+//! plots tinted by a measure (`model::MatrixData::picture_sized`, drawn at its size on screen),
+//! with its K and measure controls, a
 //! colour bar, each cell's values on hover, and a click that shows that pair in the column's
 //! panels (it sets the column's `project`).
 
@@ -11,6 +12,7 @@ use crate::scene::panels::PanelKind;
 use crate::ui::widgets::params::setting_ui;
 use crate::ui::widgets::status::{error_label, time_label};
 use eframe::egui::{self, Color32, Stroke};
+use eframe::emath::GuiRounding as _;
 use std::sync::Arc;
 
 /// The projection-matrix panel: the texture of the last picture drawn and what it shows.
@@ -20,7 +22,8 @@ pub struct MatrixPanel {
 }
 
 /// What a picture was drawn from: the data (by address), the measure and the colour map.
-type PictureKey = (usize, ProjectionMeasure, Colormap);
+/// The data, measure, colour map and size in pixels a texture was drawn for.
+type PictureKey = (usize, ProjectionMeasure, Colormap, (usize, usize));
 
 impl std::fmt::Debug for MatrixPanel {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
@@ -70,9 +73,21 @@ impl Panel for MatrixPanel {
         };
         let measure = cx.scene.matrix.measure;
         let colormap = cx.view.colormap;
-        let key = (Arc::as_ptr(&data) as usize, measure, colormap);
+        let (rect, response) = ui.allocate_exact_size(egui::vec2(side, side), egui::Sense::click());
+        response.widget_info(|| {
+            egui::WidgetInfo::labeled(egui::Role::Image, true, "projection matrix")
+        });
+        // Drawn at the pixels it covers on screen, never scaled: the gaps between cells stay
+        // even whole pixels at every size.
+        let ppp = ui.ctx().pixels_per_point();
+        let shown = rect.round_to_pixels(ppp);
+        let px = (
+            ((shown.width() * ppp).round() as usize).max(1),
+            ((shown.height() * ppp).round() as usize).max(1),
+        );
+        let key = (Arc::as_ptr(&data) as usize, measure, colormap, px);
         if self.texture.as_ref().is_none_or(|(k, _)| *k != key) {
-            let (w, h, rgb) = data.picture(measure, colormap);
+            let (w, h, rgb) = data.picture_sized(measure, colormap, px);
             let image = egui::ColorImage::from_rgb([w, h], &rgb);
             let tex =
                 ui.ctx()
@@ -82,29 +97,21 @@ impl Panel for MatrixPanel {
         let Some((_, tex)) = &self.texture else {
             return;
         };
-        let (rect, response) = ui.allocate_exact_size(egui::vec2(side, side), egui::Sense::click());
-        response.widget_info(|| {
-            egui::WidgetInfo::labeled(egui::Role::Image, true, "projection matrix")
-        });
         let painter = ui.painter_at(rect);
         painter.image(
             tex.id(),
-            rect,
+            shown,
             egui::Rect::from_min_max(egui::pos2(0.0, 0.0), egui::pos2(1.0, 1.0)),
             Color32::WHITE,
         );
-        let pic = tex.size()[0] as f32;
-        let to_screen = |x: f32| x * side / pic;
+        let to_screen = |x: usize, y: usize| shown.min + egui::vec2(x as f32, y as f32) / ppp;
         // The pair the column's panels show, outlined.
         let col = &cx.scene.columns[ci];
         let (i, j) = col.project;
         let (a, b) = (i.min(j), i.max(j));
         if let Some(cell) = data.cell(a, b) {
-            let (x0, y0, s) = data.cell_rect(cell.pair);
-            let r = egui::Rect::from_min_size(
-                rect.min + egui::vec2(to_screen(x0 as f32), to_screen(y0 as f32)),
-                egui::Vec2::splat(to_screen(s as f32)),
-            );
+            let [x0, y0, w, h] = data.cell_rect(cell.pair, px);
+            let r = egui::Rect::from_min_max(to_screen(x0, y0), to_screen(x0 + w, y0 + h));
             painter.rect_stroke(
                 r.expand(1.0),
                 0.0,
@@ -114,8 +121,10 @@ impl Panel for MatrixPanel {
         }
         // A cell under the pointer: its values, and a click shows its pair.
         let hovered = response.hover_pos().and_then(|p| {
-            let q = (p - rect.min) * pic / side;
-            data.cell_at_pixel(q.x as usize, q.y as usize)
+            let q = (p - shown.min) * ppp;
+            (q.x >= 0.0 && q.y >= 0.0)
+                .then(|| data.cell_at_pixel((q.x as usize, q.y as usize), px))
+                .flatten()
         });
         if let Some(cell) = hovered {
             let [i, j] = cell.pair;
