@@ -33,12 +33,13 @@ pub(crate) const HALTON_OWEN_POINT_NS: f64 = 800.0;
 /// centroid).
 /// (measured 22–31 ms for 1024 points × 50 iterations).
 pub(crate) const LLOYD_UPDATE_NS: f64 = 1_000.0;
-/// One SOT projection of a point on a direction (projection, its share of the sort, the
-/// quantile and the displacement).
-pub(crate) const SOT_UPDATE_NS: f64 = 100.0;
-/// One GBN point update (the Gaussian kernel over ~200 neighbours in the grid; measured
-/// 1.2 s for 1024 points × 500 iterations on 2 cores).
-pub(crate) const GBN_UPDATE_NS: f64 = 5_000.0;
+/// One SOT point-slice: the projection of a point on a direction, its bucket, its share of
+/// the insertion pass, its quantile and displacement (O(n) per slice; measured about 11 ns
+/// on one core at n = 1024, benches/optimize.rs).
+pub(crate) const SOT_UPDATE_NS: f64 = 12.0;
+/// One GBN point update (the Gaussian kernel over ~113 neighbours within 6σ, of ~250
+/// candidates in the grid; measured about 1 µs on one core at n = 1024, benches/optimize.rs).
+pub(crate) const GBN_UPDATE_NS: f64 = 1_200.0;
 /// One point of the shuffling patterns (N-rooks, multi-jitter, correlated multi-jitter).
 pub(crate) const SHUFFLE_POINT_NS: f64 = 150.0;
 /// One call of a pattern (checks, allocation): matters for per-pixel patterns.
@@ -137,21 +138,16 @@ pub(crate) fn pattern_cost(p: &Pattern, n: usize) -> (f64, Unit, f64, f64) {
         }
         Pattern::Sot(s) => {
             let updates = nf * f64::from(s.iterations) * f64::from(s.directions);
-            let log = nf.max(2.0).log2() / 10.0;
-            // The points and the displacement sums (16 bytes each), one displacement per
-            // point for each direction of a batch of up to 16 in flight (8 bytes), and the
-            // sorted projections (16 bytes) of the directions being computed, one per core.
-            let batch = ((1u64 << 22) as f64 / nf.max(1.0))
-                .floor()
-                .clamp(1.0, 16.0)
-                .min(f64::from(s.directions.max(1)));
-            let bytes = nf * (32.0 + 8.0 * batch + 16.0 * REFERENCE_CORES);
-            let secs = updates * log.max(1.0) * cpu(SOT_UPDATE_NS) / REFERENCE_CORES + call;
+            // The points, velocities and quantile levels (40 bytes a point), and for each of
+            // the 8 chunks of directions an accumulator (16) and a slice's buffers (32).
+            let bytes = nf * (40.0 + 8.0 * 48.0);
+            let secs = updates * cpu(SOT_UPDATE_NS) / REFERENCE_CORES + call;
             (updates, Unit::PointUpdates, secs + touch(bytes), bytes)
         }
         Pattern::Gbn(g) => {
             let updates = nf * f64::from(g.iterations);
-            let bytes = points_bytes * 4.0 + 8.0 * nf;
+            // Points, velocities, gradients, the per-point sums (24) and the grid's copies.
+            let bytes = points_bytes * 5.0 + 8.0 * nf;
             let secs = updates * cpu(GBN_UPDATE_NS) / REFERENCE_CORES + call + touch(bytes);
             (updates, Unit::PointUpdates, secs, bytes)
         }
