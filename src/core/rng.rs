@@ -23,6 +23,12 @@ pub fn derive_seed(seed: u64, index: u64) -> u64 {
     splitmix64(&mut s)
 }
 
+/// The value [`Rng::next_f64`] makes of 64 random bits: their top 53 as k · 2⁻⁵³ ∈ [0, 1).
+#[inline(always)]
+pub fn unit_f64(bits: u64) -> f64 {
+    (bits >> 11) as f64 * (1.0 / (1u64 << 53) as f64)
+}
+
 /// xoshiro256** generator.
 #[derive(Clone, Debug)]
 pub struct Rng {
@@ -65,7 +71,22 @@ impl Rng {
     /// Uniform in [0, 1) with 53 random bits: k · 2⁻⁵³, k ∈ [0, 2⁵³). Never returns 1.0.
     #[inline]
     pub fn next_f64(&mut self) -> f64 {
-        (self.next_u64() >> 11) as f64 * (1.0 / (1u64 << 53) as f64)
+        unit_f64(self.next_u64())
+    }
+
+    /// Advances the stream by `count` values without producing them (the state updates of
+    /// [`Rng::next_u64`] alone): afterwards the generator is where `count` calls would leave it.
+    #[inline]
+    pub fn skip(&mut self, count: u64) {
+        for _ in 0..count {
+            let t = self.s[1] << 17;
+            self.s[2] ^= self.s[0];
+            self.s[3] ^= self.s[1];
+            self.s[1] ^= self.s[2];
+            self.s[0] ^= self.s[3];
+            self.s[2] ^= t;
+            self.s[3] = self.s[3].rotate_left(45);
+        }
     }
 
     /// Uniform integer in [0, bound) without modulo bias (Lemire 2019). `bound` must be > 0.
@@ -112,6 +133,23 @@ mod tests {
             let x = a.next_f64();
             assert_eq!(x.to_bits(), b.next_f64().to_bits());
             assert!((0.0..1.0).contains(&x));
+        }
+    }
+
+    #[test]
+    fn skip_lands_where_the_values_would_and_unit_f64_is_next_f64() {
+        for count in [0u64, 1, 2, 7, 1000] {
+            let mut a = Rng::new(5);
+            let mut b = Rng::new(5);
+            for _ in 0..count {
+                a.next_u64();
+            }
+            b.skip(count);
+            assert_eq!(a.next_u64(), b.next_u64(), "count {count}");
+        }
+        let (mut a, mut b) = (Rng::new(9), Rng::new(9));
+        for _ in 0..100 {
+            assert_eq!(a.next_f64().to_bits(), unit_f64(b.next_u64()).to_bits());
         }
     }
 
