@@ -13,7 +13,7 @@ use super::outln;
 use super::session::{check_outputs, write_output, Session};
 use super::{parse_n, CliError};
 use glam::DVec2;
-use samplescope::core::budget;
+use samplescope::core::budget::{self, Estimate};
 use samplescope::core::cancel::Cancel;
 use samplescope::core::metrics::{self, psa};
 use samplescope::core::pattern::{Pattern, MAX_N};
@@ -595,12 +595,24 @@ pub type Results = Vec<HashMap<NodeKind, Arc<NodeResult>>>;
 /// Runs `plan` of `scene` with the engine's evaluator (no disk cache): the results of every
 /// column, or the first node that failed by itself (later ones fail through their inputs).
 pub fn evaluate(scene: &Scene, plan: graph::Plan, cancel: &Cancel) -> Result<Results, CliError> {
+    evaluate_shared(Arc::new(scene.clone()), plan, cancel, &mut |_, _| {})
+}
+
+/// [`evaluate`] of a scene already shared (not copied), calling `on_final` with each node's
+/// column and kind as its final result arrives.
+pub fn evaluate_shared(
+    scene: Arc<Scene>,
+    plan: graph::Plan,
+    cancel: &Cancel,
+    on_final: &mut dyn FnMut(usize, NodeKind),
+) -> Result<Results, CliError> {
     let mut results: Results = vec![HashMap::new(); scene.columns.len()];
-    Evaluator::new(DEFAULT_BUDGET, None).evaluate_planned(
+    Evaluator::new(DEFAULT_BUDGET, None).evaluate_shared(
         scene,
         Arc::new(plan),
         cancel,
         &mut |c, kind, r| {
+            on_final(c, kind);
             results[c].insert(kind, r);
         },
     );
@@ -799,7 +811,7 @@ pub fn spectrum_settings(args: &AnalyzeArgs, input: &Input) -> Result<SpectrumSe
 /// printed.
 pub fn analyze_2d(
     args: &AnalyzeArgs,
-    input: Input,
+    mut input: Input,
     read_ms: f64,
     session: &Session,
     mut sink: Sink<'_>,
@@ -825,16 +837,32 @@ pub fn analyze_2d(
         Input::Pattern { n, .. } | Input::Projection { n, .. } => *n,
     };
     let mut scene = analysis_scene(&input, settings, seed, args.normalize);
+    // The scene holds its own copy of the files' points: the ones read are not needed again.
+    if let Input::Files { sets, .. } = &mut input {
+        sets.iter_mut().for_each(|s| *s = Vec::new());
+    }
     let asked = asked_nodes(args, is_points, matches!(sink, Sink::Keep(_)));
     let mut plan = graph::plan_asking(&scene, &asked);
-    let mut estimates = cost::estimate_plan(&scene, &plan);
+    // The engine runs the scene's nodes at the same time, while the scene holds its imported
+    // points (a projection's are filled in below): their memory adds up.
+    let mut estimates: Vec<Estimate> = Vec::new();
     if let Input::Projection {
         pattern, n, dims, ..
     } = &input
     {
         // The d-dimensional points the projection is taken from.
-        estimates.insert(0, budget::pattern_cube(pattern, *n, *dims));
+        estimates.push(budget::pattern_cube(pattern, *n, *dims));
     }
+    let nodes_from = estimates.len();
+    if is_points {
+        estimates.push(budget::points_held(n * sets_k).concurrent());
+    }
+    estimates.extend(
+        cost::estimate_plan(&scene, &plan)
+            .into_iter()
+            .map(Estimate::concurrent),
+    );
+    let nodes = nodes_from..estimates.len();
     let m = args.size;
     if args.spectrum.is_some() {
         // The spectrum figure's PNG, at its base size.
@@ -895,7 +923,13 @@ pub fn analyze_2d(
         plan = graph::plan_asking(&scene, &asked);
     }
     let generated_ms = t0.elapsed().as_secs_f64() * 1e3;
-    let results = evaluate(&scene, plan, cancel)?;
+    progress.concurrent(nodes.clone());
+    let scene = Arc::new(scene);
+    let results = evaluate_shared(scene.clone(), plan, cancel, &mut |c, kind| {
+        let estimate = cost::node_estimate(&scene, c, kind);
+        progress.finished(estimate.iter().map(|e| e.seconds).sum());
+    })?;
+    progress.stage(nodes.end);
     let points = values(&results, NodeKind::Points, |v| match v {
         NodeValue::Points(p) => Some(p),
         _ => None,

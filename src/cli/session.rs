@@ -203,13 +203,18 @@ struct Position {
     stage: f64,
     started: Instant,
     done: Option<f64>,
+    /// Of stages that run together ([`Progress::concurrent`]): the estimated milliseconds of
+    /// those that have finished.
+    finished: f64,
 }
 
 impl Position {
     fn within(&self) -> f64 {
         match self.done {
             Some(f) => f * self.stage,
-            None => (self.started.elapsed().as_secs_f64() * 1e3).min(self.stage),
+            None => (self.started.elapsed().as_secs_f64() * 1e3)
+                .max(self.finished)
+                .min(self.stage),
         }
     }
 }
@@ -232,6 +237,7 @@ impl Progress {
             stage: 0.0,
             started: Instant::now(),
             done: None,
+            finished: 0.0,
         }));
         let stop = Arc::new(AtomicBool::new(false));
         let target = ProgressDrawTarget::stderr();
@@ -274,11 +280,48 @@ impl Progress {
                 stage,
                 started: Instant::now(),
                 done: None,
+                finished: 0.0,
             };
         }
         if let (Some(bar), Some(e)) = (&self.bar, self.plan.get(i)) {
             bar.set_position(before as u64);
             bar.set_message(e.operation.clone());
+        }
+    }
+
+    /// The stages `stages` of the plan start together (the nodes the engine evaluates at the
+    /// same time; the stages before them are done): the bar advances with the elapsed time
+    /// over their summed estimates, and at least by the estimates of those reported
+    /// [`Progress::finished`].
+    pub fn concurrent(&self, stages: std::ops::Range<usize>) {
+        let ms = |e: &Estimate| e.seconds * 1e3;
+        let before: f64 = self.plan.iter().take(stages.start).map(ms).sum();
+        let span = self.plan.get(stages.clone()).unwrap_or_default();
+        if let Ok(mut p) = self.position.lock() {
+            *p = Position {
+                before,
+                stage: span.iter().map(ms).sum(),
+                started: Instant::now(),
+                done: None,
+                finished: 0.0,
+            };
+        }
+        if let Some(bar) = &self.bar {
+            bar.set_position(before as u64);
+            // Named by the longest of them.
+            let longest = span.iter().max_by(|a, b| a.seconds.total_cmp(&b.seconds));
+            bar.set_message(match (longest, span.len()) {
+                (None, _) => String::new(),
+                (Some(one), 1) => one.operation.clone(),
+                (Some(one), k) => format!("{} and {} more at once", one.operation, k - 1),
+            });
+        }
+    }
+
+    /// One of the stages that run together finished; `seconds` is its estimate.
+    pub fn finished(&self, seconds: f64) {
+        if let Ok(mut p) = self.position.lock() {
+            p.finished += seconds * 1e3;
         }
     }
 }
@@ -348,10 +391,32 @@ mod tests {
             stage: 1000.0,
             started: Instant::now() - Duration::from_secs(10),
             done: None,
+            finished: 0.0,
         };
         // Without steps the elapsed time is used, at most the stage's estimate.
         assert_eq!(p.within(), 1000.0);
         p.done = Some(0.25);
         assert_eq!(p.within(), 250.0);
+    }
+
+    #[test]
+    fn stages_that_run_together_advance_by_time_and_by_the_ones_finished() {
+        let mut p = Position {
+            before: 0.0,
+            stage: 1000.0,
+            started: Instant::now(),
+            done: None,
+            finished: 0.0,
+        };
+        assert!(p.within() < 100.0);
+        // A finished stage moves the bar by its estimate even before that much time passed.
+        p.finished = 600.0;
+        assert_eq!(p.within(), 600.0);
+        // Never past the span, however many report.
+        p.finished = 1500.0;
+        assert_eq!(p.within(), 1000.0);
+        p.started = Instant::now() - Duration::from_secs(10);
+        p.finished = 0.0;
+        assert_eq!(p.within(), 1000.0);
     }
 }

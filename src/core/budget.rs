@@ -52,7 +52,10 @@
 //!
 //! [`Estimate::bytes`] counts an operation's working set: its large buffers while they are alive
 //! together. A plan's peak ([`peak_bytes`]) is its largest operation plus [`RUNTIME_BYTES`] for
-//! the worker threads. The measured peak, `/usr/bin/time -v`'s maximum resident set minus that
+//! the worker threads; operations that run at the same time ([`Estimate::concurrent`]: the
+//! nodes `analyze` evaluates together, and the points it holds meanwhile) count with the sum of
+//! their bytes, and [`Budget::check`] refuses that sum beyond the memory limit as it refuses
+//! one operation. The measured peak, `/usr/bin/time -v`'s maximum resident set minus that
 //! of a trivial command (`points random -n 1`), is within 2× of it for every pattern family and
 //! for `analyze`, `recon` and `converge` (`tests/it/budget_memory.rs` checks the worst ones; the
 //! binary fixes glibc's mmap threshold so that freed buffers are returned and the resident set
@@ -146,6 +149,10 @@ pub struct Estimate {
     pub seconds: f64,
     /// About how many bytes it holds at its peak (inputs it keeps alive included).
     pub bytes: f64,
+    /// Whether it runs at the same time as the plan's other concurrent operations (the nodes
+    /// the engine evaluates together for `analyze`): a plan's peak adds their bytes up
+    /// ([`peak_bytes`]).
+    pub concurrent: bool,
 }
 
 impl Estimate {
@@ -162,10 +169,19 @@ impl Estimate {
             unit,
             seconds,
             bytes,
+            concurrent: false,
         }
     }
 
-    /// "best-candidate n = 200000, m = 1: about 2e10 candidates, about 12 min here".
+    /// This estimate, marked as running at the same time as the plan's other concurrent ones.
+    pub fn concurrent(self) -> Self {
+        Estimate {
+            concurrent: true,
+            ..self
+        }
+    }
+
+    /// "best-candidate n = 200000, m = 1: about 2e10 candidates, about 6 min here".
     pub fn describe(&self) -> String {
         format!(
             "{}: about {} {}, about {} here",
@@ -256,6 +272,12 @@ impl Budget {
                 limit: self.bytes,
             });
         }
+        if let Some(together) = together(plan).filter(|e| e.bytes > self.bytes) {
+            return Err(OverBudget::Memory {
+                largest: together,
+                limit: self.bytes,
+            });
+        }
         let total = total_seconds(plan);
         if total > self.seconds || total.is_nan() {
             if let Some(largest) = by(|e| e.seconds) {
@@ -275,10 +297,33 @@ pub fn total_seconds(plan: &[Estimate]) -> f64 {
     plan.iter().map(|e| e.seconds).sum()
 }
 
-/// The estimated peak bytes of a plan: the largest of its estimates, plus [`RUNTIME_BYTES`]
+/// The estimated peak bytes of a plan: the largest of its estimates or, when larger, the sum
+/// of its concurrent ones ([`Estimate::concurrent`], alive together), plus [`RUNTIME_BYTES`]
 /// (what `/usr/bin/time -v` shows over a trivial command's resident set).
 pub fn peak_bytes(plan: &[Estimate]) -> f64 {
-    largest_bytes(plan) + RUNTIME_BYTES
+    let together = together(plan).map_or(0.0, |e| e.bytes);
+    largest_bytes(plan).max(together) + RUNTIME_BYTES
+}
+
+/// The plan's concurrent estimates as one ("a, b and c together"), when there are two or more.
+fn together(plan: &[Estimate]) -> Option<Estimate> {
+    let all: Vec<&Estimate> = plan.iter().filter(|e| e.concurrent).collect();
+    if all.len() < 2 {
+        return None;
+    }
+    let names: Vec<&str> = all.iter().map(|e| e.operation.as_str()).collect();
+    Some(Estimate {
+        operation: format!(
+            "{} operations run together ({})",
+            all.len(),
+            names.join("; ")
+        ),
+        amount: all.iter().map(|e| e.amount).sum(),
+        unit: all[0].unit,
+        seconds: all.iter().map(|e| e.seconds).sum(),
+        bytes: all.iter().map(|e| e.bytes).sum(),
+        concurrent: true,
+    })
 }
 
 /// The largest bytes of the estimates of a plan.
@@ -364,6 +409,31 @@ pub(crate) fn touch(bytes: f64) -> f64 {
     bytes * BYTE_NS * 1e-9
 }
 
+/// The `n` 2D points a scene holds as imported points while its nodes run (16 bytes each):
+/// nothing is computed, only memory held.
+pub fn points_held(n: usize) -> Estimate {
+    Estimate::new(
+        format!("{n} imported points held"),
+        n as f64,
+        Unit::Points,
+        0.0,
+        16.0 * n as f64,
+    )
+}
+
+/// The points node's copy of `n` imported points: the points and their f32 copy for the
+/// display (24 bytes each).
+pub fn imported_points(n: usize) -> Estimate {
+    let bytes = 24.0 * n as f64;
+    Estimate::new(
+        format!("copy of {n} imported points"),
+        n as f64,
+        Unit::Points,
+        touch(bytes),
+        bytes,
+    )
+}
+
 /// Writing `n` points as CSV lines (`x,y`, or `x,y,z` with `sphere`), held as text.
 pub fn csv(n: usize, sphere: bool) -> Estimate {
     let nf = n as f64;
@@ -440,6 +510,44 @@ mod tests {
     use crate::core::spectrum::{self, Method, SpectrumRequest};
     use crate::core::torus;
     use glam::DVec2;
+
+    #[test]
+    fn concurrent_estimates_add_up_in_the_peak_and_the_check() {
+        let op = |name: &str, mib: f64| {
+            Estimate::new(name.into(), 1.0, Unit::Points, 0.1, mib * 1048576.0)
+        };
+        let mib = |b: f64| (b - RUNTIME_BYTES) / 1048576.0;
+        // Alone, the largest counts; run together, the sum (here larger than the largest).
+        let plan = vec![op("a", 64.0), op("b", 20.0), op("c", 48.0)];
+        assert_eq!(mib(peak_bytes(&plan)), 64.0);
+        let together: Vec<Estimate> = plan.iter().cloned().map(Estimate::concurrent).collect();
+        assert_eq!(mib(peak_bytes(&together)), 132.0);
+        // One concurrent operation beside sequential ones is just an operation.
+        let one = vec![op("a", 64.0).concurrent(), op("b", 100.0)];
+        assert_eq!(mib(peak_bytes(&one)), 100.0);
+        // The check refuses the sum beyond the limit, naming the operations together.
+        let limit = Budget {
+            seconds: 60.0,
+            bytes: 100.0 * 1048576.0,
+        };
+        assert!(limit.check(&plan).is_ok());
+        match limit.check(&together) {
+            Err(OverBudget::Memory { largest, .. }) => {
+                assert_eq!(mib(largest.bytes + RUNTIME_BYTES), 132.0);
+                assert_eq!(largest.operation, "3 operations run together (a; b; c)");
+            }
+            other => panic!("{other:?}"),
+        }
+    }
+
+    #[test]
+    fn held_and_imported_points_scale_with_n() {
+        for n in [1usize, 1000, 1 << 20] {
+            assert_eq!(points_held(n).bytes, 16.0 * n as f64);
+            assert_eq!(imported_points(n).bytes, 24.0 * n as f64);
+            assert_eq!(points_held(n).seconds, 0.0);
+        }
+    }
 
     #[test]
     fn best_candidate_candidates_are_the_loop_count() {

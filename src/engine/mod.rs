@@ -174,6 +174,36 @@ impl Evaluator {
         if cancel.is_cancelled() {
             return;
         }
+        self.evaluate_updates_shared(Arc::new(scene.clone()), plan, cancel, sink);
+    }
+
+    /// [`Self::evaluate_planned`] of a scene the caller already shares: not copied (a scene
+    /// holding a million imported points is 16 MiB).
+    pub fn evaluate_shared(
+        &self,
+        scene: Arc<Scene>,
+        plan: Arc<Plan>,
+        cancel: &Cancel,
+        sink: &mut dyn FnMut(usize, NodeKind, Arc<NodeResult>),
+    ) {
+        self.evaluate_updates_shared(scene, plan, cancel, &mut |u: Update| {
+            if u.progress.is_none() {
+                sink(u.column, u.kind, u.result);
+            }
+        });
+    }
+
+    /// [`Self::evaluate_updates`] of a scene the caller already shares.
+    pub fn evaluate_updates_shared(
+        &self,
+        scene: Arc<Scene>,
+        plan: Arc<Plan>,
+        cancel: &Cancel,
+        sink: &mut dyn FnMut(Update),
+    ) {
+        if cancel.is_cancelled() {
+            return;
+        }
         struct All<'a>(&'a mut dyn FnMut(Update));
         impl Sink for All<'_> {
             fn node(&mut self, u: Update) {
@@ -187,7 +217,7 @@ impl Evaluator {
         s.handle(
             Event::Submit {
                 generation: 1,
-                scene: Arc::new(scene.clone()),
+                scene,
                 plan,
             },
             &mut sink,

@@ -35,7 +35,7 @@ pub fn estimate_frames(frames: &[(&Scene, &Plan)]) -> Vec<Estimate> {
             for node in &plan.nodes {
                 let Ok(key) = node.key else { continue };
                 if seen.insert(key) {
-                    out.extend(node_estimates(scene, c, node.kind));
+                    out.extend(node_estimate(scene, c, node.kind));
                 }
             }
         }
@@ -54,8 +54,9 @@ pub fn check_plan(scene: &Scene, plan: &Plan, budget: &Budget) -> Result<(), Ove
     budget.check(&estimate_plan(scene, plan))
 }
 
-/// What node `kind` of column `c` computes (its file's estimate, as its job computes).
-fn node_estimates(scene: &Scene, c: usize, kind: NodeKind) -> Vec<Estimate> {
+/// What node `kind` of column `c` computes (its file's estimate, as its job computes): the
+/// estimates [`estimate`] lists for it.
+pub fn node_estimate(scene: &Scene, c: usize, kind: NodeKind) -> Vec<Estimate> {
     if c >= scene.columns.len() {
         return Vec::new();
     }

@@ -911,6 +911,7 @@ pub fn estimate(req: &StudyRequest) -> Vec<Estimate> {
         unit: largest.unit,
         seconds,
         bytes,
+        concurrent: false,
     };
     let per_realization: f64 = if plan.progressive {
         nmax as f64
@@ -938,6 +939,7 @@ pub fn estimate(req: &StudyRequest) -> Vec<Estimate> {
             + instances * integral_ns(&req.integrand, dims) * 1e-9 / cores
             + results * budget::BYTE_NS * 1e-9,
         bytes: results,
+        concurrent: false,
     };
     vec![points, eval]
 }

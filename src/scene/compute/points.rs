@@ -35,7 +35,7 @@ pub(in crate::scene) fn estimate(s: &Scene, c: usize) -> Vec<Estimate> {
         return Vec::new();
     }
     match &col.points {
-        Some(_) => Vec::new(),
+        Some(p) => vec![budget::imported_points(p.points.len())],
         None => vec![budget::pattern_cube(&col.pattern, s.n, col.dims)],
     }
 }
