@@ -130,7 +130,7 @@ fn budget_moves_the_limit_and_work_inside_it_runs() {
     let dir = temp_dir("inside");
     let out = dir.join("bc.csv");
     let out_s = out.to_str().expect("utf-8 path");
-    // About 0.1 s estimated (4.5·10⁶ candidates): refused under a 0.02 s budget...
+    // About 0.05 s estimated (4.5·10⁶ candidates): refused under a 0.02 s budget...
     let args = ["points", "best-candidate", "-n", "3000", "--out", out_s];
     let tight: Vec<&str> = args.iter().copied().chain(["--budget", "0.02"]).collect();
     assert_refused(
