@@ -411,22 +411,10 @@ fn generate(
 }
 
 /// The accelerated generation; steps of at least `split` candidates are settled on two threads
-/// ([`Accel::step_split`]: the same points, whatever `split`).
+/// ([`Accel::step_split`]: the same points, whatever `split`). Not wrapped in a pool job: a
+/// pool worker waiting in another node's loop could take the whole generation, so only its
+/// split steps (each well under a millisecond) enter the pool.
 fn generate_accelerated(
-    m: u64,
-    n: usize,
-    seed: u64,
-    cancel: &Cancel,
-    split: u64,
-) -> Result<Vec<DVec2>, PatternError> {
-    if m * (n as u64).saturating_sub(1) >= split {
-        // Run on a worker thread of the pool, where a split costs about a microsecond.
-        return rayon::scope(|_| run_accelerated(m, n, seed, cancel, split));
-    }
-    run_accelerated(m, n, seed, cancel, split)
-}
-
-fn run_accelerated(
     m: u64,
     n: usize,
     seed: u64,
@@ -699,7 +687,7 @@ mod tests {
         // the serial path and the scan of every point.
         let never = Cancel::never();
         for (m, n, seed) in [(1u64, 300usize, 5u64), (3, 400, 9)] {
-            let serial = run_accelerated(m, n, seed, &never, u64::MAX).unwrap();
+            let serial = generate_accelerated(m, n, seed, &never, u64::MAX).unwrap();
             let naive = generate_naive(m, n, seed, &never).unwrap();
             assert_eq!(bits(&serial), bits(&naive), "m {m}");
             for split in [8u64, 37, 1000] {
