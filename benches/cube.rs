@@ -7,15 +7,21 @@
 //!   minimum distance each): `projection_table` (pairs in parallel, the fast 2D statistics) vs
 //!   `projection_table_naive` (pairs in turn, the O(N²) 2D references), the rows checked equal;
 //! - the rates of `metrics::cube::cost`: each d-dimensional measure timed on one thread at
-//!   N = 4096 and D = 4 and 32, the rates solved from the two and printed beside the constants.
+//!   N = 4096 and D = 4 and 32, the rates solved from the two; the pair table's parts (the
+//!   projection, minimum distance, L2-star and t-value of its 496 rows) per their units; each
+//!   measure's estimate beside the measured time.
 //!
 //! The fast paths are timed on one thread and on all threads (rayon), the references on one.
 //!
-//! Run: `cargo bench --bench cube -- --warm-up-time 1 --measurement-time 3`.
+//! Run: `cargo bench --bench cube -- --warm-up-time 1 --measurement-time 3`; `-- rates` runs
+//! only the rates (no criterion group, no naive table).
+mod common;
+use common::selected;
 use criterion::{black_box, Criterion};
 use samplescope::core::budget;
 use samplescope::core::cancel::Cancel;
 use samplescope::core::cube::CubePoints;
+use samplescope::core::metrics;
 use samplescope::core::metrics::cube::{self as measures, CubeMeasure};
 use samplescope::core::pattern::cube::{halton, sobol};
 use samplescope::core::pattern::Pattern;
@@ -175,6 +181,39 @@ fn rates() {
         black_box(measures::stratification(&p2, &never).expect("ok"));
     }) / (nf * d2 as f64);
     println!("stratification: {per:.2} ns per coordinate (D = {d2})");
+    // Projections: each part of a row, summed over the 496 pairs, per its unit: the
+    // projection per point, the minimum distance per point, the L2-star per point and log₂ N,
+    // the t-value per N·log₂ N·log₂ log₂ N (the units of `cost.rs`).
+    let pairs: Vec<(usize, usize)> = (0..d2)
+        .flat_map(|i| (i + 1..d2).map(move |j| (i, j)))
+        .collect();
+    let projections: Vec<Vec<glam::DVec2>> = pairs
+        .iter()
+        .map(|&(i, j)| p2.project(i, j).expect("a pair"))
+        .collect();
+    let per_pair = |f: &(dyn Fn(&[glam::DVec2]) + Sync)| {
+        time(&|| projections.iter().for_each(|p| f(p))) / pairs.len() as f64
+    };
+    let log = nf.log2();
+    let project = time(&|| {
+        for &(i, j) in &pairs {
+            black_box(p2.project(i, j).expect("a pair"));
+        }
+    }) / pairs.len() as f64
+        / nf;
+    let md = per_pair(&|p| {
+        black_box(metrics::min_distance(p, &never).expect("ok"));
+    }) / nf;
+    let l2 = per_pair(&|p| {
+        black_box(metrics::l2_star_discrepancy(p, &never).expect("ok"));
+    }) / (nf * log);
+    let t = per_pair(&|p| {
+        black_box(metrics::t_value(p, 2, &never).expect("ok"));
+    }) / (nf * log * log.log2());
+    println!(
+        "pair table rows: projection {project:.2} ns per point, min distance {md:.1} ns per point, \
+         L2-star {l2:.2} ns per point and log2 N, t-value {t:.2} ns per N log2 N log2 log2 N"
+    );
     // Projections: measured against the estimate's CPU time (2 cores × its seconds).
     let measured = time(&|| {
         black_box(measures::projection_table(&p2, &never, &mut no_progress).expect("ok"));
@@ -201,7 +240,15 @@ fn rates() {
 
 fn main() {
     let mut c = Criterion::default().configure_from_args();
-    bench(&mut c);
-    rates();
+    // A filter picks the constructions and the pair table (their group names), or `rates`.
+    if ["sobol_2^20x32", "halton_2^16x32", "pair_table_4096x32"]
+        .iter()
+        .any(|id| selected(id))
+    {
+        bench(&mut c);
+    }
+    if selected("rates") {
+        rates();
+    }
     c.final_summary();
 }

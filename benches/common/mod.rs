@@ -1,5 +1,5 @@
 //! Timing helpers shared by the benches that print a table of medians beside criterion's
-//! numbers (`patterns`, `pmj`, `optimize`, `converge`): wall and CPU clocks, medians, and
+//! numbers (`patterns`, `pmj`, `optimize`, `converge`, `cube`): wall and CPU clocks, medians, and
 //! criterion's benchmark filter. Each bench includes this module with `mod common;`.
 #![allow(dead_code)]
 

@@ -259,3 +259,65 @@ fn a_pattern_s_bad_projection_is_refused_with_one_line() {
         assert!(err.contains(want), "{args:?}: {err}");
     }
 }
+
+#[test]
+fn the_cube_measures_estimates_count_their_loops_at_the_measured_rates() {
+    use samplescope::core::budget::{cube_measure, Estimate, REFERENCE_CORES};
+    use samplescope::core::metrics::cube::CubeMeasure::*;
+    // CPU ns of one unit of the estimate (each measure's loop is parallel).
+    let ns = |e: &Estimate| e.seconds * REFERENCE_CORES * 1e9 / e.amount;
+    let n = 4096;
+    let nf = n as f64;
+    for d in [1, 4, 32] {
+        let all = cube_measure(Discrepancies, n, d);
+        assert_eq!(
+            all.amount,
+            5.0 * nf * (nf + 1.0) / 2.0,
+            "the pairs i ≤ j of 5 sums"
+        );
+        let one = cube::cost::cube_discrepancy(Discrepancy::Centered, n, d);
+        assert!((all.seconds - 5.0 * one.seconds).abs() <= 1e-12 * all.seconds);
+        assert_eq!(
+            cube_measure(MinDistance, n, d).amount,
+            nf * (nf - 1.0) / 2.0
+        );
+        assert_eq!(cube_measure(Stratification, n, d).amount, nf * d as f64);
+    }
+    // Per pair, linear in d and within 1.5× of benches/cube.rs (one thread, N = 4096, unscrambled
+    // Sobol'; BENCHMARKS.md): the five discrepancies 6.68 ns at D = 4, 31.84 at D = 32; the
+    // minimum distance 3.16 and 31.54.
+    for (m, d, measured) in [
+        (Discrepancies, 4, 6.68),
+        (Discrepancies, 32, 31.84),
+        (MinDistance, 4, 3.16),
+        (MinDistance, 32, 31.54),
+    ] {
+        let r = ns(&cube_measure(m, n, d)) / measured;
+        assert!(
+            (1.0 / 1.5..=1.5).contains(&r),
+            "{m:?} D = {d}: {r:.2}× measured"
+        );
+    }
+    let slope = |m| ns(&cube_measure(m, n, 32)) - ns(&cube_measure(m, n, 31));
+    for m in [Discrepancies, MinDistance] {
+        let step = slope(m);
+        assert!(
+            step > 0.0
+                && (ns(&cube_measure(m, n, 9)) - ns(&cube_measure(m, n, 8)) - step).abs() < 1e-9
+        );
+    }
+    // The pair table: every pair of dimensions one 2D projection of the N points, so its time
+    // goes with the pairs (quadratic in D); within 1.5× of the measured CPU at 4096 × 32.
+    let table = |n, d| cube_measure(Projections, n, d);
+    assert_eq!(table(n, 32).amount, 496.0 * nf);
+    let ratio = table(n, 32).seconds / table(n, 16).seconds;
+    assert!((ratio - 496.0 / 120.0).abs() < 1e-9, "{ratio}");
+    let measured = 1.014; // s of CPU, one thread
+    let r = table(n, 32).seconds * REFERENCE_CORES / measured;
+    assert!(
+        (1.0 / 1.5..=1.5).contains(&r),
+        "pair table: {r:.2}× measured"
+    );
+    // Without a power-of-two N there is no t-value to compute.
+    assert!(table(n - 1, 8).seconds < table(n, 8).seconds * (nf - 1.0) / nf * 0.99);
+}
