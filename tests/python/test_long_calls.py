@@ -14,7 +14,7 @@ import samplescope
 
 # The exact star discrepancy's sweep runs on one thread: two calls can only overlap if the
 # GIL is released.
-STAR = np.random.default_rng(0).random((12000, 2))
+STAR = np.random.default_rng(0).random((20000, 2))
 
 
 def star():
@@ -44,8 +44,9 @@ def test_two_threads_compute_at_once():
         t.join()
     two = max(ends.values()) - start
     # Serialised by a held GIL, one call would end a whole call after the other; computing at
-    # once (on two cores, or sharing one) they end together.
-    assert abs(ends[0] - ends[1]) < 0.4 * one, (ends, one)
+    # once (on two cores, or sharing one) they end together, up to the threads' start and the
+    # scheduler (a call of ~0.4 s keeps that jitter well under the half-call margin).
+    assert abs(ends[0] - ends[1]) < 0.5 * one, (ends, one)
     # With two idle cores the pair takes clearly less than two calls one after the other
     # (~1.1×; not asserted on a machine whose cores are busy with other work).
     cores = os.cpu_count() or 1
