@@ -250,50 +250,70 @@ pub fn statistics(points: &[DVec2], cancel: &Cancel) -> Result<Statistics, Metri
     let n = points.len();
     let mut timings = Vec::with_capacity(4);
 
-    let (min_distance, min_distance_skipped) = if n >= 2 {
+    /// A stage's value and wall time.
+    fn timed<T>(
+        f: impl FnOnce() -> Result<T, MetricsError>,
+    ) -> Result<(T, Duration), MetricsError> {
         let t0 = Instant::now();
-        let md = min_distance(points, cancel)?;
-        timings.push(("min distance", t0.elapsed()));
-        (Some(md), None)
-    } else {
-        (
+        f().map(|v| (v, t0.elapsed()))
+    }
+    // The exact star discrepancy (serial, the longest stage) runs beside the other three:
+    // the same values as one after the other; an error is reported in the stages' order.
+    let (star, (md, l2, tv)) = rayon::join(
+        || (n <= STATISTICS_STAR_MAX_N).then(|| timed(|| star_discrepancy(points, cancel))),
+        || {
+            let md = (n >= 2).then(|| timed(|| min_distance(points, cancel)));
+            let l2 = timed(|| l2_star_discrepancy(points, cancel));
+            let tv = n
+                .is_power_of_two()
+                .then(|| timed(|| tvalue::t_value(points, 2, cancel)));
+            (md, l2, tv)
+        },
+    );
+
+    let (min_distance, min_distance_skipped) = match md {
+        Some(r) => {
+            let (md, d) = r?;
+            timings.push(("min distance", d));
+            (Some(md), None)
+        }
+        None => (
             None,
             Some(format!(
                 "a minimum distance needs at least 2 points, got n = {n}"
             )),
-        )
+        ),
     };
 
-    let (star, star_skipped) = if n <= STATISTICS_STAR_MAX_N {
-        let t0 = Instant::now();
-        let s = star_discrepancy(points, cancel)?;
-        timings.push(("star discrepancy", t0.elapsed()));
-        (Some(s), None)
-    } else {
-        (
+    let (star, star_skipped) = match star {
+        Some(r) => {
+            let (s, d) = r?;
+            timings.push(("star discrepancy", d));
+            (Some(s), None)
+        }
+        None => (
             None,
             Some(format!(
                 "exact star discrepancy skipped: n = {n} > {STATISTICS_STAR_MAX_N} (its cost is O(N²))"
             )),
-        )
+        ),
     };
 
-    let t0 = Instant::now();
-    let l2_star = l2_star_discrepancy(points, cancel)?;
-    timings.push(("L2-star discrepancy", t0.elapsed()));
+    let (l2_star, d) = l2?;
+    timings.push(("L2-star discrepancy", d));
 
-    let (t_value, t_value_skipped) = if n.is_power_of_two() {
-        let t0 = Instant::now();
-        let t = tvalue::t_value(points, 2, cancel)?;
-        timings.push(("t-value", t0.elapsed()));
-        (Some(t), None)
-    } else {
-        (
+    let (t_value, t_value_skipped) = match tv {
+        Some(r) => {
+            let (t, d) = r?;
+            timings.push(("t-value", d));
+            (Some(t), None)
+        }
+        None => (
             None,
             Some(format!(
                 "t-value skipped: n = {n} is not a power of 2 (nets in base 2 have 2^m points)"
             )),
-        )
+        ),
     };
 
     Ok(Statistics {

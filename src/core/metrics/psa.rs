@@ -103,8 +103,9 @@
 //! [`psa_statistics`]: the RDF's pairs closer than ¼ by a cell grid (≈ πN²/32 pairs, plus the
 //! grid's margin; parallel); the transform, a few hundred thousand J₀ terms summed directly and
 //! ≈ 4 blocks × 47 FFTs of length ≤ 2m (parallel), instead of ≈ m²/2 = 5000·N J₀ terms; a
-//! triangulation of about N + 16√N points ([`radial_power_work`] counts them for the budget).
-//! The pairs still grow as N², so N ≤ [`PSA_MAX_N`].
+//! triangulation of about N + 16√N points (serial, run beside the RDF and the transform;
+//! [`radial_power_work`] counts them for the budget). The pairs still grow as N², so
+//! N ≤ [`PSA_MAX_N`].
 
 use glam::DVec2;
 use serde::Serialize;
@@ -688,8 +689,13 @@ pub fn bond_orientational_order(points: &[DVec2], cancel: &Cancel) -> Result<f64
 /// Errors: fewer than 2 or more than [`PSA_MAX_N`] points, a non-finite point or one outside
 /// [0,1)², cancellation.
 pub fn psa_statistics(points: &[DVec2], cancel: &Cancel) -> Result<PsaStatistics, MetricsError> {
-    let rp = radial_power(points, cancel)?;
-    let bond_orientational_order = bond_orientational_order(points, cancel)?;
+    // The triangulation (serial) runs beside the RDF and its transform (parallel): on two
+    // cores it fills the gaps of their loops instead of following them.
+    let (rp, boo) = rayon::join(
+        || radial_power(points, cancel),
+        || bond_orientational_order(points, cancel),
+    );
+    let (rp, bond_orientational_order) = (rp?, boo?);
     Ok(PsaStatistics {
         effective_nyquist: effective_nyquist(&rp),
         oscillations: oscillations(&rp),
