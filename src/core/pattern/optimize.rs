@@ -100,17 +100,25 @@
 //! the authors' periodic reference implementation (σ equal to the mean spacing). The authors
 //! step is plain gradient descent, x_i ← x_i + ¼ Σ_j Δ_ij exp(−d_ij²/(2σ²)) (Δ_ij the toroidal
 //! displacement x_i − x_j), i.e. step η = σ²/4, wrapped mod 1. Here the same force drives a
-//! heavy-ball update: v_i ← β v_i + ½ Σ_j Δ_ij exp(−d_ij²/(2σ²)), x_i ← x_i + v_i (mod 1),
-//! β = [`GBN_MOMENTUM`] = 0.9, step σ²/2 = [`GBN_STEP`]·σ². It is stable: the stiffest modes
-//! of E are density waves of curvature ≈ 4.6/σ² at sigma = 1, and heavy ball is stable for
-//! η·λ < 2(1 + β) = 3.8 (here 2.3; measured: step σ² or β = 0.95 diverge from white noise).
-//! Effective Nyquist frequency at n = 1024, seed 1: the authors' step 0.655, 0.69, 0.73 after
-//! 100, 200, 500 iterations; this rule 0.79, 0.815, 0.835, 0.845, 0.855 after 250, 500, 1000,
-//! 2000, 4000. The energy keeps decreasing slowly along very flat directions (the set keeps
-//! ordering itself, as Lloyd's does), so there is no plateau: 8× the default iterations still
-//! add 0.035 (0.825 → 0.86; see BENCHMARKS.md). Recommended [`GBN_DEFAULT_ITERATIONS`] = 800 (allowed
-//! 0..=10000). sigma is 0 or in (0, 1]; a narrower kernel converges faster to a larger
-//! minimum distance with less low-frequency suppression.
+//! heavy-ball update: v_i ← β_k v_i + ½ Σ_j Δ_ij exp(−d_ij²/(2σ²)), x_i ← x_i + v_i (mod 1),
+//! step σ²/2 = [`GBN_STEP`]·σ², with β_k = [`GBN_MOMENTUM`] = 0.9 for the first quarter
+//! ([`GBN_MOMENTUM_SWITCH`]) of the steps and [`GBN_MOMENTUM_LATE`] = 0.98 after. It is
+//! stable: the stiffest modes of E are density waves of curvature ≈ 4.6/σ² at sigma = 1, and
+//! heavy ball is stable for η·λ < 2(1 + β) (here 2.3 against 3.8 and 3.96). From white noise
+//! the close pairs' large forces need the damping of β = 0.9 (measured: step σ² or β = 0.95
+//! from the start diverge); once they are spread, β = 0.98 lets the flat, long-lived modes
+//! (the ordering near the mean spacing, which sets the edge of the dark disc) move about 5×
+//! faster (their step grows as η/(1 − β)).
+//! Effective Nyquist frequency after the default 800 steps (seeds 1, 2, 3): n = 256 0.80,
+//! 0.79, 0.79 (constant β = 0.9: 0.775, 0.775, 0.78); n = 1024 0.855, 0.845, 0.845 (0.825,
+//! 0.82); n = 4096 0.86, 0.865 (0.835); the authors' step at n = 1024: 0.655, 0.69, 0.73
+//! after 100, 200, 500 iterations. The energy keeps decreasing slowly along very flat
+//! directions (the set keeps ordering itself, as Lloyd's does), so there is no plateau: 8× the
+//! default steps still add about 3.5 % (n = 1024, seed 1: 0.855 → 0.885 with this rule; 0.825
+//! → 0.86 with constant β), and the default is **not** within 2 % of 8× (test
+//! `gbn_default_gap_to_8x_is_measured`; BENCHMARKS.md). Recommended
+//! [`GBN_DEFAULT_ITERATIONS`] = 800 (allowed 0..=10000). sigma is 0 or in (0, 1]; a narrower
+//! kernel converges faster to a larger minimum distance with less low-frequency suppression.
 //!
 //! The kernel is truncated at d = R = [`GBN_CUTOFF_SIGMAS`] σ = 6σ (the authors cut at 5.8σ in
 //! single precision, 8.5σ in double): each omitted pair changes E by less than
@@ -119,7 +127,18 @@
 //! (the tests check it). Neighbours come from a uniform grid of cells of side ≥ R/2 (a 5 × 5
 //! block of cells per point; 3 × 3 cells of side ≥ R, or all pairs, when fewer fit): O(n) per
 //! iteration for a bounded density (≈ 36π ≈ 113 neighbours a point at sigma = 1, of about 250
-//! candidates). Cost: about 1 µs per point and iteration on one core (the exponentials).
+//! candidates).
+//!
+//! **Fast kernel.** [`gbn`] gathers each cell's block once as periodic copies unwrapped around
+//! the cell (structure of arrays), and every point of the cell sums over that contiguous list
+//! branch-free, four candidates at a time (AVX2 where the CPU has it, else two SSE2 registers,
+//! else scalar lanes: the same operations in the same order, so the same bits), with
+//! e^x from a degree-10 polynomial ([`GBN_EXP_REL_ERROR`] = 5·10⁻¹³ relative to libm's `exp`,
+//! far below the truncation's e^{−18}). [`gbn_naive`] is the same iteration with a per-pair
+//! wrap and libm's `exp`; the forces agree to 10⁻¹¹ of the largest (test). Cost per point and
+//! step: one cell-block of ≈ 256 candidates, ≈ 3 ns a candidate and ≈ 0.8 µs a point-step
+//! (CPU time on the 2-core reference machine under load, against ≈ 2.2 µs for the reference
+//! [`gbn_naive`]; benches/optimize.rs and BENCHMARKS.md).
 //!
 //! # What is exact
 //!
@@ -169,8 +188,12 @@ pub const SOT_MAX_DIRECTIONS: u32 = 1024;
 
 /// Recommended number of GBN iterations.
 pub const GBN_DEFAULT_ITERATIONS: u32 = 800;
-/// Momentum β of the GBN update (heavy ball).
+/// Momentum β of the GBN update (heavy ball) for the first [`GBN_MOMENTUM_SWITCH`] of the steps.
 pub const GBN_MOMENTUM: f64 = 0.9;
+/// Momentum β of the GBN update after the first [`GBN_MOMENTUM_SWITCH`] of the steps.
+pub const GBN_MOMENTUM_LATE: f64 = 0.98;
+/// Fraction of the GBN steps run with [`GBN_MOMENTUM`] before [`GBN_MOMENTUM_LATE`].
+pub const GBN_MOMENTUM_SWITCH: f64 = 0.25;
 /// The GBN step in units of σ² (the authors' plain gradient descent uses ¼).
 pub const GBN_STEP: f64 = 0.5;
 /// Largest number of GBN iterations.
@@ -966,14 +989,9 @@ fn gbn_interactions(
     let k = -0.5 / (sigma * sigma);
     // Cells of side ≥ R/2 searched in a 5 × 5 block (or of side ≥ R in a 3 × 3 block, or all
     // pairs, when fewer cells fit); at most ⌈√n⌉ cells per side (at most ~n cells).
-    let cap = (n as f64).sqrt().ceil() as usize;
-    let fit = |m: f64| ((m / r).floor() as usize).min(cap);
-    let (grid, reach) = if fit(2.0) >= 5 {
-        (Some(CellGrid::new(points, fit(2.0))), 2)
-    } else if fit(1.0) >= 3 {
-        (Some(CellGrid::new(points, fit(1.0))), 1)
-    } else {
-        (None, 0)
+    let (grid, reach) = match gbn_grid(points, r) {
+        Some((grid, reach)) => (Some(grid), reach),
+        None => (None, 0),
     };
     let one = |i: usize| -> (f64, DVec2) {
         let p = points[i];
@@ -1026,6 +1044,314 @@ fn gbn_interactions(
     Ok(chunks?.concat())
 }
 
+/// Relative error bound of [`exp_poly`] against the C library's `exp` on [−64, 0]: the Taylor
+/// remainder (ln 2 / 2)¹¹/11! ≈ 2.2·10⁻¹³ of the degree-10 polynomial plus a few roundings
+/// (test `exp_poly_is_within_its_bound_of_libm`, measured ≤ 2.5·10⁻¹³ on 10⁶ points).
+pub const GBN_EXP_REL_ERROR: f64 = 5e-13;
+
+/// e^x for x ∈ [−64, 0] without a library call (so that the kernel loop vectorises):
+/// x = m·ln 2 + r with m = round(x/ln 2) (by the 1.5·2⁵² rounding trick) and |r| ≤ ln 2 / 2
+/// (Cody–Waite split of ln 2, exact for |m| < 2¹¹), e^r by its Taylor polynomial of degree 10
+/// (Horner), 2^m from the exponent bits. Relative error ≤ [`GBN_EXP_REL_ERROR`]; the callers
+/// clamp x at −64 (e^{−64} ≈ 1.6·10⁻²⁸ stays a normal number).
+#[inline(always)]
+fn exp_poly(x: f64) -> f64 {
+    const MAGIC: f64 = 6_755_399_441_055_744.0; // 1.5 · 2^52
+    const LN2_HI: f64 = 6.931_471_803_691_238e-1;
+    const LN2_LO: f64 = 1.908_214_929_270_587_7e-10;
+    let t = x * std::f64::consts::LOG2_E + MAGIC;
+    let m = t - MAGIC;
+    let r = (x - m * LN2_HI) - m * LN2_LO;
+    let mut p = 1.0 / 3_628_800.0;
+    p = p * r + 1.0 / 362_880.0;
+    p = p * r + 1.0 / 40_320.0;
+    p = p * r + 1.0 / 5_040.0;
+    p = p * r + 1.0 / 720.0;
+    p = p * r + 1.0 / 120.0;
+    p = p * r + 1.0 / 24.0;
+    p = p * r + 1.0 / 6.0;
+    p = p * r + 0.5;
+    p = p * r + 1.0;
+    p = p * r + 1.0;
+    // The low bits of t hold m (two's complement under the 2^51 of the magic number): adding
+    // the exponent bias and shifting by 52 keeps exactly the 11 exponent bits of 2^m.
+    let scale = f64::from_bits(t.to_bits().wrapping_add(1023) << 52);
+    p * scale
+}
+
+/// Candidates of one grid cell: the points of its 5 × 5 (or 3 × 3) block of cells, as periodic
+/// copies unwrapped around the cell (so p − q is the toroidal displacement for every pair
+/// within R), in structure-of-arrays form, padded to a multiple of [`LANES`] with far points.
+const LANES: usize = 4;
+
+/// A padding candidate: farther than R from every point of the cell, whatever n.
+const FAR: f64 = 1.0e3;
+
+/// Σ_j Δ_ij w_ij over the candidates (w = e^{k·d²} for d² < R², 0 beyond), in lanes of
+/// [`LANES`] summed in a fixed order: candidate 4c + l goes to lane l, and the lanes are added
+/// as (0 + 1) + (2 + 3). On x86-64 one AVX2 register (detected at run time) or two SSE2
+/// registers hold the four lanes; elsewhere the same
+/// operations run one lane at a time ([`exp_poly`]): the same bits either way (no fused
+/// multiply-add, the same order). A candidate equal to p (the point itself) adds exactly 0.
+#[inline(always)]
+fn gbn_force_lanes(p: DVec2, xs: &[f64], ys: &[f64], k: f64, r2: f64) -> DVec2 {
+    debug_assert!(xs.len() == ys.len() && xs.len() % LANES == 0);
+    #[cfg(target_arch = "x86_64")]
+    {
+        if std::arch::is_x86_feature_detected!("avx2") {
+            // SAFETY: AVX2 was detected at run time; the loads read 4 f64 each inside the
+            // slices (lengths equal and a multiple of 4, checked above and by construction).
+            unsafe { gbn_force_avx2(p, xs, ys, k, r2) }
+        } else {
+            // SAFETY: SSE2 is part of the x86-64 baseline; the loads as above.
+            unsafe { gbn_force_sse2(p, xs, ys, k, r2) }
+        }
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        gbn_force_scalar(p, xs, ys, k, r2)
+    }
+}
+
+/// The one-lane-at-a-time form of [`gbn_force_lanes`] (the reference of the SSE2 form, and the
+/// path on other architectures).
+#[cfg_attr(target_arch = "x86_64", allow(dead_code))]
+fn gbn_force_scalar(p: DVec2, xs: &[f64], ys: &[f64], k: f64, r2: f64) -> DVec2 {
+    let mut fx = [0.0f64; LANES];
+    let mut fy = [0.0f64; LANES];
+    for (a, b) in xs.chunks_exact(LANES).zip(ys.chunks_exact(LANES)) {
+        for l in 0..LANES {
+            let dx = p.x - a[l];
+            let dy = p.y - b[l];
+            let d2 = dx * dx + dy * dy;
+            let x = k * d2;
+            let x = if x > -64.0 { x } else { -64.0 };
+            let w = exp_poly(x);
+            let w = if d2 < r2 { w } else { 0.0 };
+            fx[l] += w * dx;
+            fy[l] += w * dy;
+        }
+    }
+    DVec2::new(
+        (fx[0] + fx[1]) + (fx[2] + fx[3]),
+        (fy[0] + fy[1]) + (fy[2] + fy[3]),
+    )
+}
+
+/// [`gbn_force_scalar`] with AVX2: the four lanes in one register (the same operations as the
+/// SSE2 form, so the same bits).
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+unsafe fn gbn_force_avx2(p: DVec2, xs: &[f64], ys: &[f64], k: f64, r2: f64) -> DVec2 {
+    use std::arch::x86_64::*;
+    const MAGIC: f64 = 6_755_399_441_055_744.0;
+    const LN2_HI: f64 = 6.931_471_803_691_238e-1;
+    const LN2_LO: f64 = 1.908_214_929_270_587_7e-10;
+    const POLY: [f64; 10] = [
+        1.0 / 362_880.0,
+        1.0 / 40_320.0,
+        1.0 / 5_040.0,
+        1.0 / 720.0,
+        1.0 / 120.0,
+        1.0 / 24.0,
+        1.0 / 6.0,
+        0.5,
+        1.0,
+        1.0,
+    ];
+    let (px, py) = (_mm256_set1_pd(p.x), _mm256_set1_pd(p.y));
+    let (kk, rr, lo) = (_mm256_set1_pd(k), _mm256_set1_pd(r2), _mm256_set1_pd(-64.0));
+    let magic = _mm256_set1_pd(MAGIC);
+    let (mut fx, mut fy) = (_mm256_setzero_pd(), _mm256_setzero_pd());
+    let mut i = 0;
+    while i + LANES <= xs.len() {
+        let dx = _mm256_sub_pd(px, _mm256_loadu_pd(xs.as_ptr().add(i)));
+        let dy = _mm256_sub_pd(py, _mm256_loadu_pd(ys.as_ptr().add(i)));
+        let d2 = _mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy));
+        let x = _mm256_max_pd(_mm256_mul_pd(kk, d2), lo);
+        let t = _mm256_add_pd(
+            _mm256_mul_pd(x, _mm256_set1_pd(std::f64::consts::LOG2_E)),
+            magic,
+        );
+        let m = _mm256_sub_pd(t, magic);
+        let r = _mm256_sub_pd(
+            _mm256_sub_pd(x, _mm256_mul_pd(m, _mm256_set1_pd(LN2_HI))),
+            _mm256_mul_pd(m, _mm256_set1_pd(LN2_LO)),
+        );
+        let mut q = _mm256_set1_pd(1.0 / 3_628_800.0);
+        for c in POLY {
+            q = _mm256_add_pd(_mm256_mul_pd(q, r), _mm256_set1_pd(c));
+        }
+        let bits = _mm256_slli_epi64::<52>(_mm256_add_epi64(
+            _mm256_castpd_si256(t),
+            _mm256_set1_epi64x(1023),
+        ));
+        let w = _mm256_mul_pd(q, _mm256_castsi256_pd(bits));
+        let w = _mm256_and_pd(w, _mm256_cmp_pd::<_CMP_LT_OS>(d2, rr));
+        fx = _mm256_add_pd(fx, _mm256_mul_pd(w, dx));
+        fy = _mm256_add_pd(fy, _mm256_mul_pd(w, dy));
+        i += LANES;
+    }
+    let mut a = [0.0f64; 4];
+    _mm256_storeu_pd(a.as_mut_ptr(), fx);
+    let sx = (a[0] + a[1]) + (a[2] + a[3]);
+    _mm256_storeu_pd(a.as_mut_ptr(), fy);
+    let sy = (a[0] + a[1]) + (a[2] + a[3]);
+    DVec2::new(sx, sy)
+}
+
+/// [`gbn_force_scalar`] with SSE2: lanes 0, 1 in one register, 2, 3 in another.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+unsafe fn gbn_force_sse2(p: DVec2, xs: &[f64], ys: &[f64], k: f64, r2: f64) -> DVec2 {
+    use std::arch::x86_64::*;
+    #[inline(always)]
+    unsafe fn exp2(x: __m128d) -> __m128d {
+        const MAGIC: f64 = 6_755_399_441_055_744.0;
+        const LN2_HI: f64 = 6.931_471_803_691_238e-1;
+        const LN2_LO: f64 = 1.908_214_929_270_587_7e-10;
+        let magic = _mm_set1_pd(MAGIC);
+        let t = _mm_add_pd(_mm_mul_pd(x, _mm_set1_pd(std::f64::consts::LOG2_E)), magic);
+        let m = _mm_sub_pd(t, magic);
+        let r = _mm_sub_pd(
+            _mm_sub_pd(x, _mm_mul_pd(m, _mm_set1_pd(LN2_HI))),
+            _mm_mul_pd(m, _mm_set1_pd(LN2_LO)),
+        );
+        let mut q = _mm_set1_pd(1.0 / 3_628_800.0);
+        for c in [
+            1.0 / 362_880.0,
+            1.0 / 40_320.0,
+            1.0 / 5_040.0,
+            1.0 / 720.0,
+            1.0 / 120.0,
+            1.0 / 24.0,
+            1.0 / 6.0,
+            0.5,
+            1.0,
+            1.0,
+        ] {
+            q = _mm_add_pd(_mm_mul_pd(q, r), _mm_set1_pd(c));
+        }
+        let bits = _mm_slli_epi64::<52>(_mm_add_epi64(_mm_castpd_si128(t), _mm_set1_epi64x(1023)));
+        _mm_mul_pd(q, _mm_castsi128_pd(bits))
+    }
+    let (px, py) = (_mm_set1_pd(p.x), _mm_set1_pd(p.y));
+    let (kk, rr, lo) = (_mm_set1_pd(k), _mm_set1_pd(r2), _mm_set1_pd(-64.0));
+    let zero = _mm_setzero_pd();
+    let (mut fx01, mut fx23, mut fy01, mut fy23) = (zero, zero, zero, zero);
+    let one = |xp: *const f64, yp: *const f64, fx: &mut __m128d, fy: &mut __m128d| {
+        let dx = _mm_sub_pd(px, _mm_loadu_pd(xp));
+        let dy = _mm_sub_pd(py, _mm_loadu_pd(yp));
+        let d2 = _mm_add_pd(_mm_mul_pd(dx, dx), _mm_mul_pd(dy, dy));
+        // maxpd(x, −64) is x when x > −64, else −64: the scalar form's select.
+        let w = exp2(_mm_max_pd(_mm_mul_pd(kk, d2), lo));
+        let w = _mm_and_pd(w, _mm_cmplt_pd(d2, rr));
+        *fx = _mm_add_pd(*fx, _mm_mul_pd(w, dx));
+        *fy = _mm_add_pd(*fy, _mm_mul_pd(w, dy));
+    };
+    let mut i = 0;
+    while i + LANES <= xs.len() {
+        let (xp, yp) = (xs.as_ptr().add(i), ys.as_ptr().add(i));
+        one(xp, yp, &mut fx01, &mut fy01);
+        one(xp.add(2), yp.add(2), &mut fx23, &mut fy23);
+        i += LANES;
+    }
+    let mut a = [0.0f64; 2];
+    let mut b = [0.0f64; 2];
+    _mm_storeu_pd(a.as_mut_ptr(), fx01);
+    _mm_storeu_pd(b.as_mut_ptr(), fx23);
+    let fx = (a[0] + a[1]) + (b[0] + b[1]);
+    _mm_storeu_pd(a.as_mut_ptr(), fy01);
+    _mm_storeu_pd(b.as_mut_ptr(), fy23);
+    let fy = (a[0] + a[1]) + (b[0] + b[1]);
+    DVec2::new(fx, fy)
+}
+
+/// The cell grid of [`gbn_interactions`]: cells of side ≥ R/2 and a 5 × 5 block, or of side
+/// ≥ R and a 3 × 3 block, or `None` (all pairs) when fewer cells fit; at most ⌈√n⌉ a side.
+fn gbn_grid(points: &[DVec2], r: f64) -> Option<(CellGrid, usize)> {
+    let cap = (points.len() as f64).sqrt().ceil() as usize;
+    let fit = |m: f64| ((m / r).floor() as usize).min(cap);
+    if fit(2.0) >= 5 {
+        Some((CellGrid::new(points, fit(2.0)), 2))
+    } else if fit(1.0) >= 3 {
+        Some((CellGrid::new(points, fit(1.0)), 1))
+    } else {
+        None
+    }
+}
+
+/// Σ_j Δ_ij exp(−d_ij²/(2σ²)) over the other points within R = 6σ of every point: the force of
+/// [`gbn`], fast path. Per cell, its block's points are gathered once as unwrapped copies
+/// (structure of arrays, see [`gbn_force_lanes`]) and every point of the cell sums over them
+/// with [`exp_poly`]; cells run in parallel, each point's sum in a fixed order (the same bits on
+/// any thread count). Within n · [`GBN_EXP_REL_ERROR`] · max|Δ|-weighted sums (relative
+/// ≈ 10⁻¹²) of [`gbn_interactions`] (the reference, libm `exp`; test
+/// `gbn_fast_force_matches_the_reference`). Falls back to it when no grid fits (n < ~225 at
+/// the default σ).
+fn gbn_forces_fast(
+    points: &[DVec2],
+    sigma: f64,
+    cancel: &Cancel,
+) -> Result<Vec<DVec2>, PatternError> {
+    let n = points.len();
+    let r = GBN_CUTOFF_SIGMAS * sigma;
+    let r2 = r * r;
+    let k = -0.5 / (sigma * sigma);
+    let Some((grid, reach)) = gbn_grid(points, r) else {
+        return Ok(gbn_interactions(points, sigma, cancel)?
+            .into_iter()
+            .map(|(_, f)| f)
+            .collect());
+    };
+    let g = grid.g;
+    let cells = g * g;
+    // Fixed chunks of cells (each returns its points' forces in grid order).
+    let per = cells.div_ceil(64).max(1);
+    let parts: Result<Vec<Vec<DVec2>>, PatternError> = (0..cells.div_ceil(per))
+        .into_par_iter()
+        .map(|chunk| {
+            cancel.check()?;
+            let mut xs = Vec::new();
+            let mut ys = Vec::new();
+            let mut out = Vec::new();
+            for c in chunk * per..((chunk + 1) * per).min(cells) {
+                let (cx, cy) = (c % g, c / g);
+                xs.clear();
+                ys.clear();
+                for dy in 0..=2 * reach {
+                    let uy = cy + g + dy - reach; // unwrapped row + g
+                    let (y, sy) = (uy % g, (uy / g) as f64 - 1.0);
+                    for dx in 0..=2 * reach {
+                        let ux = cx + g + dx - reach;
+                        let (x, sx) = (ux % g, (ux / g) as f64 - 1.0);
+                        let cell = y * g + x;
+                        for &(q, _) in
+                            &grid.items[grid.start[cell] as usize..grid.start[cell + 1] as usize]
+                        {
+                            xs.push(q.x + sx);
+                            ys.push(q.y + sy);
+                        }
+                    }
+                }
+                while xs.len() % LANES != 0 {
+                    xs.push(FAR);
+                    ys.push(FAR);
+                }
+                for &(p, _) in &grid.items[grid.start[c] as usize..grid.start[c + 1] as usize] {
+                    out.push(gbn_force_lanes(p, &xs, &ys, k, r2));
+                }
+            }
+            Ok(out)
+        })
+        .collect();
+    let mut force = vec![DVec2::ZERO; n];
+    for (f, &(_, i)) in parts?.into_iter().flatten().zip(&grid.items) {
+        force[i as usize] = f;
+    }
+    Ok(force)
+}
+
 /// The truncated GBN energy Σ_{i<j, d_ij<6σ} exp(−d_ij²/(2σ²)) of `points` on the unit torus,
 /// with σ = sigma/√n as in [`gbn`] (sigma = 0: the default). Within n(n−1)/2 · e^{−18} of the
 /// untruncated energy. Errors: no point, a point outside [0,1)², a bad sigma.
@@ -1048,13 +1374,52 @@ fn gbn_gradient(points: &[DVec2], sigma: f64, cancel: &Cancel) -> Result<Vec<DVe
 /// Gaussian blue noise (Ahmed, Ren, Wonka 2022) on the unit torus: `iterations` heavy-ball
 /// steps (recommended [`GBN_DEFAULT_ITERATIONS`], 0..=10000) on the Gaussian energy with
 /// σ = sigma/√n (sigma 0 = [`GBN_DEFAULT_SIGMA`], or in (0, 1]) from white noise, step
-/// [`GBN_STEP`]·σ², momentum [`GBN_MOMENTUM`], kernel truncated at 6σ; see the module docs. `progress` gets step
-/// k of `iterations` and the points after it.
+/// [`GBN_STEP`]·σ², momentum [`GBN_MOMENTUM`], kernel truncated at 6σ; see the module docs.
+/// The forces come from the vectorised cell-block kernel ([`gbn_naive`]: the same iteration
+/// with libm's `exp` and a per-pair wrap). `progress` gets step k of `iterations` and the
+/// points after it.
 pub fn gbn(
     n: usize,
     iterations: u32,
     sigma: f64,
     seed: u64,
+    cancel: &Cancel,
+    progress: &mut OnProgress<'_, [DVec2]>,
+) -> Result<Vec<DVec2>, PatternError> {
+    gbn_with(n, iterations, sigma, seed, true, cancel, progress)
+}
+
+/// [`gbn`] with the reference forces: per-pair toroidal displacements and libm's `exp` over
+/// the same cells. Its trajectory agrees with [`gbn`]'s to rounding for the first steps (the
+/// descent then amplifies the 10⁻¹³ differences, as any change of rounding would); the test
+/// reference of the fast kernel.
+pub fn gbn_naive(
+    n: usize,
+    iterations: u32,
+    sigma: f64,
+    seed: u64,
+    cancel: &Cancel,
+    progress: &mut OnProgress<'_, [DVec2]>,
+) -> Result<Vec<DVec2>, PatternError> {
+    gbn_with(n, iterations, sigma, seed, false, cancel, progress)
+}
+
+/// The momentum of GBN step k of `iterations`: [`GBN_MOMENTUM`] for the first
+/// [`GBN_MOMENTUM_SWITCH`] of the steps, [`GBN_MOMENTUM_LATE`] after.
+fn gbn_momentum(k: u32, iterations: u32) -> f64 {
+    if f64::from(k) < GBN_MOMENTUM_SWITCH * f64::from(iterations) {
+        GBN_MOMENTUM
+    } else {
+        GBN_MOMENTUM_LATE
+    }
+}
+
+fn gbn_with(
+    n: usize,
+    iterations: u32,
+    sigma: f64,
+    seed: u64,
+    fast: bool,
     cancel: &Cancel,
     progress: &mut OnProgress<'_, [DVec2]>,
 ) -> Result<Vec<DVec2>, PatternError> {
@@ -1065,10 +1430,20 @@ pub fn gbn(
     let mut velocity = vec![DVec2::ZERO; n];
     for k in 0..iterations {
         cancel.check()?;
-        let grad = gbn_gradient(&points, s, cancel)?;
-        for ((p, v), g) in points.iter_mut().zip(velocity.iter_mut()).zip(&grad) {
-            *v = GBN_MOMENTUM * *v - step * *g;
-            *p = wrap_point(*p + *v);
+        let beta = gbn_momentum(k, iterations);
+        if fast {
+            // −step · ∂E/∂x = step/σ² · Σ Δ w = GBN_STEP · force.
+            let force = gbn_forces_fast(&points, s, cancel)?;
+            for ((p, v), f) in points.iter_mut().zip(velocity.iter_mut()).zip(&force) {
+                *v = beta * *v + GBN_STEP * *f;
+                *p = wrap_point(*p + *v);
+            }
+        } else {
+            let grad = gbn_gradient(&points, s, cancel)?;
+            for ((p, v), g) in points.iter_mut().zip(velocity.iter_mut()).zip(&grad) {
+                *v = beta * *v - step * *g;
+                *p = wrap_point(*p + *v);
+            }
         }
         progress(Progress::with(k as usize + 1, iterations as usize, &points));
     }
@@ -1557,7 +1932,8 @@ mod tests {
     #[test]
     fn gbn_momentum_beats_the_plain_step() {
         // At the default iterations the heavy-ball rule reaches an effective Nyquist frequency
-        // above 0.8 (n = 1024, seed 1); the authors' plain step σ²/4 reached 0.73 after 500.
+        // above 0.84 (n = 1024, seed 1; measured 0.855, constant β = 0.9 gave 0.825); the
+        // authors' plain step σ²/4 reached 0.73 after 500.
         let pts = gbn(
             1024,
             GBN_DEFAULT_ITERATIONS,
@@ -1568,7 +1944,26 @@ mod tests {
         )
         .unwrap();
         let e = eff_nyquist(&pts);
-        assert!(e > 0.8, "{e}");
+        assert!(e > 0.84, "{e}");
+    }
+
+    #[test]
+    fn gbn_default_gap_to_8x_is_measured() {
+        // The default steps against 8× as many (same rule, so the 8× run also switches its
+        // momentum at a quarter). Measured (effective Nyquist frequency, 800 vs 6400 steps):
+        // n = 256, seeds 1, 2: 0.80 vs 0.815 and 0.79 vs 0.805 (1.8 %, 1.9 %: held to 2 %);
+        // n = 1024, seed 1: 0.855 vs 0.885 (3.4 %: the 2 % target is NOT met, held to 4 % so
+        // that a regression shows; the energy keeps ordering the set, see the module docs).
+        let never = Cancel::never();
+        let it = GBN_DEFAULT_ITERATIONS;
+        for (n, seed, tol) in [(256usize, 1u64, 0.02), (256, 2, 0.02), (1024, 1, 0.04)] {
+            let at = |k: u32| eff_nyquist(&gbn(n, k, 0.0, seed, &never, &mut no_progress).unwrap());
+            let (one, eight) = (at(it), at(8 * it));
+            assert!(
+                (one - eight).abs() <= tol * eight && one > 0.78,
+                "n = {n}, seed {seed}: {one} vs {eight} at 8×"
+            );
+        }
     }
 
     #[test]
@@ -1677,6 +2072,107 @@ mod tests {
                 );
             }
         }
+    }
+
+    #[test]
+    fn exp_poly_is_within_its_bound_of_libm() {
+        // 10⁶ points of [−64, 0] plus the edges and the points where m changes.
+        assert_eq!(exp_poly(0.0), 1.0);
+        let mut worst = 0.0f64;
+        let mut check = |x: f64| {
+            let (a, b) = (exp_poly(x), x.exp());
+            let rel = (a - b).abs() / b;
+            worst = worst.max(rel);
+            assert!(rel <= GBN_EXP_REL_ERROR, "x = {x}: {a} vs {b} ({rel:e})");
+        };
+        for i in 0..=1_000_000 {
+            check(-64.0 * i as f64 / 1e6);
+        }
+        for m in 0..=92 {
+            let x = -(m as f64 + 0.5) * std::f64::consts::LN_2;
+            for d in [-1e-12, 0.0, 1e-12] {
+                check(x + d);
+            }
+        }
+        check(-64.0);
+        check(-1e-300);
+        // The bound is not loose by orders of magnitude either (measured ≈ 2e−13).
+        assert!(worst > 1e-15, "{worst:e}");
+    }
+
+    #[test]
+    fn gbn_fast_force_matches_the_reference() {
+        // The vectorised cell-block kernel against the per-pair wrap with libm's exp, on white
+        // noise and on a relaxed set, default σ (5 × 5 blocks), σ = 0.3 (capped grid) and
+        // σ = 1 at n = 100 (3 × 3 blocks) and n = 30 (all pairs): per point, within
+        // 1e−11 of the largest force (the exp bound 5e−13 times ~100 terms, plus the
+        // rounding of p − q ± 1 against (p − q) ± 1).
+        let never = Cancel::never();
+        let relaxed = gbn_naive(1024, 30, 0.0, 3, &never, &mut no_progress).unwrap();
+        for (pts, rel) in [
+            (white(1024, 21), 1.0),
+            (relaxed, 1.0),
+            (white(1024, 22), 0.3),
+            (white(4096, 23), 1.0),
+            (white(100, 24), 1.0),
+            (white(30, 25), 1.0),
+        ] {
+            let n = pts.len();
+            let sigma = resolve_sigma(rel, n).unwrap();
+            let fast = gbn_forces_fast(&pts, sigma, &never).unwrap();
+            let reference = gbn_interactions(&pts, sigma, &never).unwrap();
+            let fmax = reference
+                .iter()
+                .map(|(_, f)| f.abs().max_element())
+                .fold(0.0, f64::max);
+            assert!(fmax > 0.0);
+            // The dispatched lanes (AVX2 or SSE2), the SSE2 and AVX2 forms and the scalar
+            // lanes: the same bits (all points as candidates).
+            let (xs, ys): (Vec<f64>, Vec<f64>) = pts
+                .iter()
+                .map(|q| (q.x, q.y))
+                .chain(std::iter::repeat_n((FAR, FAR), (LANES - n % LANES) % LANES))
+                .unzip();
+            let k = -0.5 / (sigma * sigma);
+            let r2 = (GBN_CUTOFF_SIGMAS * sigma).powi(2);
+            for &p in pts.iter().take(16) {
+                let b = gbn_force_scalar(p, &xs, &ys, k, r2);
+                let same = |a: DVec2| {
+                    assert_eq!(
+                        (a.x.to_bits(), a.y.to_bits()),
+                        (b.x.to_bits(), b.y.to_bits())
+                    );
+                };
+                same(gbn_force_lanes(p, &xs, &ys, k, r2));
+                #[cfg(target_arch = "x86_64")]
+                {
+                    // SAFETY: SSE2 is baseline; AVX2 only where detected.
+                    same(unsafe { gbn_force_sse2(p, &xs, &ys, k, r2) });
+                    if std::arch::is_x86_feature_detected!("avx2") {
+                        same(unsafe { gbn_force_avx2(p, &xs, &ys, k, r2) });
+                    }
+                }
+            }
+            for (i, (a, (_, b))) in fast.iter().zip(&reference).enumerate() {
+                let d = (*a - *b).abs().max_element();
+                assert!(
+                    d <= 1e-11 * fmax,
+                    "n = {n}, σ = {rel}, point {i}: {a} vs {b}"
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn gbn_fast_follows_the_reference_iteration() {
+        // A few steps of gbn and gbn_naive from the same start agree to rounding (later the
+        // descent amplifies rounding differences); the fast path moved the points.
+        let never = Cancel::never();
+        let fast = gbn(1024, 5, 0.0, 4, &never, &mut no_progress).unwrap();
+        let naive = gbn_naive(1024, 5, 0.0, 4, &never, &mut no_progress).unwrap();
+        let gap = max_torus_gap(&fast, &naive);
+        assert!(gap < 1e-10, "{gap:e}");
+        assert!(max_torus_gap(&fast, &white(1024, 4)) > 1e-3);
     }
 
     #[test]
