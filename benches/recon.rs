@@ -19,9 +19,10 @@ use samplescope::core::cancel::Cancel;
 #[allow(dead_code)]
 mod recon_kernels;
 use recon_kernels::{GaussianKernel, NonSeparable, TentKernel};
+use samplescope::core::filter::{Filter, Filter2D, Gaussian};
 use samplescope::core::recon::{
     reconstruct_scattered, reconstruct_scattered_gather, reference_image, reference_supersampled,
-    rmse, sample_signal, ReconKernel, ReferenceOptions,
+    rmse, sample_signal, ExactFactors, ReconKernel, ReferenceOptions,
 };
 use samplescope::core::rng::Rng;
 use samplescope::core::signal::{Signal, ZonePlate};
@@ -327,5 +328,80 @@ fn bench_reference(c: &mut Criterion) {
     }
 }
 
-criterion_group!(benches, bench, bench_reference);
+/// The default scene's reconstruction, the one a slider change waits for: 4096 jittered
+/// samples of the default zone plate onto 512², the library's Gaussian (σ = ½, r = 2, edge
+/// subtracted), splatted with the Gaussian's one-exponential factors against the exact splat
+/// ([`ExactFactors`]: `exp` and `expm1` a factor) in the same run, on one thread (CPU time)
+/// and on the global pool (wall), with the largest difference between the two images.
+fn bench_slider(c: &mut Criterion) {
+    let ids = [
+        "slider_recon_4096_to_512/fast factors",
+        "slider_recon_4096_to_512/exact factors",
+    ];
+    let cancel = Cancel::never();
+    let mut rng = Rng::new(1);
+    let points: Vec<DVec2> = (0..4096)
+        .map(|k| {
+            let (i, j) = ((k % 64) as f64, (k / 64) as f64);
+            DVec2::new((i + rng.next_f64()) / 64.0, (j + rng.next_f64()) / 64.0)
+        })
+        .collect();
+    let values = sample_signal(&Signal::ZonePlate(ZonePlate::default()), &points, &cancel)
+        .expect("valid signal");
+    let gauss = Filter2D::separable(Filter::Gaussian(Gaussian {
+        sigma: 0.5,
+        radius: 2.0,
+        subtract_edge: true,
+    }));
+    let exact = ExactFactors(gauss);
+    let mut group = c.benchmark_group("slider_recon_4096_to_512");
+    group.sample_size(20);
+    group.bench_function("fast factors", |b| {
+        b.iter(|| black_box(reconstruct_scattered(&points, &values, W, &gauss, &cancel)))
+    });
+    group.bench_function("exact factors", |b| {
+        b.iter(|| black_box(reconstruct_scattered(&points, &values, W, &exact, &cancel)))
+    });
+    group.finish();
+    if !selected(&ids) {
+        return;
+    }
+    let one = pool();
+    let (fw, fc) = best_of(&one, 15, || {
+        black_box(reconstruct_scattered(&points, &values, W, &gauss, &cancel).expect("ok"));
+    });
+    let (ew, ec) = best_of(&one, 15, || {
+        black_box(reconstruct_scattered(&points, &values, W, &exact, &cancel).expect("ok"));
+    });
+    let (fp, a) = median_ms(15, || {
+        reconstruct_scattered(&points, &values, W, &gauss, &cancel).expect("ok")
+    });
+    let (ep, b) = median_ms(15, || {
+        reconstruct_scattered(&points, &values, W, &exact, &cancel).expect("ok")
+    });
+    let worst = a
+        .pixels
+        .iter()
+        .zip(&b.pixels)
+        .map(|(x, y)| (x - y).abs())
+        .fold(0.0, f64::max);
+    let ms = |d: Duration| d.as_secs_f64() * 1e3;
+    let cpu = |c: Option<Duration>, w: Duration| ms(c.unwrap_or(w));
+    println!();
+    println!(
+        "slider reconstruction (default scene: 4096 jittered samples, {W}², Gaussian σ ½ r 2): \
+         fast factors vs exact, one thread best of 15 (CPU) and {} threads median of 15 (wall)",
+        rayon::current_num_threads()
+    );
+    println!(
+        "one thread: fast {:.2} ms CPU, exact {:.2} ms CPU, exact/fast {:.2}x; pool: fast {fp:.2} ms, \
+         exact {ep:.2} ms, exact/fast {:.2}x; largest pixel difference {worst:.1e} (bound 1e-13)",
+        cpu(fc, fw),
+        cpu(ec, ew),
+        cpu(ec, ew) / cpu(fc, fw),
+        ep / fp
+    );
+}
+
+criterion_group!(benches, bench, bench_reference, bench_slider);
 criterion_main!(benches);

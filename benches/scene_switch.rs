@@ -6,7 +6,8 @@
 //! Targets on 2 cores: first complete picture ≤ 300 ms, final ≤ 1.5 s, for every scene.
 //! Prints a table (median of 3 runs per scene) and the worst ratios; criterion then times the
 //! default scene and `zone-plate-128-to-512` both ways. `SCENE_SWITCH_ONLY=a.ron,b.ron` limits
-//! the table to those scenes (and skips the criterion part).
+//! the table to those scenes (and skips the criterion part); `SCENE_SWITCH_TIMELINE=1` prints
+//! when each panel's first result arrived, run by run.
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use samplescope::core::cancel::Cancel;
@@ -48,12 +49,26 @@ fn switch(scene: &Scene) -> (Duration, Duration) {
             }
         }
     }
+    // SCENE_SWITCH_TIMELINE=1: when each panel's first result arrived (where the time goes).
+    let timeline = std::env::var_os("SCENE_SWITCH_TIMELINE").is_some();
     let t = Instant::now();
     engine.submit(scene);
     let mut first = None;
     while !engine.is_idle() {
         for u in engine.poll() {
-            want.remove(&(u.column, u.kind));
+            if want.remove(&(u.column, u.kind)) && timeline {
+                eprintln!(
+                    "  {:>8.1} ms  column {} {} ({})",
+                    t.elapsed().as_secs_f64() * 1e3,
+                    u.column,
+                    u.kind.name(),
+                    if u.progress.is_none() {
+                        "final"
+                    } else {
+                        "partial"
+                    }
+                );
+            }
         }
         if first.is_none() && want.is_empty() {
             first = Some(t.elapsed());

@@ -511,11 +511,16 @@ pub fn run_study(
     let mut done = 0usize;
     let mut next_partial = 1usize;
     let mut i = 0;
+    // The first batch is one realization's work and each next one as much as is done, up to
+    // `target`: the partial studies of 1, 2, 4, … realizations come as early as they can (a
+    // scene's first picture waits for every column's first one), and the batches stay few.
+    let per_realization = (total / distinct.max(1)).max(1);
     while i < tasks.len() {
         cancel.check()?;
         let mut j = i;
         let mut w = 0usize;
-        while j < tasks.len() && (j - i < 2 * threads || w < target) && j - i < 4096 {
+        let batch = done.max(per_realization).min(target);
+        while j < tasks.len() && (j - i < 2 * threads || w < batch) && j - i < 4096 {
             w = w.saturating_add(weight(&tasks[j]));
             j += 1;
         }
@@ -1285,6 +1290,32 @@ mod tests {
             );
         }
         same_bits(&last, &study(&req));
+        // The first partial comes after 2 × threads realizations at most (a scene's first
+        // picture waits for it), also where the whole study is less than one batch's `target`
+        // of work (it came only after half of it), with a pattern that makes a task per
+        // (realization, N) and one that makes a task per realization.
+        let threads = rayon::current_num_threads().max(1);
+        for name in ["jitter", "sobol"] {
+            let small = StudyRequest {
+                pattern: Pattern::from_name(name).unwrap(),
+                ns: vec![16, 64, 256, 1024, 4096],
+                realizations: 32,
+                seed: 1,
+                ..StudyRequest::default()
+            };
+            let mut first = None;
+            run_study(&small, &Cancel::never(), &mut |p| {
+                if let (None, Some(s)) = (first, p.so_far) {
+                    first = Some(s.realizations);
+                }
+            })
+            .unwrap();
+            let first = first.unwrap_or_else(|| panic!("{name}: no partial study"));
+            assert!(
+                first <= 2 * threads,
+                "{name}: first partial after {first} realizations"
+            );
+        }
         // Identical realizations publish nothing part way.
         let mut none = 0;
         let fixed = StudyRequest {

@@ -82,6 +82,24 @@ pub(crate) fn tile_sorted(points: &[DVec2], values: &[f64], w: usize) -> Vec<(DV
     out
 }
 
+/// The separable factors of the pixels `k0, k0 + 1, …` (one per slot of `out`) for a sample
+/// at `x` (pixel units): each pixel centre's [`offset`], then the kernel's
+/// [`ReconKernel::factors`] on them all (the serial and the parallel splat both call this, so
+/// they add the same bits).
+#[inline]
+fn factors_at<K: ReconKernel + ?Sized>(
+    kernel: &K,
+    x: f64,
+    k0: usize,
+    inv_scale: f64,
+    out: &mut [f64],
+) {
+    for (a, h) in out.iter_mut().enumerate() {
+        *h = offset(k0 + a, x, inv_scale);
+    }
+    kernel.factors(out);
+}
+
 /// Largest per-axis tap count handled with stack buffers.
 const SMALL: usize = 16;
 
@@ -225,16 +243,12 @@ impl FactorTable {
                         return true;
                     };
                     let (hx, hy) = slots.split_at_mut(cap);
-                    let mut ok = true;
-                    for (h, i) in hx.iter_mut().zip(i0..=i1) {
-                        *h = kernel.factor(offset(i, x.x, inv_scale)).unwrap_or(0.0);
-                        ok &= (0.0..=FACTOR_BOUND).contains(h);
-                    }
-                    for (h, j) in hy.iter_mut().zip(j0..=j1) {
-                        *h = kernel.factor(offset(j, x.y, inv_scale)).unwrap_or(0.0);
-                        ok &= (0.0..=FACTOR_BOUND).contains(h);
-                    }
-                    ok
+                    let (hx, hy) = (&mut hx[..=i1 - i0], &mut hy[..=j1 - j0]);
+                    factors_at(kernel, x.x, i0, inv_scale, hx);
+                    factors_at(kernel, x.y, j0, inv_scale, hy);
+                    hx.iter()
+                        .chain(hy.iter())
+                        .all(|h| (0.0..=FACTOR_BOUND).contains(h))
                 })
                 .reduce(|| true, |a, b| a && b);
         FactorTable {
@@ -393,20 +407,14 @@ impl<'k, K: ReconKernel + ?Sized> Accum<'k, K> {
                 // Common case (supports up to 7 px): factors on the stack.
                 let mut hx = [0.0; SMALL];
                 let mut hy = [0.0; SMALL];
-                for (a, h) in hx[..nx].iter_mut().enumerate() {
-                    *h = kernel.factor(offset(i0 + a, x.x, s)).unwrap_or(0.0);
-                }
-                for (b, h) in hy[..ny].iter_mut().enumerate() {
-                    *h = kernel.factor(offset(j0 + b, x.y, s)).unwrap_or(0.0);
-                }
+                factors_at(kernel, x.x, i0, s, &mut hx[..nx]);
+                factors_at(kernel, x.y, j0, s, &mut hy[..ny]);
                 splat_rows(&mut self.cells, w, i0, j0, &hx[..nx], &hy[..ny], v);
             } else {
-                self.hx.clear();
-                self.hx
-                    .extend((i0..=i1).map(|i| kernel.factor(offset(i, x.x, s)).unwrap_or(0.0)));
-                self.hy.clear();
-                self.hy
-                    .extend((j0..=j1).map(|j| kernel.factor(offset(j, x.y, s)).unwrap_or(0.0)));
+                self.hx.resize(nx, 0.0);
+                self.hy.resize(ny, 0.0);
+                factors_at(kernel, x.x, i0, s, &mut self.hx[..nx]);
+                factors_at(kernel, x.y, j0, s, &mut self.hy[..ny]);
                 splat_rows(&mut self.cells, w, i0, j0, &self.hx, &self.hy, v);
             }
         } else {

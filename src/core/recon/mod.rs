@@ -86,6 +86,7 @@ pub use convergence::{
     convergence_curve, convergence_curve_progressive, ConvergenceCurve, ConvergencePoint,
     DEFAULT_SPP_LIST,
 };
+pub use filter_kernel::ExactFactors;
 pub use grid::{resample_grid, sample_grid};
 pub use reference::{
     reference_image, reference_image_progressive, reference_image_with, reference_supersampled,
@@ -140,6 +141,15 @@ pub trait ReconKernel: Sync {
         let _ = x;
         None
     }
+    /// A separable kernel's factors at each of `xs`, in place (0 where `factor` gives none):
+    /// what the splat evaluates, 2(2r+1) a sample. The default is `factor` on each; a kernel
+    /// may use a cheaper form within its documented distance of `factor` (the filters':
+    /// [`crate::core::filter::Kernel::eval_many`]).
+    fn factors(&self, xs: &mut [f64]) {
+        for x in xs {
+            *x = self.factor(*x).unwrap_or(0.0);
+        }
+    }
     /// The kernel's ratio ρ = ∫∫w / ∫∫|w| over its support: 1 for kernels without negative
     /// lobes, less for those with (the normaliser's floor is [`FLOOR_FACTOR`]·ρ; module docs).
     /// The default integrates by the midpoint rule: 8192 nodes per axis on the separable
@@ -193,6 +203,9 @@ impl<K: ReconKernel + ?Sized> ReconKernel for &K {
     }
     fn factor(&self, x: f64) -> Option<f64> {
         (**self).factor(x)
+    }
+    fn factors(&self, xs: &mut [f64]) {
+        (**self).factors(xs)
     }
     fn dc_fraction(&self) -> f64 {
         (**self).dc_fraction()
