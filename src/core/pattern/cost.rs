@@ -38,9 +38,10 @@ pub(crate) const HALTON_OWEN_POINT_NS: f64 = 800.0;
 /// (measured 22–31 ms for 1024 points × 50 iterations).
 pub(crate) const LLOYD_UPDATE_NS: f64 = 1_000.0;
 /// One SOT point-slice: the projection of a point on a direction, its bucket, its share of
-/// the insertion pass, its quantile and displacement (O(n) per slice; measured about 11 ns
-/// on one core at n = 1024, benches/optimize.rs).
-pub(crate) const SOT_UPDATE_NS: f64 = 12.0;
+/// the insertion pass, its quantile and displacement (O(n) per slice; measured 11 ns of CPU
+/// at n = 1024 on the loaded 2-core machine after the branch-free bucket loop, 17 ns before
+/// in the same run; benches/optimize.rs).
+pub(crate) const SOT_UPDATE_NS: f64 = 10.0;
 /// One GBN point update (the vectorised Gaussian kernel over a cell block of ~256 candidates,
 /// ~113 of them within 6σ; measured 0.83 µs of CPU at n = 1024 under load, against 2.2 µs
 /// with libm's exp per pair; benches/optimize.rs).
