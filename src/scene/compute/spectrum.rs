@@ -99,13 +99,14 @@ pub(in crate::scene) fn run(ctx: &JobCtx) -> Output {
     };
     if let (Some(check), Some(tol)) = (check, report.tolerance) {
         // The picture is complete: show it now, and its measured error (two exact DFT rows at
-        // the default scene, about as long as the NUFFT itself) when it is ready.
+        // the default scene, about as long as the NUFFT itself) when it is ready, computed on
+        // the low-priority refinement thread so that it never slows a panel still computing.
         let data_now = Arc::new(data);
         ctx.publish_final_value(
             NodeValue::Spectrum(data_now.clone()),
             shown_accuracy(Accuracy::SpectrumMeasuring { asked: tol }),
         );
-        report.finish_check(Some(check), cancel)?;
+        crate::engine::refine::run(|| report.finish_check(Some(check), cancel))?;
         data = Arc::unwrap_or_clone(data_now);
         data.stages = stages(&report);
     }
