@@ -100,7 +100,7 @@ pub(in crate::scene) fn run(ctx: &JobCtx) -> Output {
     if let (Some(check), Some(tol)) = (check, report.tolerance) {
         // The picture is complete: show it now, and its measured error (two exact DFT rows at
         // the default scene, about as long as the NUFFT itself) when it is ready, computed on
-        // the low-priority refinement threads so that it never slows a panel still computing.
+        // the low-priority refinement thread so that it never slows a panel still computing.
         let data_now = Arc::new(data);
         ctx.publish_final_value(
             NodeValue::Spectrum(data_now.clone()),
