@@ -24,7 +24,6 @@ pub mod animation;
 pub mod cache;
 mod disk;
 pub mod disk_cache;
-pub mod refine;
 pub mod scheduler;
 
 use crate::core::cancel::Cancel;

@@ -99,14 +99,13 @@ pub(in crate::scene) fn run(ctx: &JobCtx) -> Output {
     };
     if let (Some(check), Some(tol)) = (check, report.tolerance) {
         // The picture is complete: show it now, and its measured error (two exact DFT rows at
-        // the default scene, about as long as the NUFFT itself) when it is ready, computed on
-        // the low-priority refinement thread so that it never slows a panel still computing.
+        // the default scene, about as long as the NUFFT itself) when it is ready.
         let data_now = Arc::new(data);
         ctx.publish_final_value(
             NodeValue::Spectrum(data_now.clone()),
             shown_accuracy(Accuracy::SpectrumMeasuring { asked: tol }),
         );
-        crate::engine::refine::run(|| report.finish_check(Some(check), cancel))?;
+        report.finish_check(Some(check), cancel)?;
         data = Arc::unwrap_or_clone(data_now);
         data.stages = stages(&report);
     }
