@@ -1059,6 +1059,27 @@ fn gbn_interactions(
 /// (test `exp_poly_is_within_its_bound_of_libm`, measured ≤ 2.5·10⁻¹³ on 10⁶ points).
 pub const GBN_EXP_REL_ERROR: f64 = 5e-13;
 
+/// The rounding constant 1.5·2⁵² of [`exp_poly`] and its vector forms.
+const EXP_MAGIC: f64 = 6_755_399_441_055_744.0;
+/// ln 2 split in two (Cody–Waite) for [`exp_poly`] and its vector forms.
+const EXP_LN2_HI: f64 = 6.931_471_803_691_238e-1;
+const EXP_LN2_LO: f64 = 1.908_214_929_270_587_7e-10;
+/// The Taylor coefficients of e^r from degree 10 down to 0, in Horner order (the first is
+/// the starting value, the rest are added in turn), shared by [`exp_poly`] and its vector forms.
+const EXP_POLY: [f64; 11] = [
+    1.0 / 3_628_800.0,
+    1.0 / 362_880.0,
+    1.0 / 40_320.0,
+    1.0 / 5_040.0,
+    1.0 / 720.0,
+    1.0 / 120.0,
+    1.0 / 24.0,
+    1.0 / 6.0,
+    0.5,
+    1.0,
+    1.0,
+];
+
 /// e^x for x ∈ [−64, 0] without a library call (so that the kernel loop vectorises):
 /// x = m·ln 2 + r with m = round(x/ln 2) (by the 1.5·2⁵² rounding trick) and |r| ≤ ln 2 / 2
 /// (Cody–Waite split of ln 2, exact for |m| < 2¹¹), e^r by its Taylor polynomial of degree 10
@@ -1066,23 +1087,13 @@ pub const GBN_EXP_REL_ERROR: f64 = 5e-13;
 /// clamp x at −64 (e^{−64} ≈ 1.6·10⁻²⁸ stays a normal number).
 #[inline(always)]
 fn exp_poly(x: f64) -> f64 {
-    const MAGIC: f64 = 6_755_399_441_055_744.0; // 1.5 · 2^52
-    const LN2_HI: f64 = 6.931_471_803_691_238e-1;
-    const LN2_LO: f64 = 1.908_214_929_270_587_7e-10;
-    let t = x * std::f64::consts::LOG2_E + MAGIC;
-    let m = t - MAGIC;
-    let r = (x - m * LN2_HI) - m * LN2_LO;
-    let mut p = 1.0 / 3_628_800.0;
-    p = p * r + 1.0 / 362_880.0;
-    p = p * r + 1.0 / 40_320.0;
-    p = p * r + 1.0 / 5_040.0;
-    p = p * r + 1.0 / 720.0;
-    p = p * r + 1.0 / 120.0;
-    p = p * r + 1.0 / 24.0;
-    p = p * r + 1.0 / 6.0;
-    p = p * r + 0.5;
-    p = p * r + 1.0;
-    p = p * r + 1.0;
+    let t = x * std::f64::consts::LOG2_E + EXP_MAGIC;
+    let m = t - EXP_MAGIC;
+    let r = (x - m * EXP_LN2_HI) - m * EXP_LN2_LO;
+    let mut p = EXP_POLY[0];
+    for c in &EXP_POLY[1..] {
+        p = p * r + c;
+    }
     // The low bits of t hold m (two's complement under the 2^51 of the magic number): adding
     // the exponent bias and shifting by 52 keeps exactly the 11 exponent bits of 2^m.
     let scale = f64::from_bits(t.to_bits().wrapping_add(1023) << 52);
@@ -1154,24 +1165,9 @@ fn gbn_force_scalar(p: DVec2, xs: &[f64], ys: &[f64], k: f64, r2: f64) -> DVec2 
 #[target_feature(enable = "avx2")]
 unsafe fn gbn_force_avx2(p: DVec2, xs: &[f64], ys: &[f64], k: f64, r2: f64) -> DVec2 {
     use std::arch::x86_64::*;
-    const MAGIC: f64 = 6_755_399_441_055_744.0;
-    const LN2_HI: f64 = 6.931_471_803_691_238e-1;
-    const LN2_LO: f64 = 1.908_214_929_270_587_7e-10;
-    const POLY: [f64; 10] = [
-        1.0 / 362_880.0,
-        1.0 / 40_320.0,
-        1.0 / 5_040.0,
-        1.0 / 720.0,
-        1.0 / 120.0,
-        1.0 / 24.0,
-        1.0 / 6.0,
-        0.5,
-        1.0,
-        1.0,
-    ];
     let (px, py) = (_mm256_set1_pd(p.x), _mm256_set1_pd(p.y));
     let (kk, rr, lo) = (_mm256_set1_pd(k), _mm256_set1_pd(r2), _mm256_set1_pd(-64.0));
-    let magic = _mm256_set1_pd(MAGIC);
+    let magic = _mm256_set1_pd(EXP_MAGIC);
     let (mut fx, mut fy) = (_mm256_setzero_pd(), _mm256_setzero_pd());
     let mut i = 0;
     while i + LANES <= xs.len() {
@@ -1185,11 +1181,11 @@ unsafe fn gbn_force_avx2(p: DVec2, xs: &[f64], ys: &[f64], k: f64, r2: f64) -> D
         );
         let m = _mm256_sub_pd(t, magic);
         let r = _mm256_sub_pd(
-            _mm256_sub_pd(x, _mm256_mul_pd(m, _mm256_set1_pd(LN2_HI))),
-            _mm256_mul_pd(m, _mm256_set1_pd(LN2_LO)),
+            _mm256_sub_pd(x, _mm256_mul_pd(m, _mm256_set1_pd(EXP_LN2_HI))),
+            _mm256_mul_pd(m, _mm256_set1_pd(EXP_LN2_LO)),
         );
-        let mut q = _mm256_set1_pd(1.0 / 3_628_800.0);
-        for c in POLY {
+        let mut q = _mm256_set1_pd(EXP_POLY[0]);
+        for &c in &EXP_POLY[1..] {
             q = _mm256_add_pd(_mm256_mul_pd(q, r), _mm256_set1_pd(c));
         }
         let bits = _mm256_slli_epi64::<52>(_mm256_add_epi64(
@@ -1217,29 +1213,15 @@ unsafe fn gbn_force_sse2(p: DVec2, xs: &[f64], ys: &[f64], k: f64, r2: f64) -> D
     use std::arch::x86_64::*;
     #[inline(always)]
     unsafe fn exp2(x: __m128d) -> __m128d {
-        const MAGIC: f64 = 6_755_399_441_055_744.0;
-        const LN2_HI: f64 = 6.931_471_803_691_238e-1;
-        const LN2_LO: f64 = 1.908_214_929_270_587_7e-10;
-        let magic = _mm_set1_pd(MAGIC);
+        let magic = _mm_set1_pd(EXP_MAGIC);
         let t = _mm_add_pd(_mm_mul_pd(x, _mm_set1_pd(std::f64::consts::LOG2_E)), magic);
         let m = _mm_sub_pd(t, magic);
         let r = _mm_sub_pd(
-            _mm_sub_pd(x, _mm_mul_pd(m, _mm_set1_pd(LN2_HI))),
-            _mm_mul_pd(m, _mm_set1_pd(LN2_LO)),
+            _mm_sub_pd(x, _mm_mul_pd(m, _mm_set1_pd(EXP_LN2_HI))),
+            _mm_mul_pd(m, _mm_set1_pd(EXP_LN2_LO)),
         );
-        let mut q = _mm_set1_pd(1.0 / 3_628_800.0);
-        for c in [
-            1.0 / 362_880.0,
-            1.0 / 40_320.0,
-            1.0 / 5_040.0,
-            1.0 / 720.0,
-            1.0 / 120.0,
-            1.0 / 24.0,
-            1.0 / 6.0,
-            0.5,
-            1.0,
-            1.0,
-        ] {
+        let mut q = _mm_set1_pd(EXP_POLY[0]);
+        for &c in &EXP_POLY[1..] {
             q = _mm_add_pd(_mm_mul_pd(q, r), _mm_set1_pd(c));
         }
         let bits = _mm_slli_epi64::<52>(_mm_add_epi64(_mm_castpd_si128(t), _mm_set1_epi64x(1023)));
