@@ -47,27 +47,9 @@ enum Command {
     Converge(cli::converge::ConvergeArgs),
 }
 
-/// Buffers of at least this many bytes are mapped and unmapped on their own.
-#[cfg(all(target_os = "linux", target_env = "gnu"))]
-const MMAP_THRESHOLD: libc::c_int = 128 << 10;
-
-/// Makes glibc return freed large buffers to the system: a fixed mmap threshold of 128 KiB
-/// (glibc's initial value; fixing it turns off the dynamic threshold). With the dynamic one, a buffer freed after the first
-/// iteration raises the threshold, later buffers of that size come from the heap, and the heap
-/// fragments: 40 Lloyd iterations on 10⁵ points peaked at 151 MiB for a 25 MiB working set
-/// (and the peak grew with the iterations), a convergence study of Lloyd sets at N = 16384
-/// 52 MiB for 10. The budget's memory estimates count working sets
-/// (`core::budget`), which this keeps the measured peak close to. Elsewhere a no-op.
-fn release_large_buffers() {
-    #[cfg(all(target_os = "linux", target_env = "gnu"))]
-    // SAFETY: mallopt only sets a tunable of the allocator, before any other thread exists.
-    unsafe {
-        libc::mallopt(libc::M_MMAP_THRESHOLD, MMAP_THRESHOLD);
-    }
-}
-
 fn main() -> ExitCode {
-    release_large_buffers();
+    // One-shot commands: peaks that match the budget's estimates (`engine::allocator`).
+    samplescope::engine::allocator::release_large_buffers();
     let cli = match Cli::try_parse() {
         Ok(c) => c,
         Err(e) if e.use_stderr() => {
@@ -104,6 +86,10 @@ fn main() -> ExitCode {
              would have no effect (give `render SCENE.ron` or `analyze --points FILE` instead)"
         );
         return ExitCode::from(2);
+    }
+    if cli.command.is_none() {
+        // The GUI: a slider change reuses the pages the last one freed (`engine::allocator`).
+        samplescope::engine::allocator::keep_freed_buffers();
     }
     let session = cli::session::Session::new(&cli.budget);
     if cli.command.is_some() {

@@ -20,6 +20,7 @@
 //! [`Evaluator::evaluate`] runs the same scheduler to completion on the calling thread
 //! (`samplescope render`, tests, benchmarks).
 
+pub mod allocator;
 pub mod animation;
 pub mod cache;
 mod disk;

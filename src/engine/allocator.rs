@@ -1,0 +1,83 @@
+//! How the process's allocator treats large freed buffers: two settings of glibc's `mallopt`
+//! for two kinds of process (elsewhere both are no-ops that report success).
+//!
+//! - A one-shot command (`points`, `analyze`, `render`, …) wants its peak memory to be its
+//!   working set, which the budget's estimates count ([`release_large_buffers`]).
+//! - The interactive app wants a slider change to reuse the pages the last change freed
+//!   ([`keep_freed_buffers`]): with every large buffer mapped and unmapped on its own, each
+//!   change faulted in and zeroed its 512² images afresh and unmapping the old ones cost TLB
+//!   shootdowns on every core; the default scene's picture p50 was 17.6–17.7 ms that way
+//!   against 10.5–11.9 ms with the buffers kept (BENCHMARKS.md, "Interactive update").
+
+/// Buffers of at least this many bytes are mapped and unmapped on their own in one-shot
+/// commands (glibc's initial value, fixed).
+pub const RELEASE_MMAP_THRESHOLD: usize = 128 << 10;
+
+/// The interactive app's mmap threshold: every buffer of one change (a 512² image of f64 is
+/// 2 MiB, the splat's sums 4 MiB) comes from the heap.
+pub const KEEP_MMAP_THRESHOLD: usize = 64 << 20;
+/// The free memory at the top of the heap the interactive app keeps instead of returning it.
+pub const KEEP_TRIM_THRESHOLD: usize = 256 << 20;
+/// What the interactive app's heap grows by at a time, so that a change's buffers do not
+/// each move the heap's end.
+pub const KEEP_TOP_PAD: usize = 64 << 20;
+
+/// Makes glibc return freed large buffers to the system: a fixed mmap threshold of 128 KiB
+/// (glibc's initial value; fixing it turns off the dynamic threshold). With the dynamic one,
+/// a buffer freed after the first iteration raises the threshold, later buffers of that size
+/// come from the heap, and the heap fragments: 40 Lloyd iterations on 10⁵ points peaked at
+/// 151 MiB for a 25 MiB working set (and the peak grew with the iterations), a convergence
+/// study of Lloyd sets at N = 16384 52 MiB for 10. The budget's memory estimates count working
+/// sets (`core::budget`), which this keeps the measured peak close to. Call it before other
+/// threads start. Whether every setting was taken.
+pub fn release_large_buffers() -> bool {
+    set(&[(M_MMAP_THRESHOLD, RELEASE_MMAP_THRESHOLD)])
+}
+
+/// Makes glibc keep freed buffers for reuse, for the interactive app: buffers up to
+/// [`KEEP_MMAP_THRESHOLD`] come from the heap, which grows by [`KEEP_TOP_PAD`] and gives back
+/// only more than [`KEEP_TRIM_THRESHOLD`] of free memory at its top. A slider change then
+/// writes into the pages the last one freed. The cost is memory held: at most the pad and the
+/// trim threshold beyond the app's working set. Call it before other threads start. Whether
+/// every setting was taken.
+pub fn keep_freed_buffers() -> bool {
+    set(&[
+        (M_MMAP_THRESHOLD, KEEP_MMAP_THRESHOLD),
+        (M_TRIM_THRESHOLD, KEEP_TRIM_THRESHOLD),
+        (M_TOP_PAD, KEEP_TOP_PAD),
+    ])
+}
+
+#[cfg(all(target_os = "linux", target_env = "gnu"))]
+use libc::{M_MMAP_THRESHOLD, M_TOP_PAD, M_TRIM_THRESHOLD};
+#[cfg(not(all(target_os = "linux", target_env = "gnu")))]
+const M_MMAP_THRESHOLD: i32 = 0;
+#[cfg(not(all(target_os = "linux", target_env = "gnu")))]
+const M_TRIM_THRESHOLD: i32 = 0;
+#[cfg(not(all(target_os = "linux", target_env = "gnu")))]
+const M_TOP_PAD: i32 = 0;
+
+#[cfg(all(target_os = "linux", target_env = "gnu"))]
+fn set(settings: &[(libc::c_int, usize)]) -> bool {
+    settings.iter().all(|&(param, value)| {
+        let value = libc::c_int::try_from(value).unwrap_or(libc::c_int::MAX);
+        // SAFETY: mallopt only sets a tunable of the allocator (it takes the arena lock).
+        unsafe { libc::mallopt(param, value) == 1 }
+    })
+}
+
+#[cfg(not(all(target_os = "linux", target_env = "gnu")))]
+fn set(_: &[(i32, usize)]) -> bool {
+    true
+}
+
+#[cfg(test)]
+mod tests {
+    /// glibc takes every setting of both kinds (mallopt returns 1 for each). The app's come
+    /// last: this test process then keeps freed buffers, which no test in it measures.
+    #[test]
+    fn both_settings_are_taken() {
+        assert!(super::release_large_buffers());
+        assert!(super::keep_freed_buffers());
+    }
+}
