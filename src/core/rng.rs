@@ -52,6 +52,13 @@ impl Rng {
     #[inline]
     pub fn next_u64(&mut self) -> u64 {
         let result = self.s[1].wrapping_mul(5).rotate_left(7).wrapping_mul(9);
+        self.advance();
+        result
+    }
+
+    /// The state update of xoshiro256** (one step of the stream).
+    #[inline(always)]
+    fn advance(&mut self) {
         let t = self.s[1] << 17;
         self.s[2] ^= self.s[0];
         self.s[3] ^= self.s[1];
@@ -59,7 +66,6 @@ impl Rng {
         self.s[0] ^= self.s[3];
         self.s[2] ^= t;
         self.s[3] = self.s[3].rotate_left(45);
-        result
     }
 
     /// Next 32 random bits.
@@ -79,13 +85,7 @@ impl Rng {
     #[inline]
     pub fn skip(&mut self, count: u64) {
         for _ in 0..count {
-            let t = self.s[1] << 17;
-            self.s[2] ^= self.s[0];
-            self.s[3] ^= self.s[1];
-            self.s[1] ^= self.s[2];
-            self.s[0] ^= self.s[3];
-            self.s[2] ^= t;
-            self.s[3] = self.s[3].rotate_left(45);
+            self.advance();
         }
     }
 
