@@ -271,50 +271,36 @@ pub fn statistics(points: &[DVec2], cancel: &Cancel) -> Result<Statistics, Metri
         },
     );
 
-    let (min_distance, min_distance_skipped) = match md {
-        Some(r) => {
-            let (md, d) = r?;
-            timings.push(("min distance", d));
-            (Some(md), None)
+    /// A stage that ran (its value; its wall time added to `timings` under `name`) or was
+    /// skipped (`why`).
+    fn stage<T>(
+        ran: Option<Result<(T, Duration), MetricsError>>,
+        name: &'static str,
+        timings: &mut Vec<(&'static str, Duration)>,
+        why: impl FnOnce() -> String,
+    ) -> Result<(Option<T>, Option<String>), MetricsError> {
+        match ran {
+            Some(r) => {
+                let (v, d) = r?;
+                timings.push((name, d));
+                Ok((Some(v), None))
+            }
+            None => Ok((None, Some(why()))),
         }
-        None => (
-            None,
-            Some(format!(
-                "a minimum distance needs at least 2 points, got n = {n}"
-            )),
-        ),
-    };
-
-    let (star, star_skipped) = match star {
-        Some(r) => {
-            let (s, d) = r?;
-            timings.push(("star discrepancy", d));
-            (Some(s), None)
-        }
-        None => (
-            None,
-            Some(format!(
-                "exact star discrepancy skipped: n = {n} > {STATISTICS_STAR_MAX_N} (its cost is O(N²))"
-            )),
-        ),
-    };
-
+    }
+    let (min_distance, min_distance_skipped) = stage(md, "min distance", &mut timings, || {
+        format!("a minimum distance needs at least 2 points, got n = {n}")
+    })?;
+    let (star, star_skipped) = stage(star, "star discrepancy", &mut timings, || {
+        format!(
+            "exact star discrepancy skipped: n = {n} > {STATISTICS_STAR_MAX_N} (its cost is O(N²))"
+        )
+    })?;
     let (l2_star, d) = l2?;
     timings.push(("L2-star discrepancy", d));
-
-    let (t_value, t_value_skipped) = match tv {
-        Some(r) => {
-            let (t, d) = r?;
-            timings.push(("t-value", d));
-            (Some(t), None)
-        }
-        None => (
-            None,
-            Some(format!(
-                "t-value skipped: n = {n} is not a power of 2 (nets in base 2 have 2^m points)"
-            )),
-        ),
-    };
+    let (t_value, t_value_skipped) = stage(tv, "t-value", &mut timings, || {
+        format!("t-value skipped: n = {n} is not a power of 2 (nets in base 2 have 2^m points)")
+    })?;
 
     Ok(Statistics {
         n,
