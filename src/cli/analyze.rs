@@ -717,7 +717,7 @@ pub fn mean_spectrum(spectra: &[&Arc<SpectrumData>]) -> Result<SpectrumData, Cli
     if let Some((_, v)) = stages.iter_mut().find(|(name, _)| name == "average") {
         *v += average_ms;
     }
-    compute::spectrum_data(&mean, stages).map_err(|e| CliError::Usage(e.to_string()))
+    compute::spectrum_data(Arc::new(mean), stages).map_err(|e| CliError::Usage(e.to_string()))
 }
 
 /// The `--spectrum` PNG: the scene's spectrum figure of column 0, published through

@@ -433,30 +433,55 @@ fn long_window_sums(t: &Transform, plan: &Plan, cancel: &Cancel) -> Result<Vec<f
     let f = taylor_f();
     let c = TAU * plan.dnu * dr;
     let mut planner = FftPlanner::<f64>::new();
-    for &(b0, b1) in &plan.blocks {
+    // The blocks' buffers, made once at the largest block's length and reused (fresh buffers
+    // of this size are page faults): the chirp, the inputs, and one row per power p.
+    let convolutions: Vec<_> = plan
+        .blocks
+        .iter()
+        .filter_map(|&b| plan.convolution(b).map(|conv| (b, conv)))
+        .collect();
+    let max_len = convolutions
+        .iter()
+        .map(|(_, (.., len))| *len)
+        .max()
+        .unwrap_or(0);
+    let max_lj = convolutions
+        .iter()
+        .map(|(_, (_, _, lj, _))| *lj)
+        .max()
+        .unwrap_or(0);
+    let mut kernel: Vec<Complex64> = Vec::with_capacity(max_len);
+    let mut inputs: Vec<Complex64> = Vec::with_capacity(f.len() * max_lj);
+    let mut outs: Vec<Complex64> = Vec::with_capacity(f.len() * max_len);
+    for &((b0, _), (j0, lk, lj, len)) in &convolutions {
         cancel.check()?;
-        let Some((j0, lk, lj, len)) = plan.convolution((b0, b1)) else {
-            continue;
-        };
         let k0 = k_of(b0);
         let fwd = planner.plan_fft_forward(len);
         let inv = planner.plan_fft_inverse(len);
+        let scratch_len = fwd
+            .get_inplace_scratch_len()
+            .max(inv.get_inplace_scratch_len());
         let cis = |half_turns: f64| {
             let (s, co) = (0.5 * c * half_turns).sin_cos();
             Complex64::new(co, s)
         };
         // The chirp e^{−iC d²/2} at d = κ − ι ∈ (−lj, lk).
-        let mut kernel = vec![Complex64::new(0.0, 0.0); len];
+        kernel.clear();
+        kernel.resize(len, Complex64::new(0.0, 0.0));
         for (d, h) in kernel.iter_mut().enumerate().take(lk) {
             *h = cis(-((d * d) as f64));
         }
         for d in 1..lj {
             kernel[len - d] = cis(-((d * d) as f64));
         }
-        fwd.process(&mut kernel);
+        fwd.process_with_scratch(
+            &mut kernel,
+            &mut vec![Complex64::new(0.0, 0.0); scratch_len],
+        );
         // The inputs a_j j^{−½} z_j^p e^{iC(K₀ι + ι²/2)}, j = j0 + ι, z_j = j0/j, one row
         // per power p.
-        let mut inputs = vec![Complex64::new(0.0, 0.0); f.len() * lj];
+        inputs.clear();
+        inputs.resize(f.len() * lj, Complex64::new(0.0, 0.0));
         for i in 0..lj {
             let j = j0 + i;
             let z = j0 as f64 / j as f64;
@@ -466,30 +491,32 @@ fn long_window_sums(t: &Transform, plan: &Plan, cancel: &Cancel) -> Result<Vec<f
                 v *= z;
             }
         }
-        let outs: Vec<Vec<Complex64>> = (0..f.len())
-            .into_par_iter()
-            .map(|p| {
+        // Row p: the chirp-z transform of input row p, its first lk values kept.
+        outs.clear();
+        outs.resize(f.len() * len, Complex64::new(0.0, 0.0));
+        let (kernel, inputs) = (&kernel, &inputs);
+        outs.par_chunks_mut(len).enumerate().try_for_each_init(
+            || vec![Complex64::new(0.0, 0.0); scratch_len],
+            |scratch, (p, buf)| {
                 cancel.check()?;
-                let mut buf = vec![Complex64::new(0.0, 0.0); len];
                 buf[..lj].copy_from_slice(&inputs[p * lj..(p + 1) * lj]);
-                fwd.process(&mut buf);
-                for (x, h) in buf.iter_mut().zip(&kernel) {
+                fwd.process_with_scratch(buf, scratch);
+                for (x, h) in buf.iter_mut().zip(kernel) {
                     *x *= h;
                 }
-                inv.process(&mut buf);
-                buf.truncate(lk);
+                inv.process_with_scratch(buf, scratch);
                 let scale = 1.0 / len as f64;
-                buf.iter_mut().for_each(|x| *x *= scale);
-                Ok(buf)
-            })
-            .collect::<Result<_, MetricsError>>()?;
+                buf[..lk].iter_mut().for_each(|x| *x *= scale);
+                Ok::<(), MetricsError>(())
+            },
+        )?;
         let rot = Complex64::new(FRAC_PI_4.cos(), -FRAC_PI_4.sin());
         for kappa in 0..lk {
             let ck = plan.u(k0 + kappa) * dr;
             let y = 3.0 / (ck * j0 as f64);
             let mut acc = Complex64::new(0.0, 0.0);
             for p in (0..f.len()).rev() {
-                acc = acc * y + f[p] * outs[p][kappa];
+                acc = acc * y + f[p] * outs[p * len + kappa];
             }
             let phase = cis((2 * (k0 * j0 + j0 * kappa) + kappa * kappa) as f64);
             sums[b0 + kappa] += (rot * phase * acc).re / ck.sqrt();

@@ -48,7 +48,10 @@ pub(in crate::scene) fn run(ctx: &JobCtx) -> Output {
     let n = scene.n;
     let shown = scene.prefix.unwrap_or(n);
     let mut on_progress = |p: Progress<'_, crate::core::spectrum::Spectrum>| {
-        if let Some(Ok(data)) = p.interim().map(|spec| spectrum_data(spec, Vec::new())) {
+        if let Some(Ok(data)) = p
+            .interim()
+            .map(|spec| spectrum_data(Arc::new(spec.clone()), Vec::new()))
+        {
             let accuracy = Accuracy::Realizations {
                 done: p.done,
                 of: p.total,
@@ -86,7 +89,7 @@ pub(in crate::scene) fn run(ctx: &JobCtx) -> Output {
             .map(|(name, d)| (name.to_string(), ms(*d)))
             .collect()
     };
-    let mut data = spectrum_data(&spec, stages(&report))?;
+    let mut data = spectrum_data(Arc::new(spec), stages(&report))?;
     let shown_accuracy = |accuracy: Accuracy| {
         Some(if imported && asked_k > 1 {
             Accuracy::ImportedOneRealization {
@@ -125,15 +128,20 @@ pub(in crate::scene) fn run(ctx: &JobCtx) -> Output {
 }
 
 /// The display data of a periodogram: log image, auto range, RAPS and anisotropy (a
-/// periodogram averaged elsewhere, `analyze`'s over files, is shown through it too).
+/// periodogram averaged elsewhere, `analyze`'s over files, is shown through it too). The
+/// spectrum is kept in the result as it is, not copied.
 pub fn spectrum_data(
-    spec: &crate::core::spectrum::Spectrum,
+    spec: Arc<crate::core::spectrum::Spectrum>,
     stages: Vec<(String, f64)>,
 ) -> Result<SpectrumData, crate::core::spectrum::SpectrumError> {
     let m = spec.m;
     let log = spec.to_display_image();
-    // The q-quantiles by selection (O(M²), the same elements a full sort would give).
-    let mut finite: Vec<f32> = log.iter().copied().filter(|v| v.is_finite()).collect();
+    // Row iy = ky − k_min: flip so that ky points up.
+    let image = ImageData::from_y_up(m, m, |i| log[i]);
+    // The q-quantiles by selection (O(M²), the same elements a full sort would give), in the
+    // log buffer itself once the image is made.
+    let mut finite = log;
+    finite.retain(|v| v.is_finite());
     let mut pick = |q: f64| {
         if finite.is_empty() {
             return 0.0;
@@ -143,7 +151,7 @@ pub fn spectrum_data(
     };
     let (lo, hi) = (pick(0.02), pick(0.998));
     let auto_range = (lo, hi.max(lo + 1e-3));
-    let bins = crate::core::spectrum::radial_average(spec)?;
+    let bins = crate::core::spectrum::radial_average(&spec)?;
     let raps = bins.iter().map(|b| [b.radius, b.mean_power]).collect();
     let anisotropy = bins
         .iter()
@@ -151,12 +159,11 @@ pub fn spectrum_data(
         .map(|b| [b.radius, b.anisotropy_db])
         .collect();
     Ok(SpectrumData {
-        // Row iy = ky − k_min: flip so that ky points up.
-        image: ImageData::from_y_up(m, m, |i| log[i]),
+        image,
         auto_range,
         raps,
         anisotropy,
         stages,
-        power: Arc::new(spec.clone()),
+        power: spec,
     })
 }
