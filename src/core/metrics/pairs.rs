@@ -274,10 +274,15 @@ impl Grid<'_> {
             .chunks(LANES)
             .zip(self.ys[lo..hi].chunks(LANES))
         {
+            // A full set of lanes (a short last one padded with p itself, not binned), so
+            // that the loop below has a fixed length and is vectorised.
+            let (mut x, mut y) = ([px; LANES], [py; LANES]);
+            x[..qx.len()].copy_from_slice(qx);
+            y[..qy.len()].copy_from_slice(qy);
             let mut d2 = [0.0f64; LANES];
             let mut q = [0.0f64; LANES];
-            for l in 0..qx.len() {
-                d2[l] = torus::distance_squared(p, DVec2::new(qx[l], qy[l]), 1.0);
+            for l in 0..LANES {
+                d2[l] = torus::distance_squared(p, DVec2::new(x[l], y[l]), 1.0);
                 q[l] = d2[l].sqrt() / self.dr;
             }
             for l in 0..qx.len() {

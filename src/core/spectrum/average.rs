@@ -1,7 +1,7 @@
 //! Spectrum requests: one periodogram or the average of K realizations, with a report of
 //! what each stage cost and how accurate the result is.
 
-use super::dft::{exact_field_rows, periodogram_exact};
+use super::dft::{exact_field_few_rows, periodogram_exact};
 use super::nufft::{KernelParams, NufftPlan};
 use super::{
     check_points, check_size, k_min, ratio_of_norms, relative_l2_error, Spectrum, SpectrumError,
@@ -494,7 +494,7 @@ impl PendingCheck {
                 }))
             }
             Some(CheckedPart::Rows { ky, power }) => {
-                let field = exact_field_rows(points, k0, m, ky, cancel)?;
+                let field = exact_field_few_rows(points, k0, m, ky, cancel)?;
                 let inv_n = 1.0 / n as f64;
                 let (mut num, mut den) = (0.0f64, 0.0f64);
                 for (r, &kyr) in ky.iter().enumerate() {

@@ -62,7 +62,7 @@ pub use average::{
     average_periodogram_staged, DcMode, ErrorCheck, Method, PendingCheck, SpectrumReport,
     SpectrumRequest, DEFAULT_ERROR_CHECK_BUDGET,
 };
-pub use dft::{exact_field_rows, periodogram_exact, periodogram_naive};
+pub use dft::{exact_field_few_rows, exact_field_rows, periodogram_exact, periodogram_naive};
 pub use nufft::{
     es_kernel, kernel_params, kernel_transform, periodogram_nufft, upsampled_size, KernelParams,
     NufftPlan, NufftTimes, MAX_TOLERANCE, MIN_TOLERANCE,
