@@ -47,6 +47,11 @@ enum Command {
     Converge(cli::converge::ConvergeArgs),
 }
 
+/// glibc's malloc, with one-shot commands' large buffers on huge pages (`engine::allocator`).
+#[global_allocator]
+static ALLOCATOR: samplescope::engine::allocator::Allocator =
+    samplescope::engine::allocator::Allocator;
+
 fn main() -> ExitCode {
     // One-shot commands: peaks that match the budget's estimates (`engine::allocator`).
     samplescope::engine::allocator::release_large_buffers();

@@ -9,6 +9,9 @@
 //!   shootdowns on every core; the default scene's picture p50 was 17.6–17.7 ms that way
 //!   against 10.5–11.9 ms with the buffers kept (BENCHMARKS.md, "Interactive update").
 
+use std::alloc::{GlobalAlloc, Layout, System};
+use std::sync::atomic::{AtomicBool, Ordering};
+
 /// Buffers of at least this many bytes are mapped and unmapped on their own in one-shot
 /// commands (glibc's initial value, fixed).
 pub const RELEASE_MMAP_THRESHOLD: usize = 128 << 10;
@@ -31,8 +34,102 @@ pub const KEEP_TOP_PAD: usize = 64 << 20;
 /// sets (`core::budget`), which this keeps the measured peak close to. Call it before other
 /// threads start. Whether every setting was taken.
 pub fn release_large_buffers() -> bool {
+    HUGE_PAGES.store(true, Ordering::Relaxed);
     set(&[(M_MMAP_THRESHOLD, RELEASE_MMAP_THRESHOLD)])
 }
+
+/// The size of a transparent huge page on x86-64 and aarch64 (4 KiB base pages).
+pub const HUGE_PAGE: usize = 2 << 20;
+
+/// Whether buffers of [`HUGE_PAGE`] bytes or more are placed on huge-page boundaries and
+/// advised as huge pages ([`Allocator`]); set by [`release_large_buffers`].
+static HUGE_PAGES: AtomicBool = AtomicBool::new(false);
+
+/// The process's allocator: the system's (glibc's malloc, set by the functions above), except
+/// that in one-shot commands a buffer of [`HUGE_PAGE`] bytes or more starts on a huge-page
+/// boundary and is advised as huge pages (`madvise(MADV_HUGEPAGE)`), so that the kernel maps
+/// it 2 MiB at a time where transparent huge pages are offered (`enabled` = `madvise` or
+/// `always`) instead of taking one page fault per 4 KiB. A one-shot command's large buffers
+/// are each mapped afresh (the 128 KiB threshold), and their page faults were a fifth of
+/// `analyze`'s time (BENCHMARKS.md). Elsewhere, or where the kernel has no huge pages, it is
+/// glibc's malloc unchanged. Memory is freed by `free` either way.
+pub struct Allocator;
+
+impl Allocator {
+    fn huge(size: usize) -> bool {
+        size >= HUGE_PAGE && HUGE_PAGES.load(Ordering::Relaxed)
+    }
+}
+
+// SAFETY: every block comes from `System` with at least the requested alignment and size;
+// `System::dealloc` frees any of them whatever its alignment (`free`), so a block allocated
+// huge and freed (or grown) with the caller's layout is freed correctly.
+unsafe impl GlobalAlloc for Allocator {
+    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
+        if !Self::huge(layout.size()) {
+            return unsafe { System.alloc(layout) };
+        }
+        // SAFETY: the size is the caller's (non-zero, fits isize with this power-of-two
+        // alignment: HUGE_PAGE is far below isize::MAX − size for any size the caller could
+        // have made a Layout of, else from_size_align fails and we return null).
+        let Ok(aligned) = Layout::from_size_align(layout.size(), layout.align().max(HUGE_PAGE))
+        else {
+            return std::ptr::null_mut();
+        };
+        let p = unsafe { System.alloc(aligned) };
+        if !p.is_null() {
+            advise_huge(p, layout.size());
+        }
+        p
+    }
+
+    unsafe fn alloc_zeroed(&self, layout: Layout) -> *mut u8 {
+        if !Self::huge(layout.size()) {
+            return unsafe { System.alloc_zeroed(layout) };
+        }
+        // Advised before it is zeroed, so that zeroing faults in huge pages.
+        let p = unsafe { self.alloc(layout) };
+        if !p.is_null() {
+            unsafe { std::ptr::write_bytes(p, 0, layout.size()) };
+        }
+        p
+    }
+
+    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
+        unsafe { System.dealloc(ptr, layout) }
+    }
+
+    unsafe fn realloc(&self, ptr: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
+        if !Self::huge(new_size) {
+            return unsafe { System.realloc(ptr, layout, new_size) };
+        }
+        // SAFETY (of the layout): the caller guarantees new_size with this alignment is valid.
+        let new_layout = unsafe { Layout::from_size_align_unchecked(new_size, layout.align()) };
+        let new = unsafe { self.alloc(new_layout) };
+        if !new.is_null() {
+            // SAFETY: both blocks are valid for the smaller size and do not overlap.
+            unsafe {
+                std::ptr::copy_nonoverlapping(ptr, new, layout.size().min(new_size));
+                System.dealloc(ptr, layout);
+            }
+        }
+        new
+    }
+}
+
+/// Asks the kernel to back `len` bytes at `p` (on a huge-page boundary) with huge pages. A
+/// hint: where it is refused (no transparent huge pages) nothing changes.
+#[cfg(target_os = "linux")]
+fn advise_huge(p: *mut u8, len: usize) {
+    // SAFETY: [p, p + len) is memory this process just allocated; MADV_HUGEPAGE changes no
+    // contents, only how pages not yet touched are mapped.
+    unsafe {
+        libc::madvise(p.cast(), len, libc::MADV_HUGEPAGE);
+    }
+}
+
+#[cfg(not(target_os = "linux"))]
+fn advise_huge(_: *mut u8, _: usize) {}
 
 /// Makes glibc keep freed buffers for reuse, for the interactive app: buffers up to
 /// [`KEEP_MMAP_THRESHOLD`] come from the heap, which grows by [`KEEP_TOP_PAD`] and gives back
