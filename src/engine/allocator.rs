@@ -1,5 +1,7 @@
-//! How the process's allocator treats large freed buffers: two settings of glibc's `mallopt`
-//! for two kinds of process (elsewhere both are no-ops that report success).
+//! How the process's allocator treats large buffers: two settings of glibc's `mallopt` for
+//! two kinds of process (elsewhere both are no-ops that report success), and the global
+//! allocator [`Allocator`], which in one-shot commands puts buffers of 2 MiB or more on huge
+//! pages.
 //!
 //! - A one-shot command (`points`, `analyze`, `render`, …) wants its peak memory to be its
 //!   working set, which the budget's estimates count ([`release_large_buffers`]).
@@ -66,12 +68,44 @@ impl Allocator {
 // huge and freed (or grown) with the caller's layout is freed correctly.
 unsafe impl GlobalAlloc for Allocator {
     unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
-        if !Self::huge(layout.size()) {
-            return unsafe { System.alloc(layout) };
+        if Self::huge(layout.size()) {
+            unsafe { huge::alloc(layout) }
+        } else {
+            unsafe { System.alloc(layout) }
         }
-        // SAFETY: the size is the caller's (non-zero, fits isize with this power-of-two
-        // alignment: HUGE_PAGE is far below isize::MAX − size for any size the caller could
-        // have made a Layout of, else from_size_align fails and we return null).
+    }
+
+    unsafe fn alloc_zeroed(&self, layout: Layout) -> *mut u8 {
+        if Self::huge(layout.size()) {
+            unsafe { huge::alloc_zeroed(layout) }
+        } else {
+            unsafe { System.alloc_zeroed(layout) }
+        }
+    }
+
+    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
+        unsafe { System.dealloc(ptr, layout) }
+    }
+
+    unsafe fn realloc(&self, ptr: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
+        if Self::huge(new_size) {
+            unsafe { huge::realloc(ptr, layout, new_size) }
+        } else {
+            unsafe { System.realloc(ptr, layout, new_size) }
+        }
+    }
+}
+
+/// [`Allocator`]'s forms for a buffer of [`HUGE_PAGE`] bytes or more (the caller's contracts
+/// of `GlobalAlloc`). Their blocks are freed by `System::dealloc`.
+mod huge {
+    use super::{advise_huge, HUGE_PAGE};
+    use std::alloc::{GlobalAlloc, Layout, System};
+
+    /// A block on a huge-page boundary, advised as huge pages.
+    pub(super) unsafe fn alloc(layout: Layout) -> *mut u8 {
+        // A larger power-of-two alignment for the same size: refused (null) only where the
+        // size rounded up to it would pass isize::MAX.
         let Ok(aligned) = Layout::from_size_align(layout.size(), layout.align().max(HUGE_PAGE))
         else {
             return std::ptr::null_mut();
@@ -83,29 +117,22 @@ unsafe impl GlobalAlloc for Allocator {
         p
     }
 
-    unsafe fn alloc_zeroed(&self, layout: Layout) -> *mut u8 {
-        if !Self::huge(layout.size()) {
-            return unsafe { System.alloc_zeroed(layout) };
-        }
-        // Advised before it is zeroed, so that zeroing faults in huge pages.
-        let p = unsafe { self.alloc(layout) };
+    /// [`alloc`], zeroed after the advice, so that zeroing faults in huge pages.
+    pub(super) unsafe fn alloc_zeroed(layout: Layout) -> *mut u8 {
+        let p = unsafe { alloc(layout) };
         if !p.is_null() {
+            // SAFETY: the block is valid for layout.size() bytes.
             unsafe { std::ptr::write_bytes(p, 0, layout.size()) };
         }
         p
     }
 
-    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
-        unsafe { System.dealloc(ptr, layout) }
-    }
-
-    unsafe fn realloc(&self, ptr: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
-        if !Self::huge(new_size) {
-            return unsafe { System.realloc(ptr, layout, new_size) };
-        }
+    /// A new block of [`alloc`] with the old one's contents (up to the smaller size); the old
+    /// one is freed.
+    pub(super) unsafe fn realloc(ptr: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
         // SAFETY (of the layout): the caller guarantees new_size with this alignment is valid.
         let new_layout = unsafe { Layout::from_size_align_unchecked(new_size, layout.align()) };
-        let new = unsafe { self.alloc(new_layout) };
+        let new = unsafe { alloc(new_layout) };
         if !new.is_null() {
             // SAFETY: both blocks are valid for the smaller size and do not overlap.
             unsafe {
@@ -138,6 +165,7 @@ fn advise_huge(_: *mut u8, _: usize) {}
 /// trim threshold beyond the app's working set. Call it before other threads start. Whether
 /// every setting was taken.
 pub fn keep_freed_buffers() -> bool {
+    HUGE_PAGES.store(false, Ordering::Relaxed);
     set(&[
         (M_MMAP_THRESHOLD, KEEP_MMAP_THRESHOLD),
         (M_TRIM_THRESHOLD, KEEP_TRIM_THRESHOLD),
@@ -172,6 +200,38 @@ fn set(_: &[(i32, usize)]) -> bool {
 mod tests {
     /// glibc takes every setting of both kinds (mallopt returns 1 for each). The app's come
     /// last: this test process then keeps freed buffers, which no test in it measures.
+    /// A huge block starts on a huge-page boundary; the zeroed one is zero; growing and
+    /// shrinking keep the contents; every block is freed by `System` (as `Allocator` frees).
+    #[test]
+    fn huge_blocks_are_aligned_zeroed_and_keep_their_contents() {
+        use super::{huge, HUGE_PAGE};
+        use std::alloc::{GlobalAlloc, Layout, System};
+        let size = 3 * HUGE_PAGE + 123;
+        let layout = Layout::from_size_align(size, 8).unwrap();
+        // SAFETY: every block is used within its size and freed once with its layout.
+        unsafe {
+            let p = huge::alloc_zeroed(layout);
+            assert!(!p.is_null());
+            assert_eq!(p as usize % HUGE_PAGE, 0);
+            let block = std::slice::from_raw_parts_mut(p, size);
+            assert!(block.iter().all(|&b| b == 0));
+            for (i, b) in block.iter_mut().enumerate() {
+                *b = (i % 251) as u8;
+            }
+            let q = huge::realloc(p, layout, 5 * HUGE_PAGE);
+            assert!(!q.is_null() && q as usize % HUGE_PAGE == 0);
+            let grown = std::slice::from_raw_parts(q, size);
+            assert!(grown.iter().enumerate().all(|(i, &b)| b == (i % 251) as u8));
+            let big = Layout::from_size_align(5 * HUGE_PAGE, 8).unwrap();
+            let r = System.realloc(q, big, 1000);
+            assert!((0..1000).all(|i| *r.add(i) == (i % 251) as u8));
+            System.dealloc(r, Layout::from_size_align(1000, 8).unwrap());
+            let a = huge::alloc(Layout::from_size_align(HUGE_PAGE, 64).unwrap());
+            assert!(!a.is_null() && a as usize % HUGE_PAGE == 0);
+            System.dealloc(a, Layout::from_size_align(HUGE_PAGE, 64).unwrap());
+        }
+    }
+
     #[test]
     fn both_settings_are_taken() {
         assert!(super::release_large_buffers());
