@@ -265,8 +265,9 @@ impl Spectrum {
     /// P(0) = N neither dominates the colour scale nor leaves a hole (a hand-built spectrum whose
     /// `power` is not m² long is converted without masking).
     pub fn to_log_image(&self, dc_masked: bool) -> Vec<f32> {
+        use rayon::prelude::*;
         let to_log = |p: f64| p.max(LOG_FLOOR).log10() as f32;
-        let mut image: Vec<f32> = self.power.iter().map(|&p| to_log(p)).collect();
+        let mut image: Vec<f32> = self.power.par_iter().map(|&p| to_log(p)).collect();
         if dc_masked && self.power.len() == self.m * self.m {
             let m = self.m;
             let c = m / 2;

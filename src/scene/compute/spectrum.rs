@@ -127,6 +127,11 @@ pub(in crate::scene) fn run(ctx: &JobCtx) -> Output {
     ))
 }
 
+/// The rank of the q-quantile among `len` sorted values (the one the display range uses).
+fn quantile_rank(len: usize, q: f64) -> usize {
+    ((len - 1) as f64 * q) as usize
+}
+
 /// The display data of a periodogram: log image, auto range, RAPS and anisotropy (a
 /// periodogram averaged elsewhere, `analyze`'s over files, is shown through it too). The
 /// spectrum is kept in the result as it is, not copied.
@@ -135,23 +140,38 @@ pub fn spectrum_data(
     stages: Vec<(String, f64)>,
 ) -> Result<SpectrumData, crate::core::spectrum::SpectrumError> {
     let m = spec.m;
-    let log = spec.to_display_image();
-    // Row iy = ky − k_min: flip so that ky points up.
-    let image = ImageData::from_y_up(m, m, |i| log[i]);
-    // The q-quantiles by selection (O(M²), the same elements a full sort would give), in the
-    // log buffer itself once the image is made.
-    let mut finite = log;
-    finite.retain(|v| v.is_finite());
-    let mut pick = |q: f64| {
-        if finite.is_empty() {
-            return 0.0;
-        }
-        let i = ((finite.len() - 1) as f64 * q) as usize;
-        *finite.select_nth_unstable_by(i, |a, b| a.total_cmp(b)).1
-    };
-    let (lo, hi) = (pick(0.02), pick(0.998));
-    let auto_range = (lo, hi.max(lo + 1e-3));
-    let bins = crate::core::spectrum::radial_average(&spec)?;
+    // The display image and its range beside the radial average (both read the periodogram).
+    let ((image, auto_range), bins) = rayon::join(
+        || {
+            let log = spec.to_display_image();
+            // Row iy = ky − k_min: flip so that ky points up.
+            let image = ImageData::from_y_up(m, m, |i| log[i]);
+            // The 2% and 99.8% quantiles by selection (O(M²), the elements a full sort would
+            // give), in the log buffer itself once the image is made: the second one among
+            // the values above the first.
+            let mut finite = log;
+            finite.retain(|v| v.is_finite());
+            let auto_range = match finite.len() {
+                0 => (0.0, 1e-3),
+                len => {
+                    let (i_lo, i_hi) = (quantile_rank(len, 0.02), quantile_rank(len, 0.998));
+                    let (_, &mut lo, above) =
+                        finite.select_nth_unstable_by(i_lo, |a, b| a.total_cmp(b));
+                    let hi = if i_hi == i_lo {
+                        lo
+                    } else {
+                        *above
+                            .select_nth_unstable_by(i_hi - i_lo - 1, |a, b| a.total_cmp(b))
+                            .1
+                    };
+                    (lo, hi.max(lo + 1e-3))
+                }
+            };
+            (image, auto_range)
+        },
+        || crate::core::spectrum::radial_average(&spec),
+    );
+    let bins = bins?;
     let raps = bins.iter().map(|b| [b.radius, b.mean_power]).collect();
     let anisotropy = bins
         .iter()
