@@ -124,6 +124,17 @@ pub(crate) fn pair_counts(
     dr: f64,
     cancel: &Cancel,
 ) -> Result<Vec<u64>, MetricsError> {
+    grid_pair_counts(points, bins, dr, cancel, true)
+}
+
+/// [`pair_counts`], with the AVX2 forms where the CPU has them (`simd`) or the scalar forms.
+fn grid_pair_counts(
+    points: &[DVec2],
+    bins: usize,
+    dr: f64,
+    cancel: &Cancel,
+    simd: bool,
+) -> Result<Vec<u64>, MetricsError> {
     let n = points.len();
     // Every counted distance is below `radius` (a margin over bins·Δr for the rounding of
     // d/Δr; the bin decides).
@@ -168,7 +179,13 @@ pub(crate) fn pair_counts(
     };
     let partial: Vec<Vec<u64>> = (0..chunks)
         .into_par_iter()
-        .map(|chunk| grid.chunk_dispatch(chunk, chunks, cancel))
+        .map(|chunk| {
+            if simd {
+                grid.chunk_dispatch(chunk, chunks, cancel)
+            } else {
+                grid.chunk::<false>(chunk, chunks, cancel)
+            }
+        })
         .collect::<Result<_, MetricsError>>()?;
     Ok(merge(partial, bins))
 }
@@ -187,7 +204,9 @@ struct Grid<'a> {
 }
 
 /// Candidates whose distances are computed together before they are binned.
-const LANES: usize = 8;
+const LANES: usize = 4;
+/// Histograms each chunk counts into (see [`Grid::chunk`]).
+const SUBS: usize = 4;
 
 impl Grid<'_> {
     /// [`Grid::chunk`] compiled for AVX2 when the CPU has it (4 f64 lanes for the root and
@@ -206,7 +225,7 @@ impl Grid<'_> {
                 return unsafe { self.chunk_avx2(chunk, chunks, cancel) };
             }
         }
-        self.chunk(chunk, chunks, cancel)
+        self.chunk::<false>(chunk, chunks, cancel)
     }
 
     #[cfg(target_arch = "x86_64")]
@@ -217,21 +236,24 @@ impl Grid<'_> {
         chunks: usize,
         cancel: &Cancel,
     ) -> Result<Vec<u64>, MetricsError> {
-        self.chunk(chunk, chunks, cancel)
+        self.chunk::<true>(chunk, chunks, cancel)
     }
 
     /// The histogram of the pairs whose first point lies in the cell rows `chunk`,
     /// `chunk + chunks`, …: each point against the rest of its cell and the cells of the half
     /// stencil.
     #[inline(always)]
-    fn chunk(
+    fn chunk<const AVX2: bool>(
         &self,
         chunk: usize,
         chunks: usize,
         cancel: &Cancel,
     ) -> Result<Vec<u64>, MetricsError> {
         let (g, start) = (self.g, self.start);
-        let mut h = vec![0u64; self.bins];
+        // SUBS histograms of bins + 1 counts (the last one takes the pairs out of range), lane
+        // l counting into histogram l mod SUBS: no branch per pair, and consecutive pairs at
+        // the same distance do not wait on each other's increment. Added up at the end.
+        let mut h = vec![0u64; SUBS * (self.bins + 1)];
         for cy in (chunk..g).step_by(chunks) {
             cancel.check()?;
             for cx in 0..g {
@@ -239,7 +261,7 @@ impl Grid<'_> {
                 for i in start[c]..start[c + 1] {
                     let (px, py) = (self.xs[i], self.ys[i]);
                     // Pairs within the cell.
-                    self.count(px, py, i + 1, start[c + 1], &mut h);
+                    self.count::<AVX2>(px, py, i + 1, start[c + 1], &mut h);
                     for &(b, a) in self.rows {
                         let row = ((cy + b) % g) * g;
                         // Columns cx + lo … cx + a (mod g): at most two runs of cells.
@@ -250,45 +272,137 @@ impl Grid<'_> {
                         };
                         let (first, last) = (lo % g, hi % g);
                         if first <= last {
-                            self.count(px, py, start[row + first], start[row + last + 1], &mut h);
+                            self.count::<AVX2>(
+                                px,
+                                py,
+                                start[row + first],
+                                start[row + last + 1],
+                                &mut h,
+                            );
                         } else {
-                            self.count(px, py, start[row + first], start[row + g], &mut h);
-                            self.count(px, py, start[row], start[row + last + 1], &mut h);
+                            self.count::<AVX2>(px, py, start[row + first], start[row + g], &mut h);
+                            self.count::<AVX2>(px, py, start[row], start[row + last + 1], &mut h);
                         }
                     }
                 }
             }
         }
-        Ok(h)
+        let mut counts = vec![0u64; self.bins];
+        for sub in h.chunks(self.bins + 1) {
+            for (c, v) in counts.iter_mut().zip(sub) {
+                *c += v;
+            }
+        }
+        Ok(counts)
     }
 
     /// Counts the pairs of (px, py) with the points `lo .. hi` in `h`: d² by
     /// [`torus::distance_squared`] and the bin by [`bin_of`] (of d² < r² only), as the
-    /// all-pairs loop does. The d² and √d²/Δr of `LANES` candidates are computed first, with
-    /// no branch, so that the root and the division run in vector lanes.
+    /// all-pairs loop does. The d² and √d²/Δr of `LANES` candidates are computed first, read
+    /// straight from the sorted coordinates with no branch, so that the root and the division
+    /// run in vector lanes; the last `< LANES` candidates one by one.
     #[inline(always)]
-    fn count(&self, px: f64, py: f64, lo: usize, hi: usize, h: &mut [u64]) {
+    fn count<const AVX2: bool>(&self, px: f64, py: f64, lo: usize, hi: usize, h: &mut [u64]) {
         let p = DVec2::new(px, py);
-        let bins = self.bins as f64;
-        for (qx, qy) in self.xs[lo..hi]
-            .chunks(LANES)
-            .zip(self.ys[lo..hi].chunks(LANES))
-        {
-            // A full set of lanes (a short last one padded with p itself, not binned), so
-            // that the loop below has a fixed length and is vectorised.
-            let (mut x, mut y) = ([px; LANES], [py; LANES]);
-            x[..qx.len()].copy_from_slice(qx);
-            y[..qy.len()].copy_from_slice(qy);
-            let mut d2 = [0.0f64; LANES];
-            let mut q = [0.0f64; LANES];
+        let (bins, stride) = (self.bins as f64, self.bins + 1);
+        // bin_of(√d², Δr, bins): ⌊q⌋ for q < bins (and d² < r²), else the spare count.
+        let bin = |d2: f64, q: f64| {
+            if d2 < self.r2 && q < bins {
+                q as usize
+            } else {
+                self.bins
+            }
+        };
+        let (xs, ys) = (&self.xs[lo..hi], &self.ys[lo..hi]);
+        let (mut cx, mut cy) = (xs.chunks_exact(LANES), ys.chunks_exact(LANES));
+        #[cfg(target_arch = "x86_64")]
+        if AVX2 {
+            for (qx, qy) in (&mut cx).zip(&mut cy) {
+                // SAFETY: AVX2 is checked by the caller (`chunk_dispatch`).
+                let b = unsafe { self.bins_avx2(px, py, qx, qy) };
+                for (l, &b) in b.iter().enumerate() {
+                    h[(l % SUBS) * stride + b as usize] += 1;
+                }
+            }
+        }
+        for (qx, qy) in (&mut cx).zip(&mut cy) {
+            let (mut d2, mut q) = ([0.0f64; LANES], [0.0f64; LANES]);
             for l in 0..LANES {
-                d2[l] = torus::distance_squared(p, DVec2::new(x[l], y[l]), 1.0);
+                d2[l] = torus::distance_squared(p, DVec2::new(qx[l], qy[l]), 1.0);
                 q[l] = d2[l].sqrt() / self.dr;
             }
-            for l in 0..qx.len() {
-                // bin_of(√d², Δr, bins): ⌊q⌋ for q < bins.
-                if d2[l] < self.r2 && q[l] < bins {
-                    h[q[l] as usize] += 1;
+            for l in 0..LANES {
+                h[(l % SUBS) * stride + bin(d2[l], q[l])] += 1;
+            }
+        }
+        for (&qx, &qy) in cx.remainder().iter().zip(cy.remainder()) {
+            let d2 = torus::distance_squared(p, DVec2::new(qx, qy), 1.0);
+            h[bin(d2, d2.sqrt() / self.dr)] += 1;
+        }
+    }
+
+    /// The bins of four candidates (`bins` for one out of range) by AVX2: the same IEEE
+    /// operations as [`torus::distance_squared`] and [`bin_of`] (|a − b|, the smaller of it and
+    /// 1 − it, dx² + dy², √, ÷ Δr, truncation), lane by lane, so the same bins.
+    ///
+    /// # Safety
+    /// The CPU must have AVX2; `qx` and `qy` hold `LANES` = 4 values.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    unsafe fn bins_avx2(&self, px: f64, py: f64, qx: &[f64], qy: &[f64]) -> [i32; LANES] {
+        use std::arch::x86_64::*;
+        debug_assert!(qx.len() == LANES && qy.len() == LANES);
+        let gap = |a: __m256d, b: __m256d| {
+            // |a − b| by clearing the sign bit, then d < 1 − d ? d : 1 − d (min_pd returns
+            // its first operand exactly when it is the smaller).
+            let d = _mm256_andnot_pd(_mm256_set1_pd(-0.0), _mm256_sub_pd(a, b));
+            _mm256_min_pd(d, _mm256_sub_pd(_mm256_set1_pd(1.0), d))
+        };
+        // SAFETY: 4 f64 are read from each slice (checked by the caller's chunks_exact).
+        let (x, y) = unsafe { (_mm256_loadu_pd(qx.as_ptr()), _mm256_loadu_pd(qy.as_ptr())) };
+        let (dx, dy) = (gap(_mm256_set1_pd(px), x), gap(_mm256_set1_pd(py), y));
+        let d2 = _mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy));
+        let q = _mm256_div_pd(_mm256_sqrt_pd(d2), _mm256_set1_pd(self.dr));
+        let inside = _mm256_and_pd(
+            _mm256_cmp_pd::<_CMP_LT_OQ>(d2, _mm256_set1_pd(self.r2)),
+            _mm256_cmp_pd::<_CMP_LT_OQ>(q, _mm256_set1_pd(self.bins as f64)),
+        );
+        // Out of range: the spare count's index (q itself may not fit an i32 there).
+        let q = _mm256_blendv_pd(_mm256_set1_pd(self.bins as f64), q, inside);
+        let mut out = [0i32; LANES];
+        // SAFETY: 4 i32 are written to a [i32; 4].
+        unsafe {
+            _mm_storeu_si128(out.as_mut_ptr().cast(), _mm256_cvttpd_epi32(q));
+        }
+        out
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The grid's counts, by the AVX2 forms (where the CPU has them) and the scalar ones, equal
+    /// the all-pairs loop's bin for bin: uniform points, a lattice (many equal distances, on
+    /// bin edges too) and duplicates, with bins up to ¼ (a large stencil) and a short radius.
+    #[test]
+    fn grid_counts_equal_all_pairs_in_both_forms() {
+        let mut rng = crate::core::rng::Rng::new(11);
+        let uniform: Vec<DVec2> = (0..3000)
+            .map(|_| DVec2::new(rng.next_f64(), rng.next_f64()))
+            .collect();
+        let lattice: Vec<DVec2> = (0..40 * 40)
+            .map(|i| DVec2::new((i % 40) as f64 / 40.0, (i / 40) as f64 / 40.0))
+            .collect();
+        let mut dupes = uniform[..500].to_vec();
+        dupes.extend_from_slice(&uniform[..500]);
+        let never = Cancel::never();
+        for points in [&uniform, &lattice, &dupes] {
+            for (bins, dr) in [(1000, 0.25 / 1000.0), (37, 0.05 / 37.0), (64, 1.0 / 160.0)] {
+                let reference = all_pairs(points, bins, dr, &never).unwrap();
+                for simd in [true, false] {
+                    let got = grid_pair_counts(points, bins, dr, &never, simd).unwrap();
+                    assert_eq!(got, reference, "n {} bins {bins} simd {simd}", points.len());
                 }
             }
         }
