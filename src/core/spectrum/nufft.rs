@@ -290,7 +290,11 @@ fn taps<const W: usize>(table: Option<&KernelTable>, beta: f64, s: f64) -> [f64;
 #[derive(Default)]
 struct Workspace {
     order: Vec<u32>,
-    strips: Vec<Vec<f64>>,
+    /// Every strip, one after another (one buffer: in a one-shot command a fresh buffer of
+    /// several MiB is mapped with huge pages, a strip of under 2 MiB page by page).
+    strips: Vec<f64>,
+    /// Strip s is `strips[strip_starts[s]..strip_starts[s + 1]]`.
+    strip_starts: Vec<usize>,
     /// For grid row g, the (strip, strip row) pairs folding onto it: `sources[starts[g]..starts[g+1]]`.
     source_starts: Vec<usize>,
     sources: Vec<(usize, usize)>,
@@ -652,31 +656,41 @@ impl NufftPlan {
                 }
             })
             .collect();
-        ws.strips.resize_with(slabs, Vec::new);
+        ws.strip_starts.clear();
+        ws.strip_starts.push(0);
+        for place in &places {
+            let end = ws.strip_starts[ws.strip_starts.len() - 1] + place.height * width;
+            ws.strip_starts.push(end);
+        }
+        ws.strips.clear();
+        ws.strips.resize(ws.strip_starts[slabs], 0.0);
+        // The strips as disjoint slices, one per slab.
+        let mut data: Vec<&mut [f64]> = Vec::with_capacity(slabs);
+        let mut rest: &mut [f64] = &mut ws.strips;
+        for s in 0..slabs {
+            let (strip, tail) = rest.split_at_mut(ws.strip_starts[s + 1] - ws.strip_starts[s]);
+            data.push(strip);
+            rest = tail;
+        }
         let order = &ws.order;
         let table = self.table.as_ref();
         let beta = self.kernel.beta;
         let w = self.kernel.width;
-        ws.strips[..slabs]
-            .par_iter_mut()
-            .enumerate()
-            .try_for_each(|(s, data)| {
-                let place = places[s];
-                data.clear();
-                data.resize(place.height * width, 0.0);
-                let job = SlabJob {
-                    points,
-                    order: &order[starts[s]..starts[s + 1]],
-                    data,
-                    width,
-                    place,
-                    pad,
-                    n,
-                    beta,
-                    table,
-                };
-                with_width!(w, spread_slab(job, cancel))
-            })?;
+        data.into_par_iter().enumerate().try_for_each(|(s, data)| {
+            let place = places[s];
+            let job = SlabJob {
+                points,
+                order: &order[starts[s]..starts[s + 1]],
+                data,
+                width,
+                place,
+                pad,
+                n,
+                beta,
+                table,
+            };
+            with_width!(w, spread_slab(job, cancel))
+        })?;
         Ok(places)
     }
 
@@ -717,7 +731,7 @@ impl NufftPlan {
                 fill[g] += 1;
             }
         }
-        let strips = &ws.strips;
+        let (strips, strip_starts) = (&ws.strips, &ws.strip_starts);
         let (starts, sources) = (&ws.source_starts, &ws.sources);
         // Adds grid row g into the real (part 0) or imaginary (part 1) parts of `buf`.
         let gather = |g: usize, part: usize, buf: &mut [Complex<f64>]| {
@@ -729,7 +743,7 @@ impl NufftPlan {
                 }
             };
             for &(s, r) in &sources[starts[g]..starts[g + 1]] {
-                let row = &strips[s][r * width..(r + 1) * width];
+                let row = &strips[strip_starts[s] + r * width..][..width];
                 if pad <= n {
                     for (b, &v) in buf.iter_mut().zip(&row[pad..pad + n]) {
                         add(b, v);
