@@ -117,41 +117,44 @@ mod huge {
         p
     }
 
-    /// [`alloc`], zeroed after the advice, so that zeroing faults in huge pages.
+    /// A zeroed block from `calloc` (a fresh mapping is zero already: nothing is touched
+    /// here), its whole huge pages advised. Not realigned: zeroing an aligned block would
+    /// touch every page of it at once, and the peak would count pages a caller never writes.
     pub(super) unsafe fn alloc_zeroed(layout: Layout) -> *mut u8 {
-        let p = unsafe { alloc(layout) };
+        let p = unsafe { System.alloc_zeroed(layout) };
         if !p.is_null() {
-            // SAFETY: the block is valid for layout.size() bytes.
-            unsafe { std::ptr::write_bytes(p, 0, layout.size()) };
+            advise_huge(p, layout.size());
         }
         p
     }
 
-    /// A new block of [`alloc`] with the old one's contents (up to the smaller size); the old
-    /// one is freed.
+    /// The block grown or shrunk by `realloc` (glibc moves a mapped block's pages with
+    /// `mremap`: the old and new blocks are never resident together), its whole huge pages
+    /// advised. A block from [`alloc`] with a larger alignment than the caller's is fine here:
+    /// `realloc` keeps any alignment of at most 16.
     pub(super) unsafe fn realloc(ptr: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
-        // SAFETY (of the layout): the caller guarantees new_size with this alignment is valid.
-        let new_layout = unsafe { Layout::from_size_align_unchecked(new_size, layout.align()) };
-        let new = unsafe { alloc(new_layout) };
+        let new = unsafe { System.realloc(ptr, layout, new_size) };
         if !new.is_null() {
-            // SAFETY: both blocks are valid for the smaller size and do not overlap.
-            unsafe {
-                std::ptr::copy_nonoverlapping(ptr, new, layout.size().min(new_size));
-                System.dealloc(ptr, layout);
-            }
+            advise_huge(new, new_size);
         }
         new
     }
 }
 
-/// Asks the kernel to back `len` bytes at `p` (on a huge-page boundary) with huge pages. A
-/// hint: where it is refused (no transparent huge pages) nothing changes.
+/// Asks the kernel to back the whole pages of the `len` bytes at `p` with huge pages (the
+/// kernel uses them for the 2 MiB-aligned parts not yet touched). A hint: where it is refused
+/// (no transparent huge pages) nothing changes.
 #[cfg(target_os = "linux")]
 fn advise_huge(p: *mut u8, len: usize) {
-    // SAFETY: [p, p + len) is memory this process just allocated; MADV_HUGEPAGE changes no
-    // contents, only how pages not yet touched are mapped.
-    unsafe {
-        libc::madvise(p.cast(), len, libc::MADV_HUGEPAGE);
+    const PAGE: usize = 4096;
+    let start = (p as usize).next_multiple_of(PAGE);
+    let end = (p as usize + len) / PAGE * PAGE;
+    if end > start {
+        // SAFETY: [start, end) lies within memory this process just allocated; MADV_HUGEPAGE
+        // changes no contents, only how pages not yet touched are mapped.
+        unsafe {
+            libc::madvise(start as *mut libc::c_void, end - start, libc::MADV_HUGEPAGE);
+        }
     }
 }
 
@@ -200,8 +203,9 @@ fn set(_: &[(i32, usize)]) -> bool {
 mod tests {
     /// glibc takes every setting of both kinds (mallopt returns 1 for each). The app's come
     /// last: this test process then keeps freed buffers, which no test in it measures.
-    /// A huge block starts on a huge-page boundary; the zeroed one is zero; growing and
-    /// shrinking keep the contents; every block is freed by `System` (as `Allocator` frees).
+    /// A huge block starts on a huge-page boundary; the zeroed one is zero; growing (also a
+    /// block of `huge::alloc`) and shrinking keep the contents; every block is freed by
+    /// `System` (as `Allocator` frees).
     #[test]
     fn huge_blocks_are_aligned_zeroed_and_keep_their_contents() {
         use super::{huge, HUGE_PAGE};
@@ -212,14 +216,13 @@ mod tests {
         unsafe {
             let p = huge::alloc_zeroed(layout);
             assert!(!p.is_null());
-            assert_eq!(p as usize % HUGE_PAGE, 0);
             let block = std::slice::from_raw_parts_mut(p, size);
             assert!(block.iter().all(|&b| b == 0));
             for (i, b) in block.iter_mut().enumerate() {
                 *b = (i % 251) as u8;
             }
             let q = huge::realloc(p, layout, 5 * HUGE_PAGE);
-            assert!(!q.is_null() && q as usize % HUGE_PAGE == 0);
+            assert!(!q.is_null());
             let grown = std::slice::from_raw_parts(q, size);
             assert!(grown.iter().enumerate().all(|(i, &b)| b == (i % 251) as u8));
             let big = Layout::from_size_align(5 * HUGE_PAGE, 8).unwrap();
@@ -229,6 +232,14 @@ mod tests {
             let a = huge::alloc(Layout::from_size_align(HUGE_PAGE, 64).unwrap());
             assert!(!a.is_null() && a as usize % HUGE_PAGE == 0);
             System.dealloc(a, Layout::from_size_align(HUGE_PAGE, 64).unwrap());
+            // An aligned block grown by realloc keeps its contents.
+            let small = Layout::from_size_align(HUGE_PAGE, 8).unwrap();
+            let b = huge::alloc(small);
+            assert!(!b.is_null() && b as usize % HUGE_PAGE == 0);
+            std::ptr::write_bytes(b, 7, HUGE_PAGE);
+            let c = huge::realloc(b, small, 3 * HUGE_PAGE);
+            assert!((0..HUGE_PAGE).all(|i| *c.add(i) == 7));
+            System.dealloc(c, Layout::from_size_align(3 * HUGE_PAGE, 8).unwrap());
         }
     }
 
