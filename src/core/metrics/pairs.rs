@@ -207,8 +207,21 @@ struct Grid<'a> {
 const LANES: usize = 4;
 /// Histograms each chunk counts into (see [`Grid::chunk`]).
 const SUBS: usize = 4;
+/// The most memory a chunk's sub-histograms take: beyond it (bins > 8191) each chunk counts
+/// into one histogram, as the pairs then spread over many bins anyway (at N = 2^20 four would
+/// have held 32 MiB over the 8 chunks).
+const SUB_BYTES: usize = 256 << 10;
 
 impl Grid<'_> {
+    /// The sub-histograms per chunk (a power of two): [`SUBS`] while they fit [`SUB_BYTES`].
+    fn subs(&self) -> usize {
+        if SUBS * (self.bins + 1) * 8 <= SUB_BYTES {
+            SUBS
+        } else {
+            1
+        }
+    }
+
     /// [`Grid::chunk`] compiled for AVX2 when the CPU has it (4 f64 lanes for the root and
     /// the division instead of SSE2's 2). Both run the same IEEE operations in the same
     /// order, so the counts are identical.
@@ -250,10 +263,11 @@ impl Grid<'_> {
         cancel: &Cancel,
     ) -> Result<Vec<u64>, MetricsError> {
         let (g, start) = (self.g, self.start);
-        // SUBS histograms of bins + 1 counts (the last one takes the pairs out of range), lane
-        // l counting into histogram l mod SUBS: no branch per pair, and consecutive pairs at
+        // SUBS histograms (one for many bins: `subs`) of bins + 1 counts (the last one takes
+        // the pairs out of range), lane l counting into histogram l mod SUBS: no branch per
+        // pair, and consecutive pairs at
         // the same distance do not wait on each other's increment. Added up at the end.
-        let mut h = vec![0u64; SUBS * (self.bins + 1)];
+        let mut h = vec![0u64; self.subs() * (self.bins + 1)];
         for cy in (chunk..g).step_by(chunks) {
             cancel.check()?;
             for cx in 0..g {
@@ -305,6 +319,7 @@ impl Grid<'_> {
     fn count<const AVX2: bool>(&self, px: f64, py: f64, lo: usize, hi: usize, h: &mut [u64]) {
         let p = DVec2::new(px, py);
         let (bins, stride) = (self.bins as f64, self.bins + 1);
+        let sub_mask = self.subs() - 1;
         // bin_of(√d², Δr, bins): ⌊q⌋ for q < bins (and d² < r²), else the spare count.
         let bin = |d2: f64, q: f64| {
             if d2 < self.r2 && q < bins {
@@ -321,7 +336,7 @@ impl Grid<'_> {
                 // SAFETY: AVX2 is checked by the caller (`chunk_dispatch`).
                 let b = unsafe { self.bins_avx2(px, py, qx, qy) };
                 for (l, &b) in b.iter().enumerate() {
-                    h[(l % SUBS) * stride + b as usize] += 1;
+                    h[(l & sub_mask) * stride + b as usize] += 1;
                 }
             }
         }
@@ -332,7 +347,7 @@ impl Grid<'_> {
                 q[l] = d2[l].sqrt() / self.dr;
             }
             for l in 0..LANES {
-                h[(l % SUBS) * stride + bin(d2[l], q[l])] += 1;
+                h[(l & sub_mask) * stride + bin(d2[l], q[l])] += 1;
             }
         }
         for (&qx, &qy) in cx.remainder().iter().zip(cy.remainder()) {
@@ -384,7 +399,8 @@ mod tests {
 
     /// The grid's counts, by the AVX2 forms (where the CPU has them) and the scalar ones, equal
     /// the all-pairs loop's bin for bin: uniform points, a lattice (many equal distances, on
-    /// bin edges too) and duplicates, with bins up to ¼ (a large stencil) and a short radius.
+    /// bin edges too) and duplicates, with bins up to ¼ (a large stencil) and a short radius,
+    /// few bins (four sub-histograms) and many (one).
     #[test]
     fn grid_counts_equal_all_pairs_in_both_forms() {
         let mut rng = crate::core::rng::Rng::new(11);
@@ -398,7 +414,13 @@ mod tests {
         dupes.extend_from_slice(&uniform[..500]);
         let never = Cancel::never();
         for points in [&uniform, &lattice, &dupes] {
-            for (bins, dr) in [(1000, 0.25 / 1000.0), (37, 0.05 / 37.0), (64, 1.0 / 160.0)] {
+            for (bins, dr) in [
+                (1000, 0.25 / 1000.0),
+                (37, 0.05 / 37.0),
+                (64, 1.0 / 160.0),
+                // Over 8191 bins: one histogram per chunk.
+                (10_000, 0.25 / 10_000.0),
+            ] {
                 let reference = all_pairs(points, bins, dr, &never).unwrap();
                 for simd in [true, false] {
                     let got = grid_pair_counts(points, bins, dr, &never, simd).unwrap();

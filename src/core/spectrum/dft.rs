@@ -171,6 +171,8 @@ const LANES: usize = 4;
 /// Points per task of [`exact_field_few_rows`]: a fixed partition, so that the order of the
 /// sums does not depend on the number of threads.
 const TASK_POINTS: usize = 256;
+/// Tasks of [`exact_field_few_rows`] run (and partial sums held) at a time.
+const TASKS_IN_FLIGHT: usize = 64;
 
 /// [`exact_field_rows`] for a few rows (the error check's): the same sums by the same
 /// recurrence e_{kx+1} = e_{kx} · exp(−2πi x_j), re-anchored every 16 steps (the anchors from
@@ -194,16 +196,20 @@ pub fn exact_field_few_rows(
     if rows.is_empty() || ncols == 0 {
         return Ok(out);
     }
-    let partial: Vec<Vec<f64>> = points
-        .par_chunks(TASK_POINTS)
-        .map(|task| {
-            cancel.check()?;
-            Ok(few_rows(task, kx_lo, ncols, rows))
-        })
-        .collect::<Result<_, SpectrumError>>()?;
-    for p in &partial {
-        for (o, v) in out.iter_mut().zip(p) {
-            *o += v;
+    // TASKS_IN_FLIGHT tasks at a time, so that the partial sums held stay bounded (at
+    // N = 2^20 all 4096 at once would hold 32 MiB); added in task order either way.
+    for group in points.chunks(TASK_POINTS * TASKS_IN_FLIGHT) {
+        let partial: Vec<Vec<f64>> = group
+            .par_chunks(TASK_POINTS)
+            .map(|task| {
+                cancel.check()?;
+                Ok(few_rows(task, kx_lo, ncols, rows))
+            })
+            .collect::<Result<_, SpectrumError>>()?;
+        for p in &partial {
+            for (o, v) in out.iter_mut().zip(p) {
+                *o += v;
+            }
         }
     }
     Ok(out)
