@@ -54,14 +54,28 @@ pub struct FigureContext {
     pub matrix_measure: crate::core::metrics::cube::ProjectionMeasure,
 }
 
+/// [`FigureContext::pattern`] of a column showing points from a file.
+pub const IMPORTED: &str = "imported";
+
 impl FigureContext {
-    /// "label, N = n, seed s": the column as the titles name it.
+    /// Whether the column's points come from its seed: false for imported points, whose
+    /// captions then name no seed (the file's points have none).
+    pub fn seeded(&self) -> bool {
+        self.pattern != IMPORTED
+    }
+
+    /// "label, N = n, seed s" (no seed for imported points): the column as the titles name it.
     pub fn column_caption(&self) -> String {
+        let seed = if self.seeded() {
+            format!(", seed {}", self.seed)
+        } else {
+            String::new()
+        };
         match self.projection {
-            None => format!("{}, N = {}, seed {}", self.column_title, self.n, self.seed),
+            None => format!("{}, N = {}{seed}", self.column_title, self.n),
             Some((i, j, d)) => format!(
-                "{}, N = {}, seed {}, x{i} × x{j} of D = {d}",
-                self.column_title, self.n, self.seed
+                "{}, N = {}{seed}, x{i} × x{j} of D = {d}",
+                self.column_title, self.n
             ),
         }
     }

@@ -33,7 +33,7 @@ mod spectrum;
 pub use accuracy::Accuracy;
 pub use colormap::{colorize, Colormap};
 pub use column::{ColumnData, InColumn};
-pub use context::{sanitize, FigureContext};
+pub use context::{sanitize, FigureContext, IMPORTED};
 pub use figure_kind::FigureKind;
 pub use filter::{amplitude_db, ResponseData, ResponseMetrics, DB_FLOOR};
 pub use image::{next_version, ImageData};

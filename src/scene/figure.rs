@@ -13,8 +13,7 @@ use crate::model::{
 use std::collections::HashMap;
 use std::sync::Arc;
 
-/// What names the "pattern" of a column whose points were imported from a file.
-const IMPORTED: &str = "imported";
+use crate::model::IMPORTED;
 
 /// A column index the scene does not have.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
@@ -304,6 +303,21 @@ mod tests {
             ctx.column_slug
         );
         assert_eq!(context(&scene, 1, "imp").unwrap().pattern, "random");
+        // A file's points have no seed: their captions name none; a pattern's name its seed.
+        assert!(!ctx.seeded());
+        assert!(
+            !ctx.column_caption().contains("seed"),
+            "{}",
+            ctx.column_caption()
+        );
+        let random = context(&scene, 1, "imp").unwrap();
+        assert!(random.seeded());
+        let tail = format!(", N = 2, seed {}", random.seed);
+        assert!(
+            random.column_caption().ends_with(&tail),
+            "{}",
+            random.column_caption()
+        );
     }
 
     #[test]
