@@ -64,13 +64,19 @@ impl FigureContext {
         self.pattern != IMPORTED
     }
 
-    /// "label, N = n, seed s" (no seed for imported points): the column as the titles name it.
-    pub fn column_caption(&self) -> String {
-        let seed = if self.seeded() {
-            format!(", seed {}", self.seed)
+    /// "`sep`seed s" for a seeded column, nothing for imported points: the seed part of the
+    /// captions.
+    pub fn seed_part(&self, sep: &str) -> String {
+        if self.seeded() {
+            format!("{sep}seed {}", self.seed)
         } else {
             String::new()
-        };
+        }
+    }
+
+    /// "label, N = n, seed s" (no seed for imported points): the column as the titles name it.
+    pub fn column_caption(&self) -> String {
+        let seed = self.seed_part(", ");
         match self.projection {
             None => format!("{}, N = {}{seed}", self.column_title, self.n),
             Some((i, j, d)) => format!(

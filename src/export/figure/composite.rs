@@ -610,10 +610,12 @@ impl Plan {
         };
         let caption = match theorem {
             Some(v) => super::theorem::block_caption(v),
-            None if ctx.seeded() => {
-                format!("{} · N = {} · seed {}", ctx.column_title, ctx.n, ctx.seed)
-            }
-            None => format!("{} · N = {}", ctx.column_title, ctx.n),
+            None => format!(
+                "{} · N = {}{}",
+                ctx.column_title,
+                ctx.n,
+                ctx.seed_part(" · ")
+            ),
         };
         // Theorem panels in a mixed block keep their own setup and caption line.
         let role = |k: FigureKind| {
